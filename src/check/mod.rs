@@ -1,0 +1,149 @@
+//! Checkers: the coursework interface.
+//!
+//! A checker takes *any* implementation of a derivation (a closure or function with the
+//! right signature), runs the numerical checks of its chapter on it, and returns a
+//! [`Verdict`]: one [`Finding`] per claim, each saying how many cases were tried, how many
+//! failed, the worst error against its bound, and the first counterexample.
+//!
+//! The project's own tests call the same checkers on the project's code (which must pass)
+//! and on planted bugs (which must fail), so a student's implementation is held to exactly
+//! the standard the book's code is.
+
+pub mod sphere;
+
+use std::fmt;
+
+/// The outcome of one claim checked over many cases.
+#[derive(Clone, Debug)]
+pub struct Finding {
+    /// Short identifier, e.g. `"hits"`; tests refer to findings by it.
+    pub name: String,
+    /// The claim, in words, as the chapter states it.
+    pub claim: String,
+    /// Number of cases tried.
+    pub cases: usize,
+    /// Number of cases that violated the claim.
+    pub failures: usize,
+    /// Worst measured error and its bound, when the claim is quantitative.
+    pub worst: Option<(f64, f64)>,
+    /// The first counterexample, described so a student can reproduce it.
+    pub example: Option<String>,
+}
+
+impl Finding {
+    /// Starts a finding with no cases yet.
+    pub fn new(name: impl Into<String>, claim: impl Into<String>) -> Self {
+        Self {
+            name: name.into(),
+            claim: claim.into(),
+            cases: 0,
+            failures: 0,
+            worst: None,
+            example: None,
+        }
+    }
+
+    /// Records one case; `describe` is called only for the first failure.
+    pub fn record(&mut self, ok: bool, describe: impl FnOnce() -> String) {
+        self.cases += 1;
+        if !ok {
+            self.failures += 1;
+            if self.example.is_none() {
+                self.example = Some(describe());
+            }
+        }
+    }
+
+    /// Records one quantitative case: passes iff `error <= bound` (NaN fails).
+    pub fn measure(&mut self, error: f64, bound: f64, describe: impl FnOnce() -> String) {
+        let worst = match self.worst {
+            Some((w, _)) if w >= error => w,
+            _ if error.is_nan() => f64::NAN,
+            _ => error,
+        };
+        // Once NaN, the worst error stays NaN so the report shows it.
+        let worst = if self.worst.is_some_and(|(w, _)| w.is_nan()) {
+            f64::NAN
+        } else {
+            worst
+        };
+        self.worst = Some((worst, bound));
+        self.record(error <= bound, describe);
+    }
+
+    /// A claim passes when it was tried at least once and never violated: a check that
+    /// ran no case is a failure, never a silent pass.
+    pub fn passed(&self) -> bool {
+        self.cases > 0 && self.failures == 0
+    }
+}
+
+/// The findings of one checker run on one implementation.
+#[derive(Clone, Debug)]
+pub struct Verdict {
+    /// What was checked, e.g. `"sphere intersection (f32)"`.
+    pub subject: String,
+    /// One finding per claim.
+    pub findings: Vec<Finding>,
+}
+
+impl Verdict {
+    /// An empty verdict about `subject`.
+    pub fn new(subject: impl Into<String>) -> Self {
+        Self {
+            subject: subject.into(),
+            findings: Vec::new(),
+        }
+    }
+
+    /// True iff every finding passed (and there is at least one).
+    pub fn passed(&self) -> bool {
+        !self.findings.is_empty() && self.findings.iter().all(Finding::passed)
+    }
+
+    /// The finding called `name`.
+    ///
+    /// # Panics
+    /// If there is no such finding (a typo in a test should not pass silently).
+    pub fn finding(&self, name: &str) -> &Finding {
+        self.findings
+            .iter()
+            .find(|f| f.name == name)
+            .unwrap_or_else(|| panic!("no finding named {name:?} in verdict on {}", self.subject))
+    }
+
+    /// True iff the finding called `name` failed.
+    pub fn failed(&self, name: &str) -> bool {
+        !self.finding(name).passed()
+    }
+
+    /// Panics with the whole report unless every finding passed. Use in tests.
+    #[track_caller]
+    pub fn assert_pass(&self) {
+        assert!(self.passed(), "\n{self}");
+    }
+}
+
+impl fmt::Display for Verdict {
+    fn fmt(&self, out: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let verdict = if self.passed() { "PASS" } else { "FAIL" };
+        writeln!(out, "{verdict}: {}", self.subject)?;
+        for f in &self.findings {
+            let mark = if f.passed() { "ok  " } else { "FAIL" };
+            write!(
+                out,
+                "  [{mark}] {:<14} {:>6}/{:<6} cases failed",
+                f.name, f.failures, f.cases
+            )?;
+            if let Some((worst, bound)) = f.worst {
+                write!(out, "; worst error {worst:.3e} (bound {bound:.3e})")?;
+            }
+            writeln!(out)?;
+            writeln!(out, "         claim: {}", f.claim)?;
+            if let Some(example) = &f.example {
+                writeln!(out, "         first failure: {example}")?;
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,96 @@
+//! Ray-sphere intersection, two ways. Chapter: *Ray-sphere intersection*
+//! (`chapters/geometry/sphere.md`).
+//!
+//! Substituting the ray `P(t) = O + tD` into the sphere `|P - C|^2 = r^2` gives, with
+//! `f = O - C`, the quadratic `(D.D) t^2 + 2 (D.f) t + (f.f - r^2) = 0`.
+//!
+//! * [`intersect_textbook`] solves it with the school formula, as the seed notes do.
+//! * [`intersect_stable`] is the rewrite of Haines, Günther and Akenine-Möller
+//!   (*Ray Tracing Gems*, 2019, ch. 7), which avoids both cancellations of the school
+//!   formula: the discriminant from the distance of the centre to the ray, and the
+//!   smaller root from Vieta's formula instead of a difference of nearly equal numbers.
+//!
+//! Both return the smallest root strictly greater than the caller's `t_min`, or `None`.
+//! Neither ever returns NaN: a NaN discriminant or root counts as a miss.
+
+use crate::geometry::Ray;
+use crate::real::Real;
+
+/// A sphere with centre `center` and radius `radius` (> 0).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere<R: Real> {
+    /// The centre `C`.
+    pub center: R::V3,
+    /// The radius `r`.
+    pub radius: R,
+}
+
+impl<R: Real> Sphere<R> {
+    /// A sphere of centre `center` and radius `radius`.
+    pub fn new(center: R::V3, radius: R) -> Self {
+        Self { center, radius }
+    }
+}
+
+// ANCHOR: textbook
+/// The seed's quadratic, solved by the school formula.
+///
+/// With `f = O - C`, `a = D.D`, `b = D.f` (half the linear coefficient) and
+/// `c = f.f - r^2`, the roots are `t = (-b -+ sqrt(b^2 - a c)) / a`.
+/// The ray hits iff the discriminant `b^2 - a c >= 0`.
+pub fn intersect_textbook<R: Real>(ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> Option<R> {
+    let f = ray.origin - sphere.center;
+    let a = R::dot(ray.dir, ray.dir);
+    let b = R::dot(ray.dir, f);
+    let c = R::dot(f, f) - sphere.radius * sphere.radius;
+    let discriminant = b * b - a * c;
+    if discriminant.is_nan() || discriminant < R::zero() {
+        return None; // a miss (or a NaN discriminant)
+    }
+    let root = discriminant.sqrt();
+    let t_near = (-b - root) / a;
+    let t_far = (-b + root) / a;
+    nearest_root_above(t_near, t_far, t_min)
+}
+// ANCHOR_END: textbook
+
+// ANCHOR: stable
+/// The numerically stable form (*Ray Tracing Gems*, ch. 7).
+///
+/// With `f = O - C`, `a = D.D`, `b' = -D.f` and `c = f.f - r^2`:
+/// * the point of the ray's line closest to the centre is `C + l` with
+///   `l = f + (b'/a) D`, so `a (r^2 - l.l) = b'^2 - a c` is the discriminant, computed
+///   from a squared *distance* instead of a difference of two huge squares;
+/// * `q = b' + sign(b') sqrt(a (r^2 - l.l))` adds two numbers of the same sign, and the
+///   roots are `t = c / q` and `t = q / a` (their product is `c / a`, Vieta).
+pub fn intersect_stable<R: Real>(ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> Option<R> {
+    let f = ray.origin - sphere.center;
+    let a = R::dot(ray.dir, ray.dir);
+    let b = -R::dot(f, ray.dir);
+    let r2 = sphere.radius * sphere.radius;
+    let l = f + ray.dir * (b / a);
+    let delta = r2 - R::dot(l, l);
+    if delta.is_nan() || delta < R::zero() {
+        return None; // the line passes farther than r from the centre (or NaN)
+    }
+    let c = R::dot(f, f) - r2;
+    let q = b + (a * delta).sqrt().copysign(b);
+    let (t0, t1) = (c / q, q / a);
+    let (t_near, t_far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    nearest_root_above(t_near, t_far, t_min)
+}
+// ANCHOR_END: stable
+
+// ANCHOR: nearest_root
+/// The first intersection along the ray: the smaller root if it lies beyond `t_min`,
+/// else the larger one, else none. NaN roots fail every comparison and are skipped.
+pub fn nearest_root_above<R: Real>(t_near: R, t_far: R, t_min: R) -> Option<R> {
+    if t_near > t_min {
+        Some(t_near)
+    } else if t_far > t_min {
+        Some(t_far)
+    } else {
+        None
+    }
+}
+// ANCHOR_END: nearest_root

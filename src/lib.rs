@@ -1,0 +1,18 @@
+//! # raylemma
+//!
+//! The derivations of a physically based, spectral path tracer, turned into code that is
+//! checked numerically. Each module is one concept and one chapter of the book
+//! (`chapters/`), and has one test file (`tests/`).
+//!
+//! * [`real`]: the two precisions the geometry is written for.
+//! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
+//! * [`check`]: the checkers a student runs on their own implementation.
+//! * [`rng`]: the seeded generator every test and figure uses.
+//! * [`figures`]: the code that draws the book's figures and tables.
+
+pub mod check;
+pub mod figures;
+pub mod geometry;
+pub mod plot;
+pub mod real;
+pub mod rng;

@@ -1,0 +1,523 @@
+//! Preflight check of the chapter sources, run before mdBook so that the book cannot drift
+//! from the code it quotes: every `{{#include}}` / `{{#rustdoc_include}}` / `{{#playground}}`
+//! target must exist (with its anchors), and every local image must exist in the built book.
+//!
+//! Path conventions (mirroring what mdBook does):
+//! - include paths are relative to the directory of the chapter file on disk;
+//! - image paths are relative to the chapter's *page* in the built book. The book root holds the
+//!   non-Markdown files of `chapters/` plus a copy of `<root>/figures/` as `figures/`, so a chapter
+//!   at depth `d` below `chapters/` (`chapters/a.md`: 0, `chapters/geometry/b.md`: 1) writes
+//!   `"../" * d + "figures/x.png"`.
+
+use std::collections::HashMap;
+use std::fmt;
+use std::fs;
+use std::io;
+use std::path::{Component, Path, PathBuf};
+use std::sync::LazyLock;
+
+use pulldown_cmark::{Event, Options, Parser, Tag};
+use regex::Regex;
+
+/// Same pattern as mdBook's `links` preprocessor (mdbook-driver 0.5, `find_links`).
+static LINK: LazyLock<Regex> = LazyLock::new(|| {
+    Regex::new(r"(?x)\\\{\{\#.*\}\}|\{\{\s*\#([a-zA-Z0-9_]+)\s+([^}]+)\}\}").expect("valid regex")
+});
+/// Same anchor patterns as mdBook (`take_lines.rs`).
+static ANCHOR_START: LazyLock<Regex> =
+    LazyLock::new(|| Regex::new(r"ANCHOR:\s*(?P<name>[\w_-]+)").expect("valid regex"));
+static ANCHOR_END: LazyLock<Regex> =
+    LazyLock::new(|| Regex::new(r"ANCHOR_END:\s*(?P<name>[\w_-]+)").expect("valid regex"));
+static IMG_SRC: LazyLock<Regex> = LazyLock::new(|| {
+    Regex::new(r#"(?is)<img\b[^>]*?\bsrc\s*=\s*(?:"([^"]*)"|'([^']*)'|([^\s>]+))"#)
+        .expect("valid regex")
+});
+static SCHEME: LazyLock<Regex> =
+    LazyLock::new(|| Regex::new(r"^[a-zA-Z][a-zA-Z0-9+.-]*:").expect("valid regex"));
+
+/// One problem found in a chapter, printed as `file:line: message`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Problem {
+    /// Chapter file, relative to the project root.
+    pub file: PathBuf,
+    /// 1-based line number of the directive or image.
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}: {}", self.file.display(), self.line, self.message)
+    }
+}
+
+/// Checks every `.md` file under `src_dir` (the book's `src`, normally `<root>/chapters`).
+///
+/// `root` is the project root: problems name files relative to it, and `<root>/figures/` is
+/// where figures are copied from. Returns all problems found, sorted by file and line; an
+/// `Err` only for I/O errors while walking `src_dir` itself.
+pub fn check_chapters(root: &Path, src_dir: &Path) -> io::Result<Vec<Problem>> {
+    let mut files = Vec::new();
+    collect_markdown(src_dir, &mut files)?;
+    files.sort();
+    let mut checker = Checker::new(root, src_dir);
+    let mut problems = Vec::new();
+    for file in &files {
+        match fs::read_to_string(file) {
+            Ok(text) => problems.extend(checker.check_chapter(file, &text)),
+            Err(e) => problems.push(Problem {
+                file: checker.display_path(file),
+                line: 1,
+                message: format!("cannot read chapter: {e}"),
+            }),
+        }
+    }
+    Ok(problems)
+}
+
+fn collect_markdown(dir: &Path, out: &mut Vec<PathBuf>) -> io::Result<()> {
+    for entry in fs::read_dir(dir)? {
+        let entry = entry?;
+        let path = entry.path();
+        if entry.file_type()?.is_dir() {
+            collect_markdown(&path, out)?;
+        } else if path.extension().is_some_and(|e| e == "md") {
+            out.push(path);
+        }
+    }
+    Ok(())
+}
+
+/// Scanner state: the two directories paths resolve against, and a cache of included files.
+pub struct Checker {
+    root: PathBuf,
+    src_dir: PathBuf,
+    /// Included file contents by normalised path; `Err` holds the read error text.
+    cache: HashMap<PathBuf, Result<String, String>>,
+}
+
+impl Checker {
+    /// A checker for the book whose project root is `root` and chapter directory `src_dir`.
+    pub fn new(root: &Path, src_dir: &Path) -> Self {
+        Checker {
+            root: normalize(root),
+            src_dir: normalize(src_dir),
+            cache: HashMap::new(),
+        }
+    }
+
+    /// Checks one chapter file (`file` is its path on disk, `text` its contents).
+    pub fn check_chapter(&mut self, file: &Path, text: &str) -> Vec<Problem> {
+        let file = normalize(file);
+        let mut problems = Vec::new();
+        self.check_includes(&file, text, &mut problems);
+        self.check_images(&file, text, &mut problems);
+        problems.sort_by_key(|p| p.line);
+        problems
+    }
+
+    fn check_includes(&mut self, file: &Path, text: &str, problems: &mut Vec<Problem>) {
+        let dir = file.parent().unwrap_or(Path::new("")).to_path_buf();
+        let shown_file = self.display_path(file);
+        for cap in LINK.captures_iter(text) {
+            let (Some(kind), Some(rest)) = (cap.get(1), cap.get(2)) else {
+                continue; // escaped `\{{#...}}`
+            };
+            let kind = kind.as_str();
+            if !matches!(
+                kind,
+                "include" | "rustdoc_include" | "playground" | "playpen"
+            ) {
+                continue;
+            }
+            let Some(arg) = rest.as_str().split_whitespace().next() else {
+                continue;
+            };
+            let line = line_of(text, cap.get(0).map_or(0, |m| m.start()));
+            let (path, selector) = match arg.split_once(':') {
+                Some((p, s)) if kind != "playground" && kind != "playpen" => (p, Some(s)),
+                _ => (arg, None),
+            };
+            let mut report = |message: String| {
+                problems.push(Problem {
+                    file: shown_file.clone(),
+                    line,
+                    message: format!("{kind} {arg}: {message}"),
+                })
+            };
+            let target = normalize(&dir.join(path));
+            let shown = self.display_path(&target);
+            let contents = self.cache.entry(target.clone()).or_insert_with(|| {
+                match fs::read_to_string(&target) {
+                    Ok(s) => Ok(s),
+                    Err(e) if e.kind() == io::ErrorKind::NotFound => Err("file not found".into()),
+                    Err(e) => Err(format!("cannot read: {e}")),
+                }
+            });
+            let contents = match contents {
+                Ok(s) => s,
+                Err(e) => {
+                    report(format!("{e}: {}", shown.display()));
+                    continue;
+                }
+            };
+            if let Some(anchor) = selector.and_then(anchor_of)
+                && let Err(e) = check_anchor(contents, anchor)
+            {
+                report(format!("{e} in {}", shown.display()));
+            }
+        }
+    }
+
+    fn check_images(&self, file: &Path, text: &str, problems: &mut Vec<Problem>) {
+        let mut opts = Options::empty();
+        opts.insert(Options::ENABLE_TABLES);
+        opts.insert(Options::ENABLE_FOOTNOTES);
+        opts.insert(Options::ENABLE_STRIKETHROUGH);
+        opts.insert(Options::ENABLE_TASKLISTS);
+        opts.insert(Options::ENABLE_HEADING_ATTRIBUTES);
+        for (event, range) in Parser::new_ext(text, opts).into_offset_iter() {
+            match event {
+                Event::Start(Tag::Image { dest_url, .. }) => {
+                    if let Some(message) = self.check_image(file, &dest_url) {
+                        problems.push(Problem {
+                            file: self.display_path(file),
+                            line: line_of(text, range.start),
+                            message: format!("image {dest_url}: {message}"),
+                        });
+                    }
+                }
+                Event::Html(html) | Event::InlineHtml(html) => {
+                    for cap in IMG_SRC.captures_iter(&html) {
+                        let Some(src) = cap.get(1).or(cap.get(2)).or(cap.get(3)) else {
+                            continue;
+                        };
+                        if let Some(message) = self.check_image(file, src.as_str()) {
+                            let offset = range.start + html[..src.start()].len();
+                            problems.push(Problem {
+                                file: self.display_path(file),
+                                line: line_of(text, offset.min(text.len())),
+                                message: format!("image {}: {message}", src.as_str()),
+                            });
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// Resolves an image link of the chapter `file` in the built book; `None` if it will load.
+    fn check_image(&self, file: &Path, url: &str) -> Option<String> {
+        if url.is_empty() || url.starts_with('#') || url.starts_with("//") || SCHEME.is_match(url) {
+            return None; // remote (or not a file): not checked here
+        }
+        let path = percent_decode(url.split(['?', '#']).next().unwrap_or(""));
+        if path.starts_with('/') {
+            return Some("absolute path; use a path relative to the chapter page".into());
+        }
+        let chapter_dir = file
+            .parent()
+            .and_then(|d| d.strip_prefix(&self.src_dir).ok())
+            .unwrap_or(Path::new(""));
+        let depth = chapter_dir.components().count();
+        let Some(in_book) = normalize_within(&chapter_dir.join(&path)) else {
+            // Points above the book's root: a path valid on disk (e.g. ../../figures/x.png)
+            // does not exist in the output. Suggest the right one if it is a figure.
+            let on_disk = normalize(&file.parent().unwrap_or(Path::new("")).join(&path));
+            let hint = on_disk
+                .strip_prefix(self.root.join("figures"))
+                .ok()
+                .map(|rest| {
+                    format!(
+                        "; figures are copied to the book's root, so from this chapter write \
+                         '{}figures/{}'",
+                        "../".repeat(depth),
+                        to_url(rest)
+                    )
+                })
+                .unwrap_or_default();
+            return Some(format!("points outside the built book{hint}"));
+        };
+        if self.src_dir.join(&in_book).is_file() {
+            return None;
+        }
+        if let Ok(rest) = in_book.strip_prefix("figures")
+            && self.root.join("figures").join(rest).is_file()
+        {
+            return None;
+        }
+        let looked = match in_book.strip_prefix("figures") {
+            Ok(rest) => self.display_path(&self.root.join("figures").join(rest)),
+            Err(_) => self.display_path(&self.src_dir.join(&in_book)),
+        };
+        Some(format!("not found: {}", looked.display()))
+    }
+
+    /// `path` relative to the project root if it lies inside it, else unchanged.
+    fn display_path(&self, path: &Path) -> PathBuf {
+        path.strip_prefix(&self.root)
+            .map(Path::to_path_buf)
+            .unwrap_or_else(|_| path.to_path_buf())
+    }
+}
+
+/// The anchor named by an include selector, or `None` for a line range (`10`, `3:7`, `:5`, ``).
+/// Mirrors mdBook's `parse_range_or_anchor`.
+fn anchor_of(selector: &str) -> Option<&str> {
+    let first = selector.split(':').next().unwrap_or("");
+    if first.is_empty() || first.parse::<usize>().is_ok() {
+        None
+    } else {
+        Some(first)
+    }
+}
+
+/// Checks that `contents` has a line with `ANCHOR: anchor` and, after it, `ANCHOR_END: anchor`
+/// (matched the way mdBook matches them: first marker on each line, whole name).
+fn check_anchor(contents: &str, anchor: &str) -> Result<(), String> {
+    let mut start_line = None;
+    for (i, line) in contents.lines().enumerate() {
+        match start_line {
+            None => {
+                if ANCHOR_START
+                    .captures(line)
+                    .is_some_and(|c| &c["name"] == anchor)
+                {
+                    start_line = Some(i + 1);
+                }
+            }
+            Some(_) => {
+                if ANCHOR_END
+                    .captures(line)
+                    .is_some_and(|c| &c["name"] == anchor)
+                {
+                    return Ok(());
+                }
+            }
+        }
+    }
+    match start_line {
+        None => Err(format!("anchor '{anchor}' not found")),
+        Some(l) => Err(format!(
+            "anchor '{anchor}' (line {l}) has no 'ANCHOR_END: {anchor}' after it"
+        )),
+    }
+}
+
+/// 1-based line number of byte `offset` in `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    text.as_bytes()[..offset.min(text.len())]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+/// Lexically resolves `.` and `..` (no file system access, symlinks not followed).
+fn normalize(path: &Path) -> PathBuf {
+    let mut out = PathBuf::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                if !out.pop() {
+                    out.push("..");
+                }
+            }
+            other => out.push(other),
+        }
+    }
+    out
+}
+
+/// Like [`normalize`] for a relative path, but `None` if it climbs above its starting point.
+fn normalize_within(path: &Path) -> Option<PathBuf> {
+    let mut out = PathBuf::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                if !out.pop() {
+                    return None;
+                }
+            }
+            Component::Normal(n) => out.push(n),
+            Component::RootDir | Component::Prefix(_) => return None,
+        }
+    }
+    Some(out)
+}
+
+fn to_url(path: &Path) -> String {
+    path.components()
+        .map(|c| c.as_os_str().to_string_lossy())
+        .collect::<Vec<_>>()
+        .join("/")
+}
+
+/// Decodes `%XX` escapes (invalid escapes are kept as they are).
+fn percent_decode(s: &str) -> String {
+    let bytes = s.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%'
+            && let Some(Ok(b)) = s.get(i + 1..i + 3).map(|h| u8::from_str_radix(h, 16))
+        {
+            out.push(b);
+            i += 3;
+            continue;
+        }
+        out.push(bytes[i]);
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A throw-away project tree under the system temp dir, removed on drop.
+    struct Tree(PathBuf);
+
+    impl Tree {
+        fn new(name: &str) -> Tree {
+            let dir = std::env::temp_dir()
+                .join(format!("raylemma-book-test-{}-{name}", std::process::id()));
+            let _ = fs::remove_dir_all(&dir);
+            fs::create_dir_all(&dir).unwrap();
+            Tree(dir)
+        }
+        fn write(&self, rel: &str, contents: &str) {
+            let p = self.0.join(rel);
+            fs::create_dir_all(p.parent().unwrap()).unwrap();
+            fs::write(p, contents).unwrap();
+        }
+        fn check(&self) -> Vec<String> {
+            check_chapters(&self.0, &self.0.join("chapters"))
+                .unwrap()
+                .iter()
+                .map(ToString::to_string)
+                .collect()
+        }
+    }
+
+    impl Drop for Tree {
+        fn drop(&mut self) {
+            let _ = fs::remove_dir_all(&self.0);
+        }
+    }
+
+    const CODE: &str = "fn a() {}\n// ANCHOR: foo\nfn foo() {}\n// ANCHOR_END: foo\n\
+                        // ANCHOR: open\nfn open() {}\n";
+
+    #[test]
+    fn valid_includes_and_images_pass() {
+        let t = Tree::new("valid");
+        t.write("src/x.rs", CODE);
+        t.write("figures/plot.png", "png");
+        t.write("chapters/local.png", "png");
+        t.write(
+            "chapters/geometry/sphere.md",
+            "# Sphere\n\n```rust\n{{#include ../../src/x.rs:foo}}\n```\n\
+             {{#rustdoc_include ../../src/x.rs:2:3}}\n{{#include ../../src/x.rs}}\n\
+             ![plot](../figures/plot.png \"title\")\n![l](../local.png)\n\
+             ![remote](https://example.com/x.png)\n<img src=\"../figures/plot.png\">\n\
+             \\{{#include missing.rs}} is escaped\n",
+        );
+        t.write(
+            "chapters/intro.md",
+            "![p](figures/plot.png) {{ #include ../src/x.rs:foo }}",
+        );
+        assert_eq!(t.check(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn missing_anchor_is_reported_with_file_and_line() {
+        let t = Tree::new("anchor");
+        t.write("src/x.rs", CODE);
+        t.write(
+            "chapters/geometry/sphere.md",
+            "a\nb\n{{#include ../../src/x.rs:bar}}\n{{#rustdoc_include ../../src/x.rs:open}}\n",
+        );
+        assert_eq!(
+            t.check(),
+            vec![
+                "chapters/geometry/sphere.md:3: include ../../src/x.rs:bar: \
+                 anchor 'bar' not found in src/x.rs",
+                "chapters/geometry/sphere.md:4: rustdoc_include ../../src/x.rs:open: \
+                 anchor 'open' (line 5) has no 'ANCHOR_END: open' after it in src/x.rs",
+            ]
+        );
+    }
+
+    #[test]
+    fn anchor_names_must_match_whole() {
+        assert!(check_anchor("// ANCHOR: foobar\n// ANCHOR_END: foobar\n", "foo").is_err());
+        assert!(check_anchor("// ANCHOR_END: foo\n// ANCHOR: foo\n", "foo").is_err());
+        assert!(check_anchor("//ANCHOR:foo\n//ANCHOR_END:foo\n", "foo").is_ok());
+    }
+
+    #[test]
+    fn selectors_distinguish_ranges_from_anchors() {
+        assert_eq!(anchor_of("foo"), Some("foo"));
+        assert_eq!(anchor_of("10"), None);
+        assert_eq!(anchor_of("3:7"), None);
+        assert_eq!(anchor_of(":5"), None);
+        assert_eq!(anchor_of(""), None);
+    }
+
+    #[test]
+    fn missing_files_and_images_are_all_collected() {
+        let t = Tree::new("missing");
+        t.write("figures/plot.png", "png");
+        t.write(
+            "chapters/geometry/sphere.md",
+            "{{#include ../../src/nope.rs}}\n\n![a](../figures/none.png)\n\n\
+             ![b](../../figures/plot.png)\n\n![c](/figures/plot.png)\n\n\
+             {{#playground ../../examples/missing.rs editable}}\n",
+        );
+        t.write("chapters/a.md", "![x](y%20z.png)\n");
+        assert_eq!(
+            t.check(),
+            vec![
+                "chapters/a.md:1: image y%20z.png: not found: chapters/y z.png",
+                "chapters/geometry/sphere.md:1: include ../../src/nope.rs: \
+                 file not found: src/nope.rs",
+                "chapters/geometry/sphere.md:3: image ../figures/none.png: \
+                 not found: figures/none.png",
+                "chapters/geometry/sphere.md:5: image ../../figures/plot.png: \
+                 points outside the built book; figures are copied to the book's root, \
+                 so from this chapter write '../figures/plot.png'",
+                "chapters/geometry/sphere.md:7: image /figures/plot.png: \
+                 absolute path; use a path relative to the chapter page",
+                "chapters/geometry/sphere.md:9: playground ../../examples/missing.rs: \
+                 file not found: examples/missing.rs",
+            ]
+        );
+    }
+
+    #[test]
+    fn line_numbers_are_one_based() {
+        assert_eq!(line_of("abc", 0), 1);
+        assert_eq!(line_of("a\nb\nc", 4), 3);
+        assert_eq!(line_of("a\n", 99), 2);
+    }
+
+    #[test]
+    fn paths_normalize_lexically() {
+        assert_eq!(
+            normalize(Path::new("/a/b/../c/./d")),
+            PathBuf::from("/a/c/d")
+        );
+        assert_eq!(
+            normalize_within(Path::new("geometry/../figures/x.png")),
+            Some("figures/x.png".into())
+        );
+        assert_eq!(normalize_within(Path::new("geometry/../../x.png")), None);
+        assert_eq!(percent_decode("a%20b%zz%2"), "a b%zz%2");
+    }
+}
