@@ -293,7 +293,7 @@ fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 
 /// Rays for timing: from 5 radii away towards random points within 1.4 radii of a unit
 /// sphere's centre, so that about half of them hit.
-fn timing_rays<R: Real>(n: usize) -> (Vec<Ray<R>>, Sphere<R>) {
+pub fn timing_rays<R: Real>(n: usize) -> (Vec<Ray<R>>, Sphere<R>) {
     let mut rng = rng::seeded(0x7157);
     let rays = (0..n)
         .map(|_| {
