@@ -57,15 +57,10 @@ impl Finding {
     /// Records one quantitative case: passes iff `error <= bound` (NaN fails).
     pub fn measure(&mut self, error: f64, bound: f64, describe: impl FnOnce() -> String) {
         let worst = match self.worst {
-            Some((w, _)) if w >= error => w,
-            _ if error.is_nan() => f64::NAN,
-            _ => error,
-        };
-        // Once NaN, the worst error stays NaN so the report shows it.
-        let worst = if self.worst.is_some_and(|(w, _)| w.is_nan()) {
-            f64::NAN
-        } else {
-            worst
+            // A NaN anywhere stays visible in the report.
+            Some((w, _)) if w.is_nan() || error.is_nan() => f64::NAN,
+            Some((w, _)) => w.max(error),
+            None => error,
         };
         self.worst = Some((worst, bound));
         self.record(error <= bound, describe);
@@ -145,5 +140,44 @@ impl fmt::Display for Verdict {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nan_errors_fail_and_stay_visible() {
+        let mut f = Finding::new("x", "claim");
+        f.measure(1.0, 2.0, String::new);
+        assert!(f.passed());
+        f.measure(f64::NAN, 2.0, || "nan".into());
+        f.measure(0.5, 2.0, String::new);
+        assert!(!f.passed());
+        assert!(f.worst.is_some_and(|(w, _)| w.is_nan()));
+        assert_eq!(f.example.as_deref(), Some("nan"));
+    }
+
+    #[test]
+    fn a_check_with_no_cases_fails() {
+        assert!(!Finding::new("x", "claim").passed());
+        assert!(!Verdict::new("nothing").passed());
+    }
+
+    #[test]
+    fn report_names_failures() {
+        let mut v = Verdict::new("demo");
+        let mut f = Finding::new("bad", "never exceeds 1");
+        f.measure(3.0, 1.0, || "case 7".into());
+        v.findings.push(f);
+        let text = v.to_string();
+        assert!(
+            text.starts_with("FAIL: demo")
+                && text.contains("[FAIL] bad")
+                && text.contains("case 7"),
+            "{text}"
+        );
+        assert!(v.failed("bad"));
     }
 }

@@ -41,7 +41,7 @@ pub fn all() -> Vec<Output> {
 /// Writes the outputs whose file name contains `only` (all if `None`) into `dir`.
 ///
 /// # Errors
-/// Names the first output that failed; `dir` is then left exactly as it was.
+/// If nothing matches `only`, or as [`write_outputs`].
 pub fn write_all(
     dir: &Path,
     settings: &Settings,
@@ -60,6 +60,18 @@ pub fn write_all(
         )
         .into());
     }
+    write_outputs(dir, &outputs, settings)
+}
+
+/// Produces `outputs` in a staging directory beside `dir`, then moves them into `dir`.
+///
+/// # Errors
+/// Names the first output that failed; `dir` is then left exactly as it was.
+pub fn write_outputs(
+    dir: &Path,
+    outputs: &[Output],
+    settings: &Settings,
+) -> Result<Vec<PathBuf>, BoxError> {
     fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let staging = dir.with_file_name(format!(
         "{}.tmp-{}",
@@ -70,8 +82,7 @@ pub fn write_all(
     ));
     fs::create_dir_all(&staging)
         .map_err(|e| format!("cannot create {}: {e}", staging.display()))?;
-    let result =
-        produce(&outputs, &staging, settings).and_then(|()| commit(&outputs, &staging, dir));
+    let result = produce(outputs, &staging, settings).and_then(|()| commit(outputs, &staging, dir));
     let _ = fs::remove_dir_all(&staging);
     result
 }
