@@ -10,6 +10,7 @@
 //! the standard the book's code is.
 
 pub mod sphere;
+pub mod warp;
 
 use std::fmt;
 

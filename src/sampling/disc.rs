@@ -1,0 +1,84 @@
+//! Uniformly sampling the unit disc. Chapter: *The unit disc* (`chapters/sampling/disc.md`).
+//!
+//! Both maps are area-preserving warps from the unit square with pdf `1 / pi`; they differ
+//! in how much they stretch the square's cells, which matters for stratified samples.
+
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
+
+use glam::{DVec2, DVec3};
+
+/// Density of a uniform point on the unit disc, per unit area.
+pub const DISC_PDF: f64 = 1.0 / PI;
+
+// ANCHOR: polar
+/// The polar map: `r = sqrt(u1)` (the inverse of the radial CDF `r^2`), `phi = 2 pi u2`.
+pub fn disc_polar(u: DVec2) -> DVec3 {
+    let r = u.x.sqrt();
+    let phi = TAU * u.y;
+    DVec3::new(r * phi.cos(), r * phi.sin(), 0.0)
+}
+// ANCHOR_END: polar
+
+/// The inverse of [`disc_polar`].
+pub fn disc_polar_invert(p: DVec3) -> DVec2 {
+    let phi = p.y.atan2(p.x);
+    let phi = if phi < 0.0 { phi + TAU } else { phi };
+    DVec2::new(p.x * p.x + p.y * p.y, phi / TAU)
+}
+
+// ANCHOR: concentric
+/// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
+/// concentric circles, each square's wedge to a sector of equal angle.
+/// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
+/// `r = a.y` and `phi = pi/2 - (pi/4) a.x / a.y`.
+pub fn disc_concentric(u: DVec2) -> DVec3 {
+    let a = 2.0 * u - DVec2::ONE;
+    if a == DVec2::ZERO {
+        return DVec3::ZERO;
+    }
+    let (r, phi) = if a.x.abs() > a.y.abs() {
+        (a.x, FRAC_PI_4 * (a.y / a.x))
+    } else {
+        (a.y, FRAC_PI_2 - FRAC_PI_4 * (a.x / a.y))
+    };
+    DVec3::new(r * phi.cos(), r * phi.sin(), 0.0)
+}
+// ANCHOR_END: concentric
+
+/// The inverse of [`disc_concentric`], wedge by wedge.
+pub fn disc_concentric_invert(p: DVec3) -> DVec2 {
+    let radius = (p.x * p.x + p.y * p.y).sqrt();
+    if radius == 0.0 {
+        return DVec2::splat(0.5);
+    }
+    let a = if p.x.abs() >= p.y.abs() {
+        let ax = radius.copysign(p.x);
+        DVec2::new(ax, ax * (p.y / p.x).atan() / FRAC_PI_4)
+    } else {
+        let ay = radius.copysign(p.y);
+        DVec2::new(ay * (p.x / p.y).atan() / FRAC_PI_4, ay)
+    };
+    (a + DVec2::ONE) / 2.0
+}
+
+/// The uniform disc density: `1 / pi` inside, 0 outside.
+pub fn disc_pdf(p: DVec3) -> f64 {
+    if p.x * p.x + p.y * p.y <= 1.0 {
+        DISC_PDF
+    } else {
+        0.0
+    }
+}
+
+/// Anisotropy of a warp at `u`: the ratio of the larger to the smaller singular value of
+/// its Jacobian (1 = cells keep their shape), by central differences.
+pub fn anisotropy(warp: impl Fn(DVec2) -> DVec3, u: DVec2) -> f64 {
+    let h = 1e-6;
+    let du = (warp(u + DVec2::new(h, 0.0)) - warp(u - DVec2::new(h, 0.0))) / (2.0 * h);
+    let dv = (warp(u + DVec2::new(0.0, h)) - warp(u - DVec2::new(0.0, h))) / (2.0 * h);
+    // Singular values of [du dv] from its Gram matrix [[a, b], [b, c]].
+    let (a, b, c) = (du.length_squared(), du.dot(dv), dv.length_squared());
+    let mean = (a + c) / 2.0;
+    let spread = (((a - c) / 2.0).powi(2) + b * b).sqrt();
+    ((mean + spread) / (mean - spread).max(f64::MIN_POSITIVE)).sqrt()
+}

@@ -1,0 +1,99 @@
+//! Tests of the chapter *The unit disc* (`src/sampling/disc.rs`).
+//! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
+
+use glam::{DVec2, DVec3};
+use raylemma::check::warp::{self, Domain, Options, SquareWarp};
+use raylemma::sampling::disc::*;
+
+fn opts() -> Options {
+    Options {
+        samples: 400_000,
+        resolution: 21,
+        points: 5_000,
+        ..Options::default()
+    }
+}
+
+fn check(
+    name: &str,
+    sample: fn(DVec2) -> DVec3,
+    invert: fn(DVec3) -> DVec2,
+) -> raylemma::check::Verdict {
+    let w = SquareWarp {
+        name: name.into(),
+        domain: Domain::Disc,
+        sample,
+        pdf: disc_pdf,
+        invert: Some(invert),
+    };
+    warp::check(&w, &opts())
+}
+
+#[test]
+fn polar_map_passes_every_check() {
+    let v = check("disc polar", disc_polar, disc_polar_invert);
+    v.assert_pass();
+    assert_eq!(v.findings.len(), 3);
+}
+
+#[test]
+fn concentric_map_passes_every_check() {
+    let v = check("disc concentric", disc_concentric, disc_concentric_invert);
+    v.assert_pass();
+    assert_eq!(v.findings.len(), 3);
+}
+
+#[test]
+fn r_equals_u_is_rejected() {
+    let v = check(
+        "disc r = u",
+        |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
+        disc_polar_invert,
+    );
+    assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+}
+
+#[test]
+fn concentric_with_a_wrong_wedge_angle_is_rejected() {
+    // Planted bug: pi/2 instead of pi/4 in the first wedge folds the disc over itself.
+    let bad = |u: DVec2| {
+        let a = 2.0 * u - DVec2::ONE;
+        if a.x.abs() > a.y.abs() {
+            let phi = std::f64::consts::FRAC_PI_2 * (a.y / a.x);
+            DVec3::new(a.x * phi.cos(), a.x * phi.sin(), 0.0)
+        } else {
+            disc_concentric(u)
+        }
+    };
+    let v = check("concentric bad wedge", bad, disc_concentric_invert);
+    assert!(v.failed("chi_squared"), "{v}");
+}
+
+#[test]
+fn concentric_map_distorts_less_than_polar() {
+    // Anisotropy (ratio of the Jacobian's singular values) over a grid of the square.
+    let grid = || {
+        (1..100).flat_map(|i| (1..100).map(move |j| DVec2::new(i as f64 / 100.0, j as f64 / 100.0)))
+    };
+    let worst = |f: fn(DVec2) -> DVec3| grid().map(|u| anisotropy(f, u)).fold(0.0, f64::max);
+    let (polar, concentric) = (worst(disc_polar), worst(disc_concentric));
+    // Polar: ratio 4 pi u1 or its inverse, 1/(4 pi 0.01) ~ 8 at u1 = 0.01 and 4 pi ~ 12.6 at u1 = 1.
+    assert!(polar >= 10.0, "polar {polar}");
+    // Concentric: bounded by about 1.9 (wedge corners), well below polar.
+    assert!(concentric <= 2.5, "concentric {concentric}");
+}
+
+#[test]
+fn centre_and_edges_are_exact() {
+    assert_eq!(disc_concentric(DVec2::splat(0.5)), DVec3::ZERO);
+    assert_eq!(disc_concentric_invert(DVec3::ZERO), DVec2::splat(0.5));
+    for u in [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(1.0, 0.3),
+        DVec2::new(0.999_999_999, 0.999_999_999),
+    ] {
+        for p in [disc_polar(u), disc_concentric(u)] {
+            assert!(p.is_finite() && p.length() <= 1.0 + 1e-15, "{u:?} -> {p:?}");
+        }
+    }
+}

@@ -1,0 +1,168 @@
+//! Tests of the chapter *Uniform sphere and hemisphere* (`src/sampling/sphere.rs`).
+//! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
+
+use std::f64::consts::{PI, TAU};
+
+use glam::{DVec2, DVec3};
+use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp};
+use raylemma::rng::{self, Rng};
+use raylemma::sampling::sphere::*;
+use raylemma::stats::{chi2, test_alpha};
+
+fn opts() -> Options {
+    Options {
+        samples: 400_000,
+        resolution: 21,
+        points: 5_000,
+        ..Options::default()
+    }
+}
+
+#[test]
+fn inverse_cdf_passes_chi_squared_jacobian_and_round_trip() {
+    let w = SquareWarp {
+        name: "sphere inverse cdf".into(),
+        domain: Domain::Sphere,
+        sample: sphere_inverse_cdf,
+        pdf: sphere_pdf,
+        invert: Some(sphere_inverse_cdf_invert),
+    };
+    let v = warp::check(&w, &opts());
+    v.assert_pass();
+    assert_eq!(v.findings.len(), 3);
+}
+
+#[test]
+fn gaussian_passes_chi_squared() {
+    let w = RngWarp {
+        name: "sphere gaussian".into(),
+        domain: Domain::Sphere,
+        sample: sphere_gaussian,
+        pdf: sphere_pdf,
+    };
+    warp::check(&w, &opts()).assert_pass();
+}
+
+#[test]
+fn rejection_passes_chi_squared() {
+    let w = RngWarp {
+        name: "sphere rejection".into(),
+        domain: Domain::Sphere,
+        sample: |rng: &mut Rng| sphere_rejection(rng).0,
+        pdf: sphere_pdf,
+    };
+    warp::check(&w, &opts()).assert_pass();
+}
+
+/// The Gaussian and rejection methods are not warps of the square, so their Jacobian
+/// check is the radial change of variables: integrating the 3D density along a ray,
+/// `p(w) = int_0^inf rho(t w) t^2 dt`, must give `1 / (4 pi)` in every direction.
+#[test]
+fn radial_densities_integrate_to_the_uniform_sphere_pdf() {
+    let gauss = |t: f64| (-t * t / 2.0).exp() / (TAU).powf(1.5);
+    let ball = |t: f64| if t <= 1.0 { 3.0 / (4.0 * PI) } else { 0.0 };
+    // Midpoint rule, fine enough for 1e-6 relative accuracy on these smooth integrands.
+    let radial = |rho: &dyn Fn(f64) -> f64, upper: f64| {
+        let n = 200_000;
+        let h = upper / n as f64;
+        (0..n)
+            .map(|k| (k as f64 + 0.5) * h)
+            .map(|t| rho(t) * t * t * h)
+            .sum::<f64>()
+    };
+    for (name, value) in [
+        ("gaussian", radial(&gauss, 12.0)),
+        ("ball", radial(&ball, 1.0)),
+    ] {
+        let err = (value / SPHERE_PDF - 1.0).abs();
+        assert!(err <= 1e-6, "{name}: {value} vs {SPHERE_PDF}");
+    }
+}
+
+#[test]
+fn rejection_acceptance_rate_is_pi_over_6() {
+    let mut rng = rng::seeded(0xACC);
+    let n = 200_000u64;
+    let draws: u64 = (0..n)
+        .map(|_| u64::from(sphere_rejection(&mut rng).1))
+        .sum();
+    // n acceptances in `draws` trials: test against a binomial with p = pi/6.
+    let p = PI / 6.0;
+    let observed = [n, draws - n];
+    let expected = [draws as f64 * p, draws as f64 * (1.0 - p)];
+    let test = chi2::pearson(&observed, &expected, 5.0).unwrap();
+    assert!(
+        test.p_value >= test_alpha(),
+        "acceptance {} (p = {})",
+        n as f64 / draws as f64,
+        test.p_value
+    );
+    // Planted twin: the same counts tested against the rate 1/2 must be rejected.
+    let wrong = [draws as f64 * 0.5, draws as f64 * 0.5];
+    assert!(chi2::pearson(&observed, &wrong, 5.0).unwrap().p_value < test_alpha());
+}
+
+#[test]
+fn hemisphere_by_flipping_passes() {
+    let n = DVec3::new(0.3, -0.4, 0.866).normalize();
+    let w = RngWarp {
+        name: "hemisphere flip".into(),
+        domain: Domain::Sphere,
+        sample: move |rng: &mut Rng| hemisphere_flip(sphere_gaussian(rng), n),
+        pdf: move |w| hemisphere_pdf(w, n),
+    };
+    warp::check(&w, &opts()).assert_pass();
+}
+
+#[test]
+fn hemisphere_claimed_at_the_sphere_density_is_rejected() {
+    // Planted bug: flipping without doubling the pdf (the pdf then integrates to 1/2).
+    let n = DVec3::Z;
+    let w = RngWarp {
+        name: "hemisphere, sphere pdf".into(),
+        domain: Domain::Sphere,
+        sample: move |rng: &mut Rng| hemisphere_flip(sphere_gaussian(rng), n),
+        pdf: move |w: DVec3| if w.dot(n) >= 0.0 { SPHERE_PDF } else { 0.0 },
+    };
+    let v = warp::check(&w, &opts());
+    assert!(v.failed("chi_squared"), "{v}");
+}
+
+#[test]
+fn near_zero_vectors_normalise_or_are_refused() {
+    assert_eq!(normalize_robust(DVec3::ZERO), None);
+    assert_eq!(normalize_robust(DVec3::new(f64::NAN, 0.0, 0.0)), None);
+    assert_eq!(normalize_robust(DVec3::new(f64::INFINITY, 0.0, 0.0)), None);
+    for v in [
+        DVec3::new(1e-300, -2e-300, 2e-300),
+        DVec3::new(5e-324, 0.0, 0.0),
+        DVec3::new(3e-170, 4e-170, 0.0),
+    ] {
+        let w = normalize_robust(v).expect("a tiny non-zero vector normalises");
+        assert!(
+            (w.length() - 1.0).abs() <= 4.0 * f64::EPSILON,
+            "{v:?} -> {w:?}"
+        );
+        assert!(w.dot(v.signum()) > 0.0);
+    }
+    // glam's plain normalize fails on the same inputs: the reason normalize_robust exists.
+    assert!(!DVec3::new(1e-300, -2e-300, 2e-300).normalize().is_finite());
+}
+
+#[test]
+fn inverse_cdf_is_accurate_at_the_poles() {
+    for u in [0.0, 1e-300, 1e-17, 0.5, 1.0 - f64::EPSILON / 2.0] {
+        let w = sphere_inverse_cdf(DVec2::new(u, 0.3));
+        assert!(
+            (w.length() - 1.0).abs() <= 4.0 * f64::EPSILON,
+            "u = {u}: {w:?}"
+        );
+    }
+    // Near the pole the radius 2 sqrt(u(1-u)) keeps its relative precision; the seed's
+    // sqrt(1 - z^2) returns 0 there.
+    let u = 1e-20;
+    let w = sphere_inverse_cdf(DVec2::new(u, 0.0));
+    assert!((w.x / (2.0 * u.sqrt()) - 1.0).abs() <= 1e-12);
+    let z: f64 = 1.0 - 2.0 * u;
+    assert_eq!((1.0 - z * z).sqrt(), 0.0);
+}

@@ -1,0 +1,178 @@
+//! Tests of the warp checker itself (chapter *Checking a sampler*): it must reject every
+//! planted bug, and say why. Every chi-squared test here runs at the suite's Šidák-corrected
+//! level `raylemma::stats::test_alpha()`, with a fixed seed.
+
+use std::f64::consts::{FRAC_1_PI, PI, TAU};
+
+use glam::{DVec2, DVec3};
+use raylemma::check::Verdict;
+use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp};
+use raylemma::sampling::disc::{disc_pdf, disc_polar};
+use raylemma::sampling::sphere::sphere_pdf;
+
+fn opts() -> Options {
+    Options {
+        samples: 200_000,
+        resolution: 21,
+        points: 2_000,
+        ..Options::default()
+    }
+}
+
+fn square(
+    name: &str,
+    domain: Domain,
+    sample: fn(DVec2) -> DVec3,
+    pdf: fn(DVec3) -> f64,
+) -> Verdict {
+    let w = SquareWarp {
+        name: name.into(),
+        domain,
+        sample,
+        pdf,
+        invert: None,
+    };
+    warp::check(&w, &opts())
+}
+
+fn chi2_message(v: &Verdict) -> String {
+    v.finding("chi_squared").example.clone().unwrap_or_default()
+}
+
+#[test]
+fn a_correct_sampler_passes() {
+    square("polar disc", Domain::Disc, disc_polar, disc_pdf).assert_pass();
+}
+
+#[test]
+fn rejects_r_equals_u_on_the_disc() {
+    // The classic mistake: r = u instead of sqrt(u) crowds samples at the centre.
+    let v = square(
+        "disc r=u",
+        Domain::Disc,
+        |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
+        disc_pdf,
+    );
+    assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+}
+
+#[test]
+fn rejects_a_cos_1_1_lobe_claimed_as_cosine() {
+    // Samples from cos^1.1 (exponent n: z = u^(1/(n+1))), claimed to follow cos/pi.
+    let sample = |u: DVec2| {
+        let z = (1.0 - u.x).powf(1.0 / 2.1);
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z)
+    };
+    let v = square("cos^1.1 lobe", Domain::Sphere, sample, |w| {
+        w.z.max(0.0) * FRAC_1_PI
+    });
+    assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+}
+
+#[test]
+fn rejects_a_missing_sin_theta() {
+    // theta uniform in [0, pi]: forgets the sin(theta) of the solid-angle element.
+    let sample = |u: DVec2| {
+        let (theta, phi) = (PI * u.x, TAU * u.y);
+        DVec3::new(
+            theta.sin() * phi.cos(),
+            theta.sin() * phi.sin(),
+            theta.cos(),
+        )
+    };
+    let v = square("theta uniform", Domain::Sphere, sample, sphere_pdf);
+    assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+}
+
+#[test]
+fn rejects_a_pdf_that_does_not_integrate_to_one() {
+    let v = square("disc pdf x2", Domain::Disc, disc_polar, |p| {
+        2.0 * disc_pdf(p)
+    });
+    assert!(chi2_message(&v).contains("integrates"), "{v}");
+}
+
+#[test]
+fn rejects_samples_outside_the_domain() {
+    let v = square(
+        "disc radius 1.01",
+        Domain::Disc,
+        |u| disc_polar(u) * 1.01,
+        disc_pdf,
+    );
+    assert!(chi2_message(&v).contains("outside the domain"), "{v}");
+}
+
+#[test]
+fn rejects_nan_samples() {
+    let v = square(
+        "nan",
+        Domain::Disc,
+        |u| {
+            if u.x < 1e-3 {
+                DVec3::NAN
+            } else {
+                disc_polar(u)
+            }
+        },
+        disc_pdf,
+    );
+    assert!(chi2_message(&v).contains("not finite"), "{v}");
+}
+
+#[test]
+fn rejects_a_negative_pdf() {
+    let v = square("negative pdf", Domain::Disc, disc_polar, |p| {
+        if p.x > 0.9 { -1.0 } else { disc_pdf(p) }
+    });
+    assert!(chi2_message(&v).contains("negative"), "{v}");
+}
+
+#[test]
+fn rejects_samples_where_the_pdf_is_zero() {
+    // Claims the upper half disc only, samples the whole disc.
+    let v = square("half", Domain::Disc, disc_polar, |p| {
+        if p.y >= 0.0 { 2.0 * disc_pdf(p) } else { 0.0 }
+    });
+    assert!(chi2_message(&v).contains("integrates to 0"), "{v}");
+}
+
+#[test]
+fn writes_images_on_failure() {
+    let v = square(
+        "images demo",
+        Domain::Disc,
+        |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
+        disc_pdf,
+    );
+    let message = chi2_message(&v);
+    assert!(message.contains("images in"), "{message}");
+    let dir =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/warp-failures/images_demo");
+    for f in ["observed.png", "expected.png", "difference.png"] {
+        assert!(dir.join(f).is_file(), "{f} missing");
+    }
+}
+
+#[test]
+fn rng_samplers_get_the_chi_squared_test_only() {
+    let w = RngWarp {
+        name: "rejection disc".into(),
+        domain: Domain::Disc,
+        sample: |rng: &mut raylemma::rng::Rng| loop {
+            let p = DVec3::new(
+                raylemma::rng::uniform(rng, -1.0, 1.0),
+                raylemma::rng::uniform(rng, -1.0, 1.0),
+                0.0,
+            );
+            if p.length_squared() <= 1.0 {
+                return p;
+            }
+        },
+        pdf: disc_pdf,
+    };
+    let v = warp::check(&w, &opts());
+    v.assert_pass();
+    assert_eq!(v.findings.len(), 1);
+}
