@@ -26,6 +26,7 @@ use super::{Finding, Verdict};
 use crate::rng::{self, Rng};
 use crate::stats::{self, chi2};
 
+// ANCHOR: interface
 /// The domain a sampler draws from, and the measure its pdf is a density for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Domain {
@@ -64,6 +65,7 @@ pub trait Warp: Sync {
         None
     }
 }
+// ANCHOR_END: interface
 
 /// A warp from the unit square built from two plain functions: the usual way to check a
 /// `fn(DVec2) -> DVec3` sampler with its `fn(DVec3) -> f64` pdf.

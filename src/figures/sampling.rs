@@ -1,0 +1,277 @@
+//! Figures and tables of the chapters *Checking a sampler*, *Uniform sphere and
+//! hemisphere*, *The unit disc* and *Cosine-weighted hemisphere*.
+
+use std::f64::consts::{PI, TAU};
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
+
+use super::{Output, Settings, timing};
+use crate::check::warp::{self, Domain, Options, RngWarp, SquareWarp, Warp};
+use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::rng::{self, Rng};
+use crate::sampling::cosine::*;
+use crate::sampling::disc::*;
+use crate::sampling::sphere::*;
+use crate::stats;
+
+/// The outputs of these chapters.
+pub fn outputs() -> Vec<Output> {
+    vec![
+        Output { file: "sampling_warped_grids.png", what: "disc maps' distortion", make: warped_grids_png },
+        Output { file: "sampling_distortion.md", what: "disc maps' anisotropy", make: distortion_md },
+        Output { file: "sampling_methods.md", what: "speed and accuracy of every sampler", make: methods_md },
+        Output { file: "sampling_power.md", what: "power against planted bugs", make: power_md },
+        Output { file: "sampling_calibration.png", what: "p-values of correct samplers", make: calibration_png },
+        Output { file: "sampling_calibration.md", what: "false-failure rates", make: calibration_md },
+    ]
+}
+
+type Boxed = Box<dyn Warp + Send>;
+
+fn square_warp(name: &str, domain: Domain, sample: fn(DVec2) -> DVec3, pdf: fn(DVec3) -> f64) -> Boxed {
+    Box::new(SquareWarp { name: name.into(), domain, sample, pdf, invert: None })
+}
+
+fn hemisphere_pdf_z(w: DVec3) -> f64 {
+    hemisphere_pdf(w, DVec3::Z)
+}
+
+/// Every correct sampler of the sampling chapters.
+fn correct_samplers() -> Vec<Boxed> {
+    vec![
+        square_warp("sphere, inverse CDF", Domain::Sphere, sphere_inverse_cdf, sphere_pdf),
+        Box::new(RngWarp { name: "sphere, Gaussian".into(), domain: Domain::Sphere, sample: sphere_gaussian, pdf: sphere_pdf }),
+        Box::new(RngWarp {
+            name: "sphere, rejection".into(),
+            domain: Domain::Sphere,
+            sample: |r: &mut Rng| sphere_rejection(r).0,
+            pdf: sphere_pdf,
+        }),
+        Box::new(RngWarp {
+            name: "hemisphere, flipped inverse CDF".into(),
+            domain: Domain::Sphere,
+            sample: |r: &mut Rng| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z),
+            pdf: hemisphere_pdf_z,
+        }),
+        square_warp("disc, polar", Domain::Disc, disc_polar, disc_pdf),
+        square_warp("disc, concentric", Domain::Disc, disc_concentric, disc_pdf),
+        square_warp("cosine, seed angles", Domain::Sphere, cosine_seed_angles, cosine_pdf),
+        square_warp("cosine, seed Cartesian", Domain::Sphere, cosine_seed_cartesian, cosine_pdf),
+        square_warp("cosine, Malley (concentric)", Domain::Sphere, cosine_malley, cosine_pdf),
+    ]
+}
+
+// ANCHOR: planted
+/// The planted bugs every sampler check must reject.
+pub fn planted_bugs() -> Vec<Boxed> {
+    vec![
+        square_warp("disc, r = u", Domain::Disc, |u| disc_polar(DVec2::new(u.x * u.x, u.y)), disc_pdf),
+        square_warp(
+            "sphere, theta uniform (missing sin theta)",
+            Domain::Sphere,
+            |u| {
+                let (t, p) = (PI * u.x, TAU * u.y);
+                DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+            },
+            sphere_pdf,
+        ),
+        square_warp(
+            "cosine^1.1 lobe claimed as cosine",
+            Domain::Sphere,
+            |u| {
+                let z = (1.0 - u.x).powf(1.0 / 2.1);
+                let r = (1.0 - z * z).max(0.0).sqrt();
+                DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z)
+            },
+            cosine_pdf,
+        ),
+        square_warp(
+            "uniform hemisphere claimed as cosine",
+            Domain::Sphere,
+            |u| hemisphere_flip(sphere_inverse_cdf(u), DVec3::Z),
+            cosine_pdf,
+        ),
+    ]
+}
+// ANCHOR_END: planted
+
+/// The chi-squared p-value of `w` with `samples` samples on a 21-row grid. An error
+/// (which none of the figure's samplers should produce) is a NaN p-value, which every
+/// table shows and no rate counts as a rejection.
+fn chi2_p(w: &dyn Warp, samples: usize, seed: u64) -> f64 {
+    let options = Options { samples, resolution: 21, points: 0, seed, alpha: stats::test_alpha() };
+    warp::chi_squared(w, &options).map_or(f64::NAN, |(c, _, _)| c.p_value)
+}
+
+fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let samples = if settings.quick { 100_000 } else { 1_000_000 };
+    let mut md = String::new();
+    writeln!(md, "| sampler | ns per sample | chi-squared p ({samples} samples) | worst Jacobian error | worst \\| \\|w\\| − 1 \\| |")?;
+    writeln!(md, "|---|---:|---:|---:|---:|")?;
+    for w in correct_samplers() {
+        let mut rng = rng::seeded(9);
+        let n = 4096;
+        let reps = if settings.quick { 5 } else { 101 };
+        let ns = timing::median_ns_per_item(n, reps, || {
+            let mut acc = 0.0;
+            for _ in 0..n {
+                acc += black_box(w.sample(&mut rng)).x;
+            }
+            acc.to_bits()
+        });
+        let p = chi2_p(w.as_ref(), samples, 0xC41);
+        let options = Options { points: 10_000, ..Options::default() };
+        let jac = warp::jacobian(w.as_ref(), &options)
+            .and_then(|f| f.worst)
+            .map_or("n/a (not a warp of the square)".to_string(), |(e, _)| format!("{e:.1e}"));
+        let mut rng = rng::seeded(10);
+        let norm = (0..100_000)
+            .map(|_| {
+                let p = w.sample(&mut rng);
+                if w.domain() == Domain::Sphere { (p.length() - 1.0).abs() } else { 0.0 }
+            })
+            .fold(0.0, f64::max);
+        let norm = if w.domain() == Domain::Sphere { format!("{norm:.1e}") } else { "—".into() };
+        writeln!(md, "| {} | {ns:.1} | {p:.3} | {jac} | {norm} |", w.name())?;
+    }
+    writeln!(md, "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples.*", timing::machine())?;
+    Ok(md.into_bytes())
+}
+
+fn seeds(settings: &Settings) -> u64 {
+    if settings.quick { 40 } else { 400 }
+}
+
+fn power_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let runs = if settings.quick { 10 } else { 50 };
+    let sizes = [10_000, 100_000, 1_000_000];
+    let alpha = stats::test_alpha();
+    let mut md = String::new();
+    writeln!(md, "| planted bug | rejected at n = 10 000 | n = 100 000 | n = 1 000 000 |")?;
+    writeln!(md, "|---|---:|---:|---:|")?;
+    for bug in planted_bugs() {
+        let rates: Vec<String> = sizes
+            .iter()
+            .map(|&n| {
+                let ps: Vec<f64> = (0..runs).into_par_iter().map(|s| chi2_p(bug.as_ref(), n, 1000 + s)).collect();
+                let errors = ps.iter().filter(|p| p.is_nan()).count();
+                let rejected = ps.iter().filter(|&&p| p < alpha).count();
+                let note = if errors > 0 { format!(" ({errors} errors)") } else { String::new() };
+                format!("{:.0} %{note}", 100.0 * rejected as f64 / runs as f64)
+            })
+            .collect();
+        writeln!(md, "| {} | {} |", bug.name(), rates.join(" | "))?;
+    }
+    writeln!(md, "\n*Share of {runs} seeds for which chi-squared rejects the bug at the suite's per-test level α = {alpha:.2e}.*")?;
+    Ok(md.into_bytes())
+}
+
+/// p-values of every correct sampler over many seeds (100 000 samples each).
+fn calibration_p_values(settings: &Settings) -> Vec<(String, Vec<f64>)> {
+    correct_samplers()
+        .into_iter()
+        .map(|w| {
+            let ps = (0..seeds(settings)).into_par_iter().map(|s| chi2_p(w.as_ref(), 100_000, 5000 + s)).collect();
+            (w.name(), ps)
+        })
+        .collect()
+}
+
+fn calibration_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let all: Vec<f64> = calibration_p_values(settings).into_iter().flat_map(|(_, ps)| ps).collect();
+    let bins = 20;
+    let mut counts = vec![0usize; bins];
+    for p in &all {
+        counts[((p * bins as f64) as usize).min(bins - 1)] += 1;
+    }
+    let density = |k: usize| counts[k] as f64 / all.len() as f64 * bins as f64;
+    let mut steps = Vec::new();
+    for k in 0..bins {
+        steps.push((k as f64 / bins as f64, density(k)));
+        steps.push(((k + 1) as f64 / bins as f64, density(k)));
+    }
+    let panels = [Panel {
+        title: format!("chi-squared p-values of the correct samplers ({} runs)", all.len()),
+        x_label: "p-value".into(),
+        y_label: "density".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: vec![
+            Series { label: "observed".into(), points: steps },
+            Series { label: "uniform (ideal)".into(), points: vec![(0.0, 1.0), (1.0, 1.0)] },
+        ],
+    }];
+    plot::line_chart_png(&panels, 800, 420)
+}
+
+fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let alpha = stats::test_alpha();
+    let mut md = String::new();
+    writeln!(md, "| sampler | runs | p < 0.05 | p < 0.01 | p < α = {alpha:.1e} | KS p-value of the p-values |")?;
+    writeln!(md, "|---|---:|---:|---:|---:|---:|")?;
+    for (name, ps) in calibration_p_values(settings) {
+        // A NaN p-value (an error) counts as a failure here.
+        let share = |a: f64| ps.iter().filter(|&&p| p.is_nan() || p < a).count() as f64 / ps.len() as f64;
+        let ks = stats::ks::one_sample(&ps, |x| x.clamp(0.0, 1.0)).map_or(f64::NAN, |k| k.p_value);
+        writeln!(
+            md,
+            "| {name} | {} | {:.1} % | {:.1} % | {:.2} % | {ks:.3} |",
+            ps.len(),
+            100.0 * share(0.05),
+            100.0 * share(0.01),
+            100.0 * share(alpha)
+        )?;
+    }
+    writeln!(md, "\n*100 000 samples per run, one seed per run. A well-calibrated test rejects about 5 % and 1 % of correct samplers at those levels, and its p-values are uniform.*")?;
+    Ok(md.into_bytes())
+}
+
+fn distortion_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let grid: Vec<DVec2> =
+        (0..200).flat_map(|i| (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))).collect();
+    let mut md = String::new();
+    writeln!(md, "| map | mean anisotropy | worst anisotropy |")?;
+    writeln!(md, "|---|---:|---:|")?;
+    for (name, f) in [("polar", disc_polar as fn(DVec2) -> DVec3), ("concentric", disc_concentric)] {
+        let a: Vec<f64> = grid.iter().map(|&u| anisotropy(f, u)).collect();
+        let mean = a.iter().sum::<f64>() / a.len() as f64;
+        let worst = a.iter().copied().fold(0.0, f64::max);
+        writeln!(md, "| {name} | {mean:.2} | {worst:.1} |")?;
+    }
+    writeln!(md, "\n*Ratio of the larger to the smaller singular value of the map's Jacobian (1 = cells keep their shape), at the centres of a 200 × 200 grid of the unit square.*")?;
+    Ok(md.into_bytes())
+}
+
+fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    use plotters::prelude::*;
+    plot::register_embedded_font();
+    let (w, h) = (900u32, 470u32);
+    let mut buffer = vec![255u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let maps: [(&str, fn(DVec2) -> DVec3); 2] = [("polar map", disc_polar), ("concentric map", disc_concentric)];
+        for ((name, f), area) in maps.iter().zip(root.split_evenly((1, 2)).iter()) {
+            let mut chart = ChartBuilder::on(area)
+                .caption(*name, ("sans-serif", 18))
+                .margin(15)
+                .build_cartesian_2d(-1.05..1.05, -1.05..1.05)?;
+            let lines = 12;
+            for k in 0..=lines {
+                let c = k as f64 / lines as f64;
+                let along = |g: &dyn Fn(f64) -> DVec2| -> Vec<(f64, f64)> {
+                    (0..=200).map(|s| f(g(f64::from(s) / 200.0))).map(|p| (p.x, p.y)).collect()
+                };
+                let u1 = along(&|s| DVec2::new(c, s));
+                let u2 = along(&|s| DVec2::new(s, c));
+                chart.draw_series(LineSeries::new(u1, plot::PALETTE[0].stroke_width(1)))?;
+                chart.draw_series(LineSeries::new(u2, plot::PALETTE[1].stroke_width(1)))?;
+            }
+        }
+        root.present()?;
+    }
+    plot::encode_png(w, h, buffer)
+}
