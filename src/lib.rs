@@ -8,6 +8,8 @@
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
 //! * [`rng`]: the seeded generator every test and figure uses.
+//! * [`stats`]: chi-squared, Kolmogorov-Smirnov and t-tests, with Šidák correction.
+//! * [`sampling`]: warps and tabulated distributions (*Sampling*).
 //! * [`figures`]: the code that draws the book's figures and tables.
 
 pub mod check;
@@ -16,3 +18,5 @@ pub mod geometry;
 pub mod plot;
 pub mod real;
 pub mod rng;
+pub mod sampling;
+pub mod stats;

@@ -4,7 +4,11 @@
 //! into a staging directory first; only when *all* outputs succeeded are they moved into
 //! `figures/` (one rename per file), so a failed run leaves the previous figures intact.
 
+pub mod frame;
+pub mod sampling;
 pub mod sphere;
+pub mod stats;
+pub mod tabulated;
 pub mod timing;
 
 use std::fs;
@@ -35,6 +39,10 @@ pub struct Output {
 pub fn all() -> Vec<Output> {
     let mut outputs = Vec::new();
     outputs.extend(sphere::outputs());
+    outputs.extend(stats::outputs());
+    outputs.extend(sampling::outputs());
+    outputs.extend(tabulated::outputs());
+    outputs.extend(frame::outputs());
     outputs
 }
 

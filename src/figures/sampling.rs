@@ -20,19 +20,54 @@ use crate::stats;
 /// The outputs of these chapters.
 pub fn outputs() -> Vec<Output> {
     vec![
-        Output { file: "sampling_warped_grids.png", what: "disc maps' distortion", make: warped_grids_png },
-        Output { file: "sampling_distortion.md", what: "disc maps' anisotropy", make: distortion_md },
-        Output { file: "sampling_methods.md", what: "speed and accuracy of every sampler", make: methods_md },
-        Output { file: "sampling_power.md", what: "power against planted bugs", make: power_md },
-        Output { file: "sampling_calibration.png", what: "p-values of correct samplers", make: calibration_png },
-        Output { file: "sampling_calibration.md", what: "false-failure rates", make: calibration_md },
+        Output {
+            file: "sampling_warped_grids.png",
+            what: "disc maps' distortion",
+            make: warped_grids_png,
+        },
+        Output {
+            file: "sampling_distortion.md",
+            what: "disc maps' anisotropy",
+            make: distortion_md,
+        },
+        Output {
+            file: "sampling_methods.md",
+            what: "speed and accuracy of every sampler",
+            make: methods_md,
+        },
+        Output {
+            file: "sampling_power.md",
+            what: "power against planted bugs",
+            make: power_md,
+        },
+        Output {
+            file: "sampling_calibration.png",
+            what: "p-values of correct samplers",
+            make: calibration_png,
+        },
+        Output {
+            file: "sampling_calibration.md",
+            what: "false-failure rates",
+            make: calibration_md,
+        },
     ]
 }
 
 type Boxed = Box<dyn Warp + Send>;
 
-fn square_warp(name: &str, domain: Domain, sample: fn(DVec2) -> DVec3, pdf: fn(DVec3) -> f64) -> Boxed {
-    Box::new(SquareWarp { name: name.into(), domain, sample, pdf, invert: None })
+fn square_warp(
+    name: &str,
+    domain: Domain,
+    sample: fn(DVec2) -> DVec3,
+    pdf: fn(DVec3) -> f64,
+) -> Boxed {
+    Box::new(SquareWarp {
+        name: name.into(),
+        domain,
+        sample,
+        pdf,
+        invert: None,
+    })
 }
 
 fn hemisphere_pdf_z(w: DVec3) -> f64 {
@@ -42,8 +77,18 @@ fn hemisphere_pdf_z(w: DVec3) -> f64 {
 /// Every correct sampler of the sampling chapters.
 fn correct_samplers() -> Vec<Boxed> {
     vec![
-        square_warp("sphere, inverse CDF", Domain::Sphere, sphere_inverse_cdf, sphere_pdf),
-        Box::new(RngWarp { name: "sphere, Gaussian".into(), domain: Domain::Sphere, sample: sphere_gaussian, pdf: sphere_pdf }),
+        square_warp(
+            "sphere, inverse CDF",
+            Domain::Sphere,
+            sphere_inverse_cdf,
+            sphere_pdf,
+        ),
+        Box::new(RngWarp {
+            name: "sphere, Gaussian".into(),
+            domain: Domain::Sphere,
+            sample: sphere_gaussian,
+            pdf: sphere_pdf,
+        }),
         Box::new(RngWarp {
             name: "sphere, rejection".into(),
             domain: Domain::Sphere,
@@ -53,14 +98,31 @@ fn correct_samplers() -> Vec<Boxed> {
         Box::new(RngWarp {
             name: "hemisphere, flipped inverse CDF".into(),
             domain: Domain::Sphere,
-            sample: |r: &mut Rng| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z),
+            sample: |r: &mut Rng| {
+                hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z)
+            },
             pdf: hemisphere_pdf_z,
         }),
         square_warp("disc, polar", Domain::Disc, disc_polar, disc_pdf),
         square_warp("disc, concentric", Domain::Disc, disc_concentric, disc_pdf),
-        square_warp("cosine, seed angles", Domain::Sphere, cosine_seed_angles, cosine_pdf),
-        square_warp("cosine, seed Cartesian", Domain::Sphere, cosine_seed_cartesian, cosine_pdf),
-        square_warp("cosine, Malley (concentric)", Domain::Sphere, cosine_malley, cosine_pdf),
+        square_warp(
+            "cosine, seed angles",
+            Domain::Sphere,
+            cosine_seed_angles,
+            cosine_pdf,
+        ),
+        square_warp(
+            "cosine, seed Cartesian",
+            Domain::Sphere,
+            cosine_seed_cartesian,
+            cosine_pdf,
+        ),
+        square_warp(
+            "cosine, Malley (concentric)",
+            Domain::Sphere,
+            cosine_malley,
+            cosine_pdf,
+        ),
     ]
 }
 
@@ -68,7 +130,12 @@ fn correct_samplers() -> Vec<Boxed> {
 /// The planted bugs every sampler check must reject.
 pub fn planted_bugs() -> Vec<Boxed> {
     vec![
-        square_warp("disc, r = u", Domain::Disc, |u| disc_polar(DVec2::new(u.x * u.x, u.y)), disc_pdf),
+        square_warp(
+            "disc, r = u",
+            Domain::Disc,
+            |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
+            disc_pdf,
+        ),
         square_warp(
             "sphere, theta uniform (missing sin theta)",
             Domain::Sphere,
@@ -102,14 +169,23 @@ pub fn planted_bugs() -> Vec<Boxed> {
 /// (which none of the figure's samplers should produce) is a NaN p-value, which every
 /// table shows and no rate counts as a rejection.
 fn chi2_p(w: &dyn Warp, samples: usize, seed: u64) -> f64 {
-    let options = Options { samples, resolution: 21, points: 0, seed, alpha: stats::test_alpha() };
+    let options = Options {
+        samples,
+        resolution: 21,
+        points: 0,
+        seed,
+        alpha: stats::test_alpha(),
+    };
     warp::chi_squared(w, &options).map_or(f64::NAN, |(c, _, _)| c.p_value)
 }
 
 fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
-    writeln!(md, "| sampler | ns per sample | chi-squared p ({samples} samples) | worst Jacobian error | worst \\| \\|w\\| − 1 \\| |")?;
+    writeln!(
+        md,
+        "| sampler | ns per sample | chi-squared p ({samples} samples) | worst Jacobian error | worst \\| \\|w\\| − 1 \\| |"
+    )?;
     writeln!(md, "|---|---:|---:|---:|---:|")?;
     for w in correct_samplers() {
         let mut rng = rng::seeded(9);
@@ -123,21 +199,38 @@ fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             acc.to_bits()
         });
         let p = chi2_p(w.as_ref(), samples, 0xC41);
-        let options = Options { points: 10_000, ..Options::default() };
+        let options = Options {
+            points: 10_000,
+            ..Options::default()
+        };
         let jac = warp::jacobian(w.as_ref(), &options)
             .and_then(|f| f.worst)
-            .map_or("n/a (not a warp of the square)".to_string(), |(e, _)| format!("{e:.1e}"));
+            .map_or("n/a (not a warp of the square)".to_string(), |(e, _)| {
+                format!("{e:.1e}")
+            });
         let mut rng = rng::seeded(10);
         let norm = (0..100_000)
             .map(|_| {
                 let p = w.sample(&mut rng);
-                if w.domain() == Domain::Sphere { (p.length() - 1.0).abs() } else { 0.0 }
+                if w.domain() == Domain::Sphere {
+                    (p.length() - 1.0).abs()
+                } else {
+                    0.0
+                }
             })
             .fold(0.0, f64::max);
-        let norm = if w.domain() == Domain::Sphere { format!("{norm:.1e}") } else { "—".into() };
+        let norm = if w.domain() == Domain::Sphere {
+            format!("{norm:.1e}")
+        } else {
+            "—".into()
+        };
         writeln!(md, "| {} | {ns:.1} | {p:.3} | {jac} | {norm} |", w.name())?;
     }
-    writeln!(md, "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples.*", timing::machine())?;
+    writeln!(
+        md,
+        "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples.*",
+        timing::machine()
+    )?;
     Ok(md.into_bytes())
 }
 
@@ -150,22 +243,35 @@ fn power_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let sizes = [10_000, 100_000, 1_000_000];
     let alpha = stats::test_alpha();
     let mut md = String::new();
-    writeln!(md, "| planted bug | rejected at n = 10 000 | n = 100 000 | n = 1 000 000 |")?;
+    writeln!(
+        md,
+        "| planted bug | rejected at n = 10 000 | n = 100 000 | n = 1 000 000 |"
+    )?;
     writeln!(md, "|---|---:|---:|---:|")?;
     for bug in planted_bugs() {
         let rates: Vec<String> = sizes
             .iter()
             .map(|&n| {
-                let ps: Vec<f64> = (0..runs).into_par_iter().map(|s| chi2_p(bug.as_ref(), n, 1000 + s)).collect();
+                let ps: Vec<f64> = (0..runs)
+                    .into_par_iter()
+                    .map(|s| chi2_p(bug.as_ref(), n, 1000 + s))
+                    .collect();
                 let errors = ps.iter().filter(|p| p.is_nan()).count();
                 let rejected = ps.iter().filter(|&&p| p < alpha).count();
-                let note = if errors > 0 { format!(" ({errors} errors)") } else { String::new() };
+                let note = if errors > 0 {
+                    format!(" ({errors} errors)")
+                } else {
+                    String::new()
+                };
                 format!("{:.0} %{note}", 100.0 * rejected as f64 / runs as f64)
             })
             .collect();
         writeln!(md, "| {} | {} |", bug.name(), rates.join(" | "))?;
     }
-    writeln!(md, "\n*Share of {runs} seeds for which chi-squared rejects the bug at the suite's per-test level α = {alpha:.2e}.*")?;
+    writeln!(
+        md,
+        "\n*Share of {runs} seeds for which chi-squared rejects the bug at the suite's per-test level α = {alpha:.2e}.*"
+    )?;
     Ok(md.into_bytes())
 }
 
@@ -174,14 +280,20 @@ fn calibration_p_values(settings: &Settings) -> Vec<(String, Vec<f64>)> {
     correct_samplers()
         .into_iter()
         .map(|w| {
-            let ps = (0..seeds(settings)).into_par_iter().map(|s| chi2_p(w.as_ref(), 100_000, 5000 + s)).collect();
+            let ps = (0..seeds(settings))
+                .into_par_iter()
+                .map(|s| chi2_p(w.as_ref(), 100_000, 5000 + s))
+                .collect();
             (w.name(), ps)
         })
         .collect()
 }
 
 fn calibration_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    let all: Vec<f64> = calibration_p_values(settings).into_iter().flat_map(|(_, ps)| ps).collect();
+    let all: Vec<f64> = calibration_p_values(settings)
+        .into_iter()
+        .flat_map(|(_, ps)| ps)
+        .collect();
     let bins = 20;
     let mut counts = vec![0usize; bins];
     for p in &all {
@@ -194,14 +306,23 @@ fn calibration_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         steps.push(((k + 1) as f64 / bins as f64, density(k)));
     }
     let panels = [Panel {
-        title: format!("chi-squared p-values of the correct samplers ({} runs)", all.len()),
+        title: format!(
+            "chi-squared p-values of the correct samplers ({} runs)",
+            all.len()
+        ),
         x_label: "p-value".into(),
         y_label: "density".into(),
         x_scale: Scale::Linear,
         y_scale: Scale::Linear,
         series: vec![
-            Series { label: "observed".into(), points: steps },
-            Series { label: "uniform (ideal)".into(), points: vec![(0.0, 1.0), (1.0, 1.0)] },
+            Series {
+                label: "observed".into(),
+                points: steps,
+            },
+            Series {
+                label: "uniform (ideal)".into(),
+                points: vec![(0.0, 1.0), (1.0, 1.0)],
+            },
         ],
     }];
     plot::line_chart_png(&panels, 800, 420)
@@ -210,11 +331,15 @@ fn calibration_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let alpha = stats::test_alpha();
     let mut md = String::new();
-    writeln!(md, "| sampler | runs | p < 0.05 | p < 0.01 | p < α = {alpha:.1e} | KS p-value of the p-values |")?;
+    writeln!(
+        md,
+        "| sampler | runs | p < 0.05 | p < 0.01 | p < α = {alpha:.1e} | KS p-value of the p-values |"
+    )?;
     writeln!(md, "|---|---:|---:|---:|---:|---:|")?;
     for (name, ps) in calibration_p_values(settings) {
         // A NaN p-value (an error) counts as a failure here.
-        let share = |a: f64| ps.iter().filter(|&&p| p.is_nan() || p < a).count() as f64 / ps.len() as f64;
+        let share =
+            |a: f64| ps.iter().filter(|&&p| p.is_nan() || p < a).count() as f64 / ps.len() as f64;
         let ks = stats::ks::one_sample(&ps, |x| x.clamp(0.0, 1.0)).map_or(f64::NAN, |k| k.p_value);
         writeln!(
             md,
@@ -225,23 +350,35 @@ fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             100.0 * share(alpha)
         )?;
     }
-    writeln!(md, "\n*100 000 samples per run, one seed per run. A well-calibrated test rejects about 5 % and 1 % of correct samplers at those levels, and its p-values are uniform.*")?;
+    writeln!(
+        md,
+        "\n*100 000 samples per run, one seed per run. A well-calibrated test rejects about 5 % and 1 % of correct samplers at those levels, and its p-values are uniform.*"
+    )?;
     Ok(md.into_bytes())
 }
 
 fn distortion_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    let grid: Vec<DVec2> =
-        (0..200).flat_map(|i| (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))).collect();
+    let grid: Vec<DVec2> = (0..200)
+        .flat_map(|i| {
+            (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))
+        })
+        .collect();
     let mut md = String::new();
     writeln!(md, "| map | mean anisotropy | worst anisotropy |")?;
     writeln!(md, "|---|---:|---:|")?;
-    for (name, f) in [("polar", disc_polar as fn(DVec2) -> DVec3), ("concentric", disc_concentric)] {
+    for (name, f) in [
+        ("polar", disc_polar as fn(DVec2) -> DVec3),
+        ("concentric", disc_concentric),
+    ] {
         let a: Vec<f64> = grid.iter().map(|&u| anisotropy(f, u)).collect();
         let mean = a.iter().sum::<f64>() / a.len() as f64;
         let worst = a.iter().copied().fold(0.0, f64::max);
         writeln!(md, "| {name} | {mean:.2} | {worst:.1} |")?;
     }
-    writeln!(md, "\n*Ratio of the larger to the smaller singular value of the map's Jacobian (1 = cells keep their shape), at the centres of a 200 × 200 grid of the unit square.*")?;
+    writeln!(
+        md,
+        "\n*Ratio of the larger to the smaller singular value of the map's Jacobian (1 = cells keep their shape), at the centres of a 200 × 200 grid of the unit square.*"
+    )?;
     Ok(md.into_bytes())
 }
 
@@ -253,7 +390,11 @@ fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
         root.fill(&WHITE)?;
-        let maps: [(&str, fn(DVec2) -> DVec3); 2] = [("polar map", disc_polar), ("concentric map", disc_concentric)];
+        type Map = fn(DVec2) -> DVec3;
+        let maps: [(&str, Map); 2] = [
+            ("polar map", disc_polar),
+            ("concentric map", disc_concentric),
+        ];
         for ((name, f), area) in maps.iter().zip(root.split_evenly((1, 2)).iter()) {
             let mut chart = ChartBuilder::on(area)
                 .caption(*name, ("sans-serif", 18))
@@ -263,7 +404,10 @@ fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             for k in 0..=lines {
                 let c = k as f64 / lines as f64;
                 let along = |g: &dyn Fn(f64) -> DVec2| -> Vec<(f64, f64)> {
-                    (0..=200).map(|s| f(g(f64::from(s) / 200.0))).map(|p| (p.x, p.y)).collect()
+                    (0..=200)
+                        .map(|s| f(g(f64::from(s) / 200.0)))
+                        .map(|p| (p.x, p.y))
+                        .collect()
                 };
                 let u1 = along(&|s| DVec2::new(c, s));
                 let u2 = along(&|s| DVec2::new(s, c));

@@ -94,10 +94,10 @@ pub fn sphere_rejection(rng: &mut Rng) -> (DVec3, u32) {
             rng::uniform(rng, -1.0, 1.0),
             rng::uniform(rng, -1.0, 1.0),
         );
-        if v.length_squared() <= 1.0 {
-            if let Some(w) = normalize_robust(v) {
-                return (w, tries);
-            }
+        if v.length_squared() <= 1.0
+            && let Some(w) = normalize_robust(v)
+        {
+            return (w, tries);
         }
     }
 }

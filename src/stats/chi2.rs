@@ -1,0 +1,172 @@
+//! Pearson's chi-squared goodness-of-fit test.
+//!
+//! `N` samples are sorted into cells; cell `i` receives `O_i` of them. If the samples
+//! follow a pdf `p`, each one lands in cell `i` with probability `P_i = ∫_cell_i p`, so
+//! the counts are multinomial with expectations `E_i = N P_i`. Pearson's statistic
+//!
+//! `X² = Σ_i (O_i - E_i)² / E_i`
+//!
+//! is, for large expectations, distributed as chi-squared with `k - 1` degrees of freedom
+//! (`k` cells; one is lost because the counts must add up to `N`). The approximation is
+//! poor for cells expecting few samples, so cells expecting fewer than `min_expected`
+//! (5 by convention) are *pooled* into one cell before the statistic is formed.
+
+use statrs::function::gamma::checked_gamma_ur;
+
+use super::StatsError;
+
+/// The outcome of [`pearson`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chi2 {
+    /// Pearson's statistic `X²` over the cells after pooling.
+    pub statistic: f64,
+    /// Degrees of freedom, `cells - 1`.
+    pub dof: usize,
+    /// `P(X² >= statistic)` under the null hypothesis.
+    pub p_value: f64,
+    /// Cells the statistic was summed over, after pooling (the pooled cell counts as one).
+    pub cells: usize,
+    /// How many of the original cells were merged into the pooled cell (0 if none).
+    pub pooled_cells: usize,
+}
+
+// ANCHOR: upper_tail
+/// Upper tail of the chi-squared distribution with `dof` degrees of freedom:
+/// `P(X >= statistic) = Q(dof / 2, statistic / 2)`, the regularised upper incomplete
+/// gamma function.
+///
+/// `Q` is evaluated directly (by its continued fraction when `statistic / 2 > dof / 2`),
+/// not as `1 - P`, so a p-value of `1e-200` is returned as such instead of rounding to
+/// 0 at `1e-16`. Returns 1 for `statistic <= 0`, 0 for `+inf`, NaN for NaN or `dof == 0`.
+pub fn upper_tail(statistic: f64, dof: usize) -> f64 {
+    if statistic.is_nan() || dof == 0 {
+        return f64::NAN;
+    }
+    if statistic <= 0.0 {
+        return 1.0;
+    }
+    if statistic == f64::INFINITY {
+        return 0.0;
+    }
+    // Both arguments are finite and positive here, so the checked form cannot fail.
+    checked_gamma_ur(dof as f64 / 2.0, statistic / 2.0).unwrap_or(f64::NAN)
+}
+// ANCHOR_END: upper_tail
+
+// ANCHOR: validate
+/// Checks the input of [`pearson`]; returns `sum(observed)`.
+fn validate(observed: &[u64], expected: &[f64], min_expected: f64) -> Result<u64, StatsError> {
+    if observed.len() != expected.len() {
+        return Err(StatsError::LengthMismatch {
+            what: "observed and expected counts",
+            left: observed.len(),
+            right: expected.len(),
+        });
+    }
+    if observed.is_empty() {
+        return Err(StatsError::Empty { what: "cells" });
+    }
+    if !(min_expected.is_finite() && min_expected >= 0.0) {
+        return Err(StatsError::InvalidArgument {
+            what: "min_expected must be finite and non-negative",
+            value: min_expected,
+        });
+    }
+    if let Some((cell, &value)) = expected
+        .iter()
+        .enumerate()
+        .find(|(_, e)| !(e.is_finite() && **e >= 0.0))
+    {
+        return Err(StatsError::InvalidExpected { cell, value });
+    }
+    if let Some((cell, (&count, _))) = observed
+        .iter()
+        .zip(expected)
+        .enumerate()
+        .find(|(_, (o, e))| **o > 0 && **e == 0.0)
+    {
+        return Err(StatsError::SamplesWherePdfIsZero { cell, count });
+    }
+    let observed_total = observed.iter().fold(0u64, |s, &o| s.saturating_add(o));
+    if observed_total == 0 {
+        return Err(StatsError::Empty {
+            what: "samples (all observed counts are 0)",
+        });
+    }
+    let expected_total: f64 = expected.iter().sum();
+    let n = observed_total as f64;
+    if (expected_total - n).abs() > 1e-3 * n + 1.0 {
+        return Err(StatsError::NotNormalised {
+            integral: expected_total / n,
+            expected_total,
+            observed_total,
+        });
+    }
+    Ok(observed_total)
+}
+// ANCHOR_END: validate
+
+// ANCHOR: pearson
+/// Pearson's chi-squared goodness of fit of `observed` counts against `expected` counts.
+///
+/// `expected[i]` must be `N ∫_cell_i p`, the sample count times the integral of the pdf
+/// over the cell, so that `sum(expected) ≈ sum(observed) = N`.
+///
+/// Pooling (as in Nori's `warptest`): cells are sorted by ascending expected count; those
+/// expecting fewer than `min_expected` are merged into one pooled cell, and while the
+/// pooled cell itself expects fewer than `min_expected` the next-smallest ordinary cell
+/// is merged into it too. Cells with `expected == 0` and no samples carry no information
+/// and are left out. Then `X² = Σ (O - E)² / E` over the remaining cells, with
+/// `cells - 1` degrees of freedom, and the p-value is [`upper_tail`]`(X², cells - 1)`.
+///
+/// # Errors
+/// * [`StatsError::LengthMismatch`] if the slices differ in length, [`StatsError::Empty`]
+///   if they are empty or hold no samples;
+/// * [`StatsError::InvalidExpected`] for a negative or non-finite expected count;
+/// * [`StatsError::SamplesWherePdfIsZero`] if a cell with `expected == 0` holds samples;
+/// * [`StatsError::NotNormalised`] if `|sum(expected) - N| > 1e-3 N + 1`;
+/// * [`StatsError::TooFewCells`] if fewer than 2 cells remain after pooling;
+/// * [`StatsError::InvalidArgument`] if `min_expected` is negative or not finite.
+pub fn pearson(observed: &[u64], expected: &[f64], min_expected: f64) -> Result<Chi2, StatsError> {
+    validate(observed, expected, min_expected)?;
+    let mut cells: Vec<(f64, f64)> = expected
+        .iter()
+        .zip(observed)
+        .filter(|(e, _)| **e > 0.0)
+        .map(|(&e, &o)| (e, o as f64))
+        .collect();
+    cells.sort_by(|a, b| a.0.total_cmp(&b.0));
+
+    let (mut pooled_e, mut pooled_o, mut pooled_cells) = (0.0, 0.0, 0usize);
+    let (mut statistic, mut count) = (0.0, 0usize);
+    for (e, o) in cells {
+        let pooling = pooled_cells > 0 && pooled_e < min_expected;
+        if e < min_expected || pooling {
+            pooled_e += e;
+            pooled_o += o;
+            pooled_cells += 1;
+        } else {
+            statistic += (o - e) * (o - e) / e;
+            count += 1;
+        }
+    }
+    if pooled_cells > 0 {
+        statistic += (pooled_o - pooled_e) * (pooled_o - pooled_e) / pooled_e;
+        count += 1;
+    }
+    if count < 2 {
+        return Err(StatsError::TooFewCells {
+            cells: count,
+            min_expected,
+        });
+    }
+    let dof = count - 1;
+    Ok(Chi2 {
+        statistic,
+        dof,
+        p_value: upper_tail(statistic, dof),
+        cells: count,
+        pooled_cells,
+    })
+}
+// ANCHOR_END: pearson
