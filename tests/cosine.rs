@@ -4,32 +4,16 @@
 use std::f64::consts::{FRAC_1_PI, TAU};
 
 use glam::{DVec2, DVec3};
-use raylemma::check::warp::{self, Domain, Options, SquareWarp};
+use raylemma::check::warp::{self, Domain};
 use raylemma::sampling::cosine::*;
 use raylemma::sampling::disc::disc_concentric;
-
-fn opts() -> Options {
-    Options {
-        samples: 400_000,
-        resolution: 21,
-        points: 5_000,
-        ..Options::default()
-    }
-}
 
 fn check(
     name: &str,
     sample: fn(DVec2) -> DVec3,
     pdf: fn(DVec3) -> f64,
 ) -> raylemma::check::Verdict {
-    let w = SquareWarp {
-        name: name.into(),
-        domain: Domain::Sphere,
-        sample,
-        pdf,
-        invert: None,
-    };
-    warp::check(&w, &opts())
+    warp::check_square(name, Domain::Sphere, sample, pdf, None)
 }
 
 #[test]

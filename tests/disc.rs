@@ -2,31 +2,15 @@
 //! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
 
 use glam::{DVec2, DVec3};
-use raylemma::check::warp::{self, Domain, Options, SquareWarp};
+use raylemma::check::warp::{self, Domain};
 use raylemma::sampling::disc::*;
-
-fn opts() -> Options {
-    Options {
-        samples: 400_000,
-        resolution: 21,
-        points: 5_000,
-        ..Options::default()
-    }
-}
 
 fn check(
     name: &str,
     sample: fn(DVec2) -> DVec3,
     invert: fn(DVec3) -> DVec2,
 ) -> raylemma::check::Verdict {
-    let w = SquareWarp {
-        name: name.into(),
-        domain: Domain::Disc,
-        sample,
-        pdf: disc_pdf,
-        invert: Some(invert),
-    };
-    warp::check(&w, &opts())
+    warp::check_square(name, Domain::Disc, sample, disc_pdf, Some(invert))
 }
 
 #[test]
