@@ -15,8 +15,10 @@ fn square(rng: &mut Rng) -> DVec2 {
     DVec2::new(rng::uniform(rng, 0.0, 1.0), rng::uniform(rng, 0.0, 1.0))
 }
 
+type Method = (&'static str, fn(&mut Rng) -> DVec3);
+
 fn sampling(c: &mut Criterion) {
-    let methods: [(&str, fn(&mut Rng) -> DVec3); 9] = [
+    let methods: [Method; 9] = [
         ("sphere/inverse_cdf", |r| sphere_inverse_cdf(square(r))),
         ("sphere/gaussian", sphere_gaussian),
         ("sphere/rejection", |r| sphere_rejection(r).0),

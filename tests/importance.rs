@@ -13,7 +13,13 @@ fn uniform_and_linear_proposals_are_unbiased() {
     for (seed, q) in [(1, UNIFORM), (2, LINEAR)] {
         let terms = estimate(square, &q, N, &mut rng::seeded(seed));
         let t = ttest::one_sample(&terms, I).unwrap();
-        assert!(t.p_value >= test_alpha(), "{}: mean {} (p = {:.3e})", q.name, terms.mean, t.p_value);
+        assert!(
+            t.p_value >= test_alpha(),
+            "{}: mean {} (p = {:.3e})",
+            q.name,
+            terms.mean,
+            t.p_value
+        );
     }
 }
 
@@ -23,7 +29,10 @@ fn the_matched_proposal_has_zero_variance() {
     for _ in 0..10_000 {
         let x = (MATCHED.sample)(rng::uniform(&mut rng, 1e-9, 1.0));
         let term = square(x) / (MATCHED.pdf)(x);
-        assert!((term - I).abs() <= 4.0 * f64::EPSILON, "x = {x}: term {term}");
+        assert!(
+            (term - I).abs() <= 4.0 * f64::EPSILON,
+            "x = {x}: term {term}"
+        );
     }
 }
 
@@ -36,7 +45,12 @@ fn variances_match_the_formula() {
         let terms = estimate(square, &q, N, &mut rng::seeded(seed));
         let exact = exact_variance(&q).unwrap();
         let rel = (terms.variance() / exact - 1.0).abs();
-        assert!(rel <= 0.02, "{}: variance {} vs {exact}", q.name, terms.variance());
+        assert!(
+            rel <= 0.02,
+            "{}: variance {} vs {exact}",
+            q.name,
+            terms.variance()
+        );
     }
 }
 
@@ -51,9 +65,19 @@ fn a_better_proposal_has_less_variance() {
 fn a_proposal_missing_part_of_the_support_is_biased() {
     let terms = estimate(square, &HALF_SUPPORT, N, &mut rng::seeded(6));
     let t = ttest::one_sample(&terms, I).unwrap();
-    assert!(t.p_value < test_alpha(), "mean {} (p = {:.3e})", terms.mean, t.p_value);
+    assert!(
+        t.p_value < test_alpha(),
+        "mean {} (p = {:.3e})",
+        terms.mean,
+        t.p_value
+    );
     let t = ttest::one_sample(&terms, 1.0 / 24.0).unwrap();
-    assert!(t.p_value >= test_alpha(), "mean {} is not 1/24 (p = {:.3e})", terms.mean, t.p_value);
+    assert!(
+        t.p_value >= test_alpha(),
+        "mean {} is not 1/24 (p = {:.3e})",
+        terms.mean,
+        t.p_value
+    );
 }
 
 /// The seed requires q to be non-zero "wherever f(x) p_X(x) is nonzero". With

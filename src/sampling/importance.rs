@@ -40,17 +40,36 @@ pub fn square(x: f64) -> f64 {
 }
 
 /// Uniform: `q = 1`. Variance of `f/q`: `1/5 - 1/9 = 4/45`.
-pub const UNIFORM: Proposal = Proposal { name: "uniform, q = 1", sample: |u| u, pdf: |_| 1.0 };
+pub const UNIFORM: Proposal = Proposal {
+    name: "uniform, q = 1",
+    sample: |u| u,
+    pdf: |_| 1.0,
+};
 
 /// Linear: `q = 2x`, `x = sqrt(u)`. Variance: `int x^4 / (2x) - 1/9 = 1/8 - 1/9 = 1/72`.
-pub const LINEAR: Proposal =
-    Proposal { name: "linear, q = 2x", sample: f64::sqrt, pdf: |x| if (0.0..=1.0).contains(&x) { 2.0 * x } else { 0.0 } };
+pub const LINEAR: Proposal = Proposal {
+    name: "linear, q = 2x",
+    sample: f64::sqrt,
+    pdf: |x| {
+        if (0.0..=1.0).contains(&x) {
+            2.0 * x
+        } else {
+            0.0
+        }
+    },
+};
 
 /// Matched: `q = 3x^2 = f / I`, `x = u^(1/3)`. Variance 0: every term equals `I`.
 pub const MATCHED: Proposal = Proposal {
     name: "matched, q = 3x^2",
     sample: f64::cbrt,
-    pdf: |x| if (0.0..=1.0).contains(&x) { 3.0 * x * x } else { 0.0 },
+    pdf: |x| {
+        if (0.0..=1.0).contains(&x) {
+            3.0 * x * x
+        } else {
+            0.0
+        }
+    },
 };
 
 /// Half support: `q = 2` on `[0, 1/2]`, zero on `(1/2, 1]` where `f` is not: the estimator

@@ -1,0 +1,393 @@
+//! Figures and tables of the chapter *Tabulated distributions*.
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use rand::RngExt;
+
+use super::{Output, Settings, timing};
+use crate::plot::{self, BoxError};
+use crate::rng;
+use crate::sampling::tabulated::{
+    ONE_MINUS_EPSILON, Piecewise1D, PiecewiseLinear1D, segment_cdf, segment_inverse,
+};
+use crate::stats::{StatsError, chi2, ks, test_alpha};
+
+/// The outputs of this chapter.
+pub fn outputs() -> Vec<Output> {
+    vec![
+        Output {
+            file: "tabulated_histogram.png",
+            what: "samples of an emission spectrum against its pdf",
+            make: histogram_png,
+        },
+        Output {
+            file: "tabulated_checks.md",
+            what: "KS and chi-squared on the sampler and planted bugs",
+            make: checks_md,
+        },
+        Output {
+            file: "tabulated_precision.md",
+            what: "round-trip and segment-inverse errors",
+            make: precision_md,
+        },
+        Output {
+            file: "tabulated_speed.md",
+            what: "ns per sample against table size",
+            make: speed_md,
+        },
+    ]
+}
+
+// ANCHOR: emission
+/// A made-up fluorescent-lamp spectrum on 380–780 nm in 1 nm bins: a broad phosphor
+/// continuum, three narrow lines (436, 546 and 611 nm), nothing below 400 nm or from
+/// 720 nm on (a filter), and a notch filter that blocks 575–590 nm.
+pub fn emission_values() -> Vec<f64> {
+    (380..780)
+        .map(|nm| {
+            let l = f64::from(nm) + 0.5; // bin centre
+            if !(400.0..720.0).contains(&l) || (575.0..590.0).contains(&l) {
+                return 0.0;
+            }
+            let continuum = 0.6 * (-((l - 600.0) / 90.0).powi(2)).exp();
+            let line = |centre: f64, width: f64, height: f64| {
+                height * (-((l - centre) / width).powi(2)).exp()
+            };
+            continuum + line(436.0, 0.8, 8.0) + line(546.0, 1.2, 20.0) + line(611.0, 1.5, 10.0)
+        })
+        .collect()
+}
+// ANCHOR_END: emission
+
+/// The table of [`emission_values`], 380–780 nm.
+pub fn emission_table() -> Piecewise1D {
+    Piecewise1D::uniform(380.0, 780.0, &emission_values())
+        .unwrap_or_else(|e| panic!("the emission table is valid: {e}"))
+}
+
+fn histogram_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    use plotters::prelude::*;
+    let table = emission_table();
+    let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
+    let mut counts = vec![0u64; table.bins()];
+    let mut rng = rng::seeded(0x7ab);
+    for _ in 0..n {
+        counts[table.sample(rng.random::<f64>()).bin] += 1;
+    }
+    let edges = table.edges();
+    // Estimated density: count / (n * width).
+    let estimate: Vec<f64> = counts
+        .iter()
+        .zip(edges.windows(2))
+        .map(|(&c, e)| c as f64 / (n as f64 * (e[1] - e[0])))
+        .collect();
+    let pdf: Vec<f64> = (0..table.bins()).map(|i| table.pdf(edges[i])).collect();
+    let steps = |v: &[f64], floor: f64| -> Vec<(f64, f64)> {
+        v.iter()
+            .enumerate()
+            .flat_map(|(i, &y)| [(edges[i], y.max(floor)), (edges[i + 1], y.max(floor))])
+            .collect()
+    };
+    let (width, height) = (1200u32, 480u32);
+    plot::register_embedded_font();
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let areas = root.split_evenly((1, 2));
+        let ymax = pdf.iter().copied().fold(0.0, f64::max) * 1.1;
+        let (blue, orange) = (plot::PALETTE[0], plot::PALETTE[1]);
+        let title = format!("histogram of {n} samples (orange) and the pdf (blue)");
+        macro_rules! panel {
+            ($area:expr, $yrange:expr, $floor:expr, $title:expr) => {{
+                let mut chart = ChartBuilder::on($area)
+                    .caption($title, ("sans-serif", 18))
+                    .margin(12)
+                    .x_label_area_size(40)
+                    .y_label_area_size(70)
+                    .build_cartesian_2d(380f64..780f64, $yrange)?;
+                chart
+                    .configure_mesh()
+                    .x_desc("wavelength (nm)")
+                    .y_desc("density (1/nm)")
+                    .label_style(("sans-serif", 13))
+                    .axis_desc_style(("sans-serif", 15))
+                    .x_label_formatter(&|v| plot::format_tick(*v))
+                    .y_label_formatter(&|v| plot::format_tick(*v))
+                    .draw()?;
+                chart.draw_series(estimate.iter().enumerate().map(|(i, &y)| {
+                    Rectangle::new(
+                        [(edges[i], $floor), (edges[i + 1], y.max($floor))],
+                        orange.mix(0.6).filled(),
+                    )
+                }))?;
+                chart.draw_series(LineSeries::new(steps(&pdf, $floor), blue.stroke_width(1)))?;
+            }};
+        }
+        panel!(&areas[0], 0f64..ymax, 0.0, title.as_str());
+        panel!(
+            &areas[1],
+            (1e-5f64..1.0).log_scale(),
+            1e-5,
+            "the same, logarithmic (zero bins at the floor)"
+        );
+        root.present()?;
+    }
+    plot::encode_png(width, height, buffer)
+}
+
+/// KS and chi-squared (one cell per bin) of `xs` against `table`: the KS p-value, and
+/// the chi-squared p-value or why there is none (samples where the pdf is zero, which
+/// is itself a rejection).
+fn tests_against(table: &Piecewise1D, xs: &[f64]) -> (f64, Result<f64, String>) {
+    let ks = ks::one_sample(xs, |x| table.cdf(x)).map_or(f64::NAN, |k| k.p_value);
+    let mut observed = vec![0u64; table.bins()];
+    let edges = table.edges();
+    for &x in xs {
+        let x = x.clamp(edges[0], edges[edges.len() - 1].next_down());
+        observed[edges[1..].partition_point(|&e| e <= x)] += 1;
+    }
+    let expected: Vec<f64> = (0..table.bins())
+        .map(|i| table.bin_probability(i) * xs.len() as f64)
+        .collect();
+    let chi = match chi2::pearson(&observed, &expected, 5.0) {
+        Ok(c) => Ok(c.p_value),
+        Err(StatsError::SamplesWherePdfIsZero { cell, count }) => {
+            Err(format!("error: {count} samples in zero bin {cell}"))
+        }
+        Err(e) => Err(format!("could not run: {e}")),
+    };
+    (ks, chi)
+}
+
+fn checks_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let n: usize = if settings.quick { 20_000 } else { 200_000 };
+    let table = emission_table();
+    let edges = table.edges().to_vec();
+    let (lo, hi) = (edges[0], edges[edges.len() - 1]);
+    let unnormalised_cdf: Vec<f64> = table
+        .cdf_table()
+        .iter()
+        .map(|c| c * table.integral())
+        .collect();
+    let heights: Vec<f64> = emission_values()
+        .iter()
+        .map(|v| (v / 20.0 * 250.0).round().min(250.0))
+        .collect();
+    let ratio_table = Piecewise1D::uniform(
+        lo,
+        hi,
+        &heights.iter().map(|h| h / (256.0 - h)).collect::<Vec<_>>(),
+    )?;
+    let drawn = Piecewise1D::uniform(lo, hi, &heights)?;
+    type Sampler<'a> = Box<dyn Fn(f64) -> f64 + 'a>;
+    let rows: Vec<(&str, &Piecewise1D, Sampler)> = vec![
+        (
+            "`Piecewise1D::sample`",
+            &table,
+            Box::new(|u| table.sample(u).x),
+        ),
+        (
+            "uniform on [380, 780], ignoring the table",
+            &table,
+            Box::new(|u| lo + u * (hi - lo)),
+        ),
+        (
+            "CDF not divided by its total",
+            &table,
+            Box::new(|u| {
+                let c = &unnormalised_cdf;
+                let i = c[1..].partition_point(|&x| x <= u).min(table.bins() - 1);
+                let t = ((u - c[i]) / (c[i + 1] - c[i])).min(1.0);
+                edges[i] + t * (edges[i + 1] - edges[i])
+            }),
+        ),
+        (
+            "off by one: bin i + 1",
+            &table,
+            Box::new(|u| {
+                let s = table.sample(u);
+                let j = (s.bin + 1).min(table.bins() - 1);
+                s.x - edges[s.bin] + edges[j]
+            }),
+        ),
+        (
+            "textbook inverse inf {x : F(x) ≥ u} (lands in zero bins at plateau levels)",
+            &table,
+            Box::new(|u| {
+                let c = table.cdf_table();
+                let i = c[1..].partition_point(|&x| x < u).min(table.bins() - 1);
+                let t = (u - c[i]) / (c[i + 1] - c[i]);
+                edges[i] + t * (edges[i + 1] - edges[i])
+            }),
+        ),
+        (
+            "seed, read literally: black/white ratio h/(256 − h)",
+            &drawn,
+            Box::new(|u| ratio_table.sample(u).x),
+        ),
+    ];
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| sampler | KS p-value | chi-squared p-value | verdict at α = {:.2e} |",
+        test_alpha()
+    )?;
+    writeln!(md, "|---|---:|---:|---|")?;
+    for (k, (name, reference, sample)) in rows.iter().enumerate() {
+        let mut rng = rng::seeded(0xc4ec + k as u64);
+        let xs: Vec<f64> = (0..n).map(|_| sample(rng.random::<f64>())).collect();
+        let (ks, chi) = tests_against(reference, &xs);
+        let rejected = ks < test_alpha() || chi.as_ref().map_or(true, |&p| p < test_alpha());
+        let verdict = if rejected { "rejected" } else { "accepted" };
+        let chi = chi.map_or_else(|why| why, p_text);
+        writeln!(md, "| {name} | {} | {chi} | {verdict} |", p_text(ks))?;
+    }
+    writeln!(
+        md,
+        "\n*{n} samples each from the emission table of the figure (400 bins, 1 nm), against its exact CDF and bin probabilities; the black/white row is tested against the drawn heights. Generated by `src/figures/tabulated.rs`.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// A p-value for a table: `< 1e-300` when it underflows to 0.
+fn p_text(p: f64) -> String {
+    if p == 0.0 {
+        "< 1e-300".into()
+    } else {
+        format!("{p:.2e}")
+    }
+}
+
+/// The textbook root of a linear segment's quadratic, for comparison.
+fn segment_inverse_textbook(a: f64, b: f64, xi: f64) -> f64 {
+    (-a + (a * a + xi * (b * b - a * a)).sqrt()) / (b - a)
+}
+
+fn precision_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let n: usize = if settings.quick { 20_000 } else { 200_000 };
+    let mut md = String::new();
+    let table = emission_table();
+    let mut rng = rng::seeded(0x9a1);
+    let (mut worst, mut at_edge) = (0.0f64, 0.0f64);
+    let mut us: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    us.extend([0.0, ONE_MINUS_EPSILON]);
+    us.extend(table.cdf_table().iter().copied().filter(|&c| c < 1.0));
+    for (k, &u) in us.iter().enumerate() {
+        let s = table.sample(u);
+        let e = table.edges();
+        let scale = 1.0 + (e[s.bin].abs() + e[s.bin + 1].abs()) * s.pdf;
+        let err = (table.invert(s.x) - u).abs() / (f64::EPSILON * scale);
+        if k < n {
+            worst = worst.max(err);
+        } else {
+            at_edge = at_edge.max(err);
+        }
+    }
+    writeln!(md, "| quantity | worst | bound asserted by the tests |")?;
+    writeln!(md, "|---|---:|---:|")?;
+    writeln!(
+        md,
+        "| \\|invert(sample(u)) − u\\| / (ε (1 + (\\|x_i\\| + \\|x_i+1\\|) p)), random u | {worst:.2} | 4 |"
+    )?;
+    writeln!(
+        md,
+        "| the same at u = 0, 1 − 2⁻⁵³ and every CDF entry | {at_edge:.2} | 4 |"
+    )?;
+    let (a, b) = (1.0, 1.0 + 1e-13);
+    let (mut textbook, mut stable) = (0.0f64, 0.0f64);
+    for k in 1..1000 {
+        let xi = f64::from(k) / 1000.0 + 1e-7;
+        let exact = xi + 0.5 * (b - a) * xi * (1.0 - xi);
+        textbook = textbook.max((segment_inverse_textbook(a, b, xi) - exact).abs());
+        stable = stable.max((segment_inverse(a, b, xi) - exact).abs());
+    }
+    writeln!(
+        md,
+        "| linear segment, b − a = 1e−13: error of t, textbook root | {textbook:.1e} | ≥ 1e−4 (must fail) |"
+    )?;
+    writeln!(
+        md,
+        "| the same, stable root | {stable:.1e} | 2ε = 4.4e−16 |"
+    )?;
+    let mut worst_seg = 0.0f64;
+    for _ in 0..n {
+        let a = rng::log_uniform(&mut rng, 1e-300, 1e300);
+        let b = rng::log_uniform(&mut rng, 1e-300, 1e300);
+        let xi = rng.random::<f64>();
+        let t = segment_inverse(a, b, xi);
+        worst_seg = worst_seg.max((segment_cdf(a, b, t) - xi).abs() / f64::EPSILON);
+    }
+    writeln!(
+        md,
+        "| linear segment round trip \\|F(F⁻¹(ξ)) − ξ\\| / ε, a, b from 1e−300 to 1e300 | {worst_seg:.2} | 6 |"
+    )?;
+    writeln!(
+        md,
+        "\n*{n} random u on the emission table and {n} random segments; generated by `src/figures/tabulated.rs`.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// Table sizes of the speed table and the benchmark.
+pub const TIMING_BINS: [usize; 4] = [16, 256, 4096, 65536];
+
+/// A random table of `bins` bins on `[0, 1]`, in both forms (the linear one with
+/// `bins + 1` knots), for timing.
+pub fn timing_tables(bins: usize) -> (Piecewise1D, PiecewiseLinear1D) {
+    let mut rng = rng::seeded(0x71b + bins as u64);
+    let values: Vec<f64> = (0..=bins).map(|_| 0.1 + rng.random::<f64>()).collect();
+    let constant = Piecewise1D::uniform(0.0, 1.0, &values[..bins]);
+    let linear = PiecewiseLinear1D::uniform(0.0, 1.0, &values);
+    match (constant, linear) {
+        (Ok(c), Ok(l)) => (c, l),
+        _ => unreachable!("positive random values on a valid grid"),
+    }
+}
+
+/// `n` uniform numbers for timing (fixed seed).
+pub fn timing_us(n: usize) -> Vec<f64> {
+    let mut rng = rng::seeded(0x7157);
+    (0..n).map(|_| rng.random::<f64>()).collect()
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let reps = if settings.quick { 5 } else { 201 };
+    let us = timing_us(4096);
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| bins | piecewise constant (ns per sample) | piecewise linear (ns per sample) |"
+    )?;
+    writeln!(md, "|---:|---:|---:|")?;
+    for bins in TIMING_BINS {
+        let (constant, linear) = timing_tables(bins);
+        let c = timing::median_ns_per_item(us.len(), reps, || {
+            let mut acc = 0.0;
+            for &u in &us {
+                acc += constant.sample(black_box(u)).x;
+            }
+            acc.to_bits()
+        });
+        let l = timing::median_ns_per_item(us.len(), reps, || {
+            let mut acc = 0.0;
+            for &u in &us {
+                acc += linear.sample(black_box(u)).x;
+            }
+            acc.to_bits()
+        });
+        writeln!(md, "| {bins} | {c:.1} | {l:.1} |")?;
+    }
+    writeln!(
+        md,
+        "\n*{}; 4096 random u per batch, median of {reps} batches{}. Each sample includes its pdf.*",
+        timing::machine(),
+        if settings.quick {
+            " (quick mode: noisy)"
+        } else {
+            ""
+        }
+    )?;
+    Ok(md.into_bytes())
+}

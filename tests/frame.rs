@@ -1,0 +1,321 @@
+//! Tests of the chapter *Tangent frames* (`src/sampling/frame.rs`).
+//!
+//! Deterministic (fixed seeds, constructed normals): no significance level is involved.
+//! Frisvad's construction is the planted bug: it must fail the same bound near
+//! `(0, 0, -1)` that Duff et al.'s passes everywhere.
+
+use std::f64::consts::TAU;
+
+use glam::{DVec3, Vec3};
+use quickcheck::{Gen, QuickCheck, TestResult};
+use raylemma::rng;
+use raylemma::sampling::frame::{Construction, Frame, duff, frisvad};
+
+// ANCHOR: bound
+/// Bound on [`Frame::error`] (lengths, dot products, `t × b - n`), in units of the
+/// precision's epsilon. The input normal itself is unit only to within rounding, so the
+/// bound covers that too; the measured worst cases are in `figures/frame_errors.md`.
+const ORTHO_BOUND: f64 = 4.0;
+// ANCHOR_END: bound
+
+/// Normals at `z = -1 + delta`, at `azimuths` evenly spread angles, as f64. The x and y
+/// components come from `sqrt(1 - z^2)` as a renderer would compute them, so the normal is
+/// unit only to within rounding: exactly the input that breaks Frisvad's construction.
+fn ring(delta: f64, azimuths: usize) -> impl Iterator<Item = DVec3> {
+    let z = -1.0 + delta;
+    let r = (1.0 - z * z).sqrt();
+    (0..azimuths).map(move |j| {
+        let phi = TAU * (j as f64 + 0.5) / azimuths as f64;
+        DVec3::new(r * phi.cos(), r * phi.sin(), z)
+    })
+}
+
+/// Exactly `(0, 0, -1)`, with every sign of zero, and normals with `-0.0` components.
+fn signed_zero_normals() -> Vec<DVec3> {
+    let mut v = Vec::new();
+    for x in [0.0, -0.0] {
+        for y in [0.0, -0.0] {
+            v.push(DVec3::new(x, y, -1.0));
+            v.push(DVec3::new(x, y, 1.0));
+        }
+    }
+    for z in [0.0, -0.0] {
+        for (x, y) in [
+            (1.0, 0.0),
+            (1.0, -0.0),
+            (-1.0, -0.0),
+            (0.0, 1.0),
+            (-0.0, -1.0),
+        ] {
+            v.push(DVec3::new(x, y, z));
+        }
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        v.push(DVec3::new(h, -h, z));
+    }
+    v
+}
+
+fn worst32(normals: impl Iterator<Item = DVec3>, f: Construction<f32>) -> f64 {
+    normals
+        .map(|n| Frame::with(n.as_vec3(), f).error() / f64::from(f32::EPSILON))
+        .fold(0.0, f64::max)
+}
+
+fn worst64(normals: impl Iterator<Item = DVec3>, f: Construction<f64>) -> f64 {
+    normals
+        .map(|n| Frame::with(n, f).error() / f64::EPSILON)
+        .fold(0.0, f64::max)
+}
+
+fn random_normals(seed: u64, n: usize) -> Vec<DVec3> {
+    let mut r = rng::seeded(seed);
+    (0..n).map(|_| rng::unit_vector(&mut r)).collect()
+}
+
+// ---------------------------------------------------------------------------------------
+// Duff et al.: orthonormal and right-handed everywhere.
+
+#[test]
+fn duff_is_orthonormal_for_random_normals() {
+    let normals = random_normals(1, 100_000);
+    let (e32, e64) = (
+        worst32(normals.iter().copied(), duff),
+        worst64(normals.iter().copied(), duff),
+    );
+    assert!(e32 <= ORTHO_BOUND, "f32: {e32} eps");
+    assert!(e64 <= ORTHO_BOUND, "f64: {e64} eps");
+    println!("random normals, worst error: f32 {e32:.2} eps, f64 {e64:.2} eps");
+}
+
+// ANCHOR: near_south_pole
+#[test]
+fn duff_is_orthonormal_near_the_south_pole() {
+    for k in 1..=15 {
+        let e = worst64(ring(10f64.powi(-k), 256), duff);
+        assert!(e <= ORTHO_BOUND, "f64, z = -1 + 1e-{k}: {e} eps");
+    }
+    for k in 1..=7 {
+        let e = worst32(ring(10f64.powi(-k), 256), duff);
+        assert!(e <= ORTHO_BOUND, "f32, z = -1 + 1e-{k}: {e} eps");
+    }
+    let zeros = signed_zero_normals();
+    assert!(worst64(zeros.iter().copied(), duff) <= ORTHO_BOUND);
+    assert!(worst32(zeros.iter().copied(), duff) <= ORTHO_BOUND);
+}
+
+/// The planted bug: Frisvad's construction fails the same bound as `n` approaches
+/// `(0, 0, -1)`: from `z = -1 + 1e-2` on, in both precisions. In f32 at
+/// `z = -1 + 1e-7` its error exceeds 0.1: it is not a frame at all.
+#[test]
+fn frisvad_fails_near_the_south_pole() {
+    for k in 2..=15 {
+        let e = worst64(ring(10f64.powi(-k), 256), frisvad);
+        assert!(e > ORTHO_BOUND, "f64, z = -1 + 1e-{k}: only {e} eps");
+    }
+    for k in 2..=7 {
+        let e = worst32(ring(10f64.powi(-k), 256), frisvad);
+        assert!(e > ORTHO_BOUND, "f32, z = -1 + 1e-{k}: only {e} eps");
+    }
+    let e = worst32(ring(1e-7, 256), frisvad) * f64::from(f32::EPSILON);
+    assert!(e > 0.1, "f32, z = -1 + 1e-7: error only {e}");
+}
+// ANCHOR_END: near_south_pole
+
+/// Below Frisvad's threshold the fixed frame ((0, -1, 0), (-1, 0, 0)) is exact only at the
+/// pole; at `z = -1 + eta` it is off by `sqrt(2 eta)`, the distance of `n` from the pole.
+#[test]
+fn frisvad_special_case_is_off_by_the_distance_to_the_pole() {
+    for k in 8..=15 {
+        let eta = 10f64.powi(-k);
+        let e = worst64(ring(eta, 256), frisvad) * f64::EPSILON;
+        let ratio = e / (2.0 * eta).sqrt();
+        assert!(
+            (0.9..=1.1).contains(&ratio),
+            "k = {k}: error {e:e}, ratio {ratio}"
+        );
+    }
+}
+
+/// Away from the south pole the two constructions are the same frame, and both pass.
+#[test]
+fn frisvad_is_fine_in_the_upper_hemisphere() {
+    let upper: Vec<DVec3> = random_normals(2, 20_000)
+        .into_iter()
+        .map(|n| DVec3::new(n.x, n.y, n.z.abs()))
+        .collect();
+    assert!(worst64(upper.iter().copied(), frisvad) <= ORTHO_BOUND);
+    assert!(worst32(upper.iter().copied(), frisvad) <= ORTHO_BOUND);
+    for n in upper.iter().filter(|n| n.z > 0.0) {
+        let (a, b) = (Frame::from_normal(*n), Frame::with(*n, frisvad));
+        assert!((a.t - b.t).length() <= 4.0 * f64::EPSILON, "{n}");
+        assert!((a.b - b.b).length() <= 4.0 * f64::EPSILON, "{n}");
+    }
+}
+
+#[test]
+fn right_handed_everywhere() {
+    let normals: Vec<DVec3> = random_normals(3, 20_000)
+        .into_iter()
+        .chain((1..=15).flat_map(|k| ring(10f64.powi(-k), 16)))
+        .chain(signed_zero_normals())
+        .collect();
+    for n in normals {
+        let f = Frame::from_normal(n);
+        assert!(f.t.cross(f.b).dot(n) > 0.0, "{n}: {f:?}");
+        let g = Frame::from_normal(n.as_vec3());
+        assert!(g.t.cross(g.b).dot(g.n) > 0.0, "{n}: {g:?}");
+    }
+}
+
+/// An independent implementation of the same equations: glam's `any_orthonormal_pair`.
+#[test]
+fn matches_glams_implementation_of_the_same_paper() {
+    for n in random_normals(4, 10_000)
+        .into_iter()
+        .chain(signed_zero_normals())
+    {
+        let f = Frame::from_normal(n);
+        assert_eq!((f.t, f.b), n.any_orthonormal_pair(), "{n}");
+        let m = n.as_vec3();
+        let g = Frame::from_normal(m);
+        assert_eq!((g.t, g.b), m.any_orthonormal_pair(), "{m}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Changing coordinates.
+
+#[test]
+fn round_trip_and_axes() {
+    let mut r = rng::seeded(5);
+    let normals = random_normals(6, 10_000)
+        .into_iter()
+        .chain((1..=15).flat_map(|k| ring(10f64.powi(-k), 8)))
+        .chain(signed_zero_normals());
+    for n in normals {
+        let f = Frame::from_normal(n);
+        assert_eq!(f.to_world(DVec3::Z), n);
+        let z = f.to_local(n);
+        assert!(
+            (z - DVec3::Z).abs().max_element() <= 4.0 * f64::EPSILON,
+            "{n}: {z}"
+        );
+        let v = rng::unit_vector(&mut r) * rng::log_uniform(&mut r, 1e-3, 1e3);
+        let back = f.to_world(f.to_local(v));
+        assert!(
+            (back - v).length() <= 8.0 * f64::EPSILON * v.length(),
+            "{n}: {v} -> {back}"
+        );
+        let g = Frame::from_normal(n.as_vec3());
+        let v32 = v.as_vec3();
+        let back32 = g.to_world(g.to_local(v32));
+        assert!(
+            (back32 - v32).length() <= 8.0 * f32::EPSILON * v32.length(),
+            "{n}: {v32} -> {back32}"
+        );
+    }
+}
+
+/// Sampling about the normal: a local direction with positive z maps to the normal's side.
+#[test]
+fn local_upper_hemisphere_maps_to_the_normals_side() {
+    let mut r = rng::seeded(7);
+    for n in random_normals(8, 10_000) {
+        let mut local = rng::unit_vector(&mut r);
+        local.z = local.z.abs().max(1e-6);
+        let w = Frame::from_normal(n).to_world(local);
+        assert!(w.dot(n) > 0.0);
+        assert!((w.length() - 1.0).abs() <= 8.0 * f64::EPSILON);
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Properties over arbitrary normals (quickcheck, fixed seeds).
+
+fn quickcheck(seed: u64) -> QuickCheck {
+    QuickCheck::new()
+        .rng(Gen::from_size_and_seed(100, seed))
+        .tests(10_000)
+        .max_tests(100_000)
+}
+
+/// A unit normal from three arbitrary numbers, or `None` if they are degenerate.
+fn normal(x: f64, y: f64, z: f64) -> Option<DVec3> {
+    let v = DVec3::new(x, y, z);
+    let l = v.length();
+    (v.is_finite() && l.is_finite() && l > 1e-100).then(|| v / l)
+}
+
+fn prop_orthonormal(x: f64, y: f64, z: f64) -> TestResult {
+    let Some(n) = normal(x, y, z) else {
+        return TestResult::discard();
+    };
+    let (a, b) = (
+        Frame::from_normal(n).error() / f64::EPSILON,
+        Frame::from_normal(n.as_vec3()).error() / f64::from(f32::EPSILON),
+    );
+    TestResult::from_bool(a <= ORTHO_BOUND && b <= ORTHO_BOUND)
+}
+
+#[test]
+fn quickcheck_orthonormal() {
+    quickcheck(1).quickcheck(prop_orthonormal as fn(f64, f64, f64) -> TestResult);
+}
+
+/// Directions near the south pole, where quickcheck's small integers rarely go.
+fn prop_orthonormal_near_south_pole(x: i32, y: i32, k: u8) -> TestResult {
+    let scale = 10f64.powi(-i32::from(k % 16));
+    let Some(n) = normal(f64::from(x) * scale, f64::from(y) * scale, -1.0) else {
+        return TestResult::discard();
+    };
+    let e = Frame::from_normal(n).error() / f64::EPSILON;
+    TestResult::from_bool(e <= ORTHO_BOUND)
+}
+
+#[test]
+fn quickcheck_orthonormal_near_south_pole() {
+    quickcheck(2).quickcheck(prop_orthonormal_near_south_pole as fn(i32, i32, u8) -> TestResult);
+}
+
+fn prop_round_trip(x: f64, y: f64, z: f64, v: (i16, i16, i16)) -> TestResult {
+    let Some(n) = normal(x, y, z) else {
+        return TestResult::discard();
+    };
+    let v = DVec3::new(f64::from(v.0), f64::from(v.1), f64::from(v.2));
+    let f = Frame::from_normal(n);
+    let back = f.to_world(f.to_local(v));
+    TestResult::from_bool((back - v).length() <= 8.0 * f64::EPSILON * v.length())
+}
+
+#[test]
+fn quickcheck_round_trip() {
+    quickcheck(3).quickcheck(prop_round_trip as fn(f64, f64, f64, (i16, i16, i16)) -> TestResult);
+}
+
+/// A frame is unchanged, component by component, when built in f32 from the rounded
+/// normal and compared with the f64 frame, to within a few f32 epsilons.
+fn prop_precisions_agree(x: f64, y: f64, z: f64) -> TestResult {
+    let Some(n) = normal(x, y, z) else {
+        return TestResult::discard();
+    };
+    // Near z = 0 the sign of z (and so the frame) may differ between the precisions.
+    if n.z.abs() < 1e-3 {
+        return TestResult::discard();
+    }
+    let (a, b) = (Frame::from_normal(n), Frame::from_normal(n.as_vec3()));
+    let d = (a.t - b.t.as_dvec3()).length() + (a.b - b.b.as_dvec3()).length();
+    TestResult::from_bool(d <= 16.0 * f64::from(f32::EPSILON))
+}
+
+#[test]
+fn quickcheck_precisions_agree() {
+    quickcheck(4).quickcheck(prop_precisions_agree as fn(f64, f64, f64) -> TestResult);
+}
+
+#[test]
+fn vec3_and_dvec3_frames_are_the_same_type_of_thing() {
+    let f: Frame<Vec3> = Frame::from_normal(Vec3::Z);
+    assert_eq!((f.t, f.b, f.n), (Vec3::X, Vec3::Y, Vec3::Z));
+    let g: Frame<DVec3> = Frame::from_normal(-DVec3::Z);
+    assert_eq!((g.t, g.b, g.n), (DVec3::X, -DVec3::Y, -DVec3::Z));
+}

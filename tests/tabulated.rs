@@ -1,0 +1,914 @@
+//! Tests of the chapter *Tabulated distributions* (`src/sampling/tabulated.rs`).
+//!
+//! Statistical tests (Kolmogorov–Smirnov against the exact CDF, chi-squared with one cell
+//! per bin) run at `raylemma::stats::test_alpha()` with fixed seeds; every reference
+//! distribution is computed here from the table itself, never by the code under test.
+//! Planted bugs, including the ones the seed notes invite, must be rejected.
+//!
+//! Statistical tests that correct code must pass (each a chance of a false failure at
+//! the suite's level): 18. Piecewise constant: KS and chi-squared on three tables, KS on
+//! the single bin (7); piecewise linear: both on four tables (8); the textbook inverse's
+//! equality in distribution (2); the unbiased importance-sampling estimator (1).
+
+use rand::RngExt;
+use raylemma::rng::{self, Rng};
+use raylemma::sampling::tabulated::{
+    ONE_MINUS_EPSILON, Piecewise1D, PiecewiseLinear1D, Sample, TableError, segment_cdf,
+    segment_inverse,
+};
+use raylemma::stats::chi2::{self, Chi2};
+use raylemma::stats::ks;
+use raylemma::stats::ttest::{self, Summary};
+use raylemma::stats::{StatsError, test_alpha};
+
+/// Samples per statistical test.
+const N: usize = 200_000;
+
+// ---------------------------------------------------------------------------------------
+// Tables, and their exact distributions computed independently of the code under test.
+
+/// A table: `edges.len() == values.len() + 1` (piecewise constant) or
+/// `edges.len() == values.len()` (piecewise linear, edges are knots).
+#[derive(Clone, Debug)]
+struct Table {
+    name: &'static str,
+    edges: Vec<f64>,
+    values: Vec<f64>,
+}
+
+/// Smooth, on non-uniform bins, integral far from 1.
+fn smooth() -> Table {
+    let edges: Vec<f64> = (0..=48)
+        .map(|k| {
+            let k = f64::from(k);
+            2.0 * k + 0.6 * (0.7 * k).sin()
+        })
+        .collect();
+    let values = (0..48)
+        .map(|k| 3.0 + 2.5 * (f64::from(k) / 7.0).cos())
+        .collect();
+    Table {
+        name: "smooth",
+        edges,
+        values,
+    }
+}
+
+/// A narrow emission line, 400 times the background, on 380–780 nm in 2 nm bins.
+fn spiky() -> Table {
+    let edges: Vec<f64> = (0..=200).map(|k| 380.0 + 2.0 * f64::from(k)).collect();
+    let mut values = vec![1.0; 200];
+    values[83] = 400.0; // 546–548 nm
+    values[84] = 40.0;
+    Table {
+        name: "spiky",
+        edges,
+        values,
+    }
+}
+
+/// Leading, interior and trailing runs of zero bins, and a lone zero bin.
+fn with_zeros() -> Table {
+    let edges: Vec<f64> = (0..=40).map(|k| f64::from(k) * 0.25 - 3.0).collect();
+    let values = (0..40)
+        .map(|k| match k {
+            0..=4 | 12..=17 | 25 | 34..=39 => 0.0,
+            _ => 1.0 + f64::from(k % 5),
+        })
+        .collect();
+    Table {
+        name: "with_zeros",
+        edges,
+        values,
+    }
+}
+
+/// One bin with mass among zeros.
+fn single_bin() -> Table {
+    Table {
+        name: "single_bin",
+        edges: vec![0.0, 1.0, 2.0, 3.5, 4.0],
+        values: vec![0.0, 0.0, 5.0, 0.0],
+    }
+}
+
+/// Knot tables for the piecewise-linear density.
+fn linear_tables() -> Vec<Table> {
+    let smooth_knots: Vec<f64> = (0..=12)
+        .map(|k| f64::from(k) * f64::from(k) / 4.0)
+        .collect();
+    let smooth_values = (0..=12)
+        .map(|k| 1.0 + 0.9 * (f64::from(k) * 0.8).sin())
+        .collect();
+    let spiky_knots: Vec<f64> = (0..=80).map(|k| 380.0 + 5.0 * f64::from(k)).collect();
+    let mut spiky_values = vec![0.5; 81];
+    spiky_values[33] = 60.0; // a line at 545 nm, zero width at the knots
+    let zero_knots: Vec<f64> = (0..=20).map(f64::from).collect();
+    let zero_values = (0..=20)
+        .map(|k| match k {
+            0..=3 | 8..=10 | 17..=20 => 0.0,
+            _ => f64::from(k % 4) + 1.0,
+        })
+        .collect();
+    vec![
+        Table {
+            name: "linear_smooth",
+            edges: smooth_knots,
+            values: smooth_values,
+        },
+        Table {
+            name: "linear_spiky",
+            edges: spiky_knots,
+            values: spiky_values,
+        },
+        Table {
+            name: "linear_zeros",
+            edges: zero_knots,
+            values: zero_values,
+        },
+    ]
+}
+
+/// A single triangle among zero knots.
+fn triangle() -> Table {
+    Table {
+        name: "triangle",
+        edges: vec![0.0, 1.0, 2.0, 3.0],
+        values: vec![0.0, 0.0, 2.0, 0.0],
+    }
+}
+
+impl Table {
+    fn constant(&self) -> Piecewise1D {
+        Piecewise1D::new(&self.edges, &self.values).unwrap()
+    }
+
+    fn linear(&self) -> PiecewiseLinear1D {
+        PiecewiseLinear1D::new(&self.edges, &self.values).unwrap()
+    }
+
+    /// Unnormalised mass of each cell (bin or segment).
+    fn masses(&self, linear: bool) -> Vec<f64> {
+        self.edges
+            .windows(2)
+            .enumerate()
+            .map(|(i, e)| {
+                let w = e[1] - e[0];
+                if linear {
+                    0.5 * w * (self.values[i] + self.values[i + 1])
+                } else {
+                    w * self.values[i]
+                }
+            })
+            .collect()
+    }
+
+    /// Probability of each cell.
+    fn probabilities(&self, linear: bool) -> Vec<f64> {
+        let m = self.masses(linear);
+        let total: f64 = m.iter().sum();
+        m.iter().map(|x| x / total).collect()
+    }
+
+    /// The exact CDF.
+    fn cdf(&self, linear: bool, x: f64) -> f64 {
+        let m = self.masses(linear);
+        let total: f64 = m.iter().sum();
+        let mut below = 0.0;
+        for (i, e) in self.edges.windows(2).enumerate() {
+            if x >= e[1] {
+                below += m[i];
+                continue;
+            }
+            if x > e[0] {
+                let s = x - e[0];
+                below += if linear {
+                    let slope = (self.values[i + 1] - self.values[i]) / (e[1] - e[0]);
+                    self.values[i] * s + 0.5 * slope * s * s
+                } else {
+                    self.values[i] * s
+                };
+            }
+            break;
+        }
+        (below / total).clamp(0.0, 1.0)
+    }
+
+    /// The exact normalised density.
+    fn density(&self, linear: bool, x: f64) -> f64 {
+        let total: f64 = self.masses(linear).iter().sum();
+        match self.edges.windows(2).position(|e| x >= e[0] && x < e[1]) {
+            None => 0.0,
+            Some(i) if linear => {
+                let (x0, x1) = (self.edges[i], self.edges[i + 1]);
+                let s = (x - x0) / (x1 - x0);
+                ((1.0 - s) * self.values[i] + s * self.values[i + 1]) / total
+            }
+            Some(i) => self.values[i] / total,
+        }
+    }
+
+    /// Counts of `xs` per cell; panics on a sample outside the table.
+    fn counts(&self, xs: &[f64]) -> Vec<u64> {
+        let mut counts = vec![0u64; self.edges.len() - 1];
+        for &x in xs {
+            let i = self
+                .edges
+                .windows(2)
+                .position(|e| x >= e[0] && x < e[1])
+                .unwrap_or_else(|| panic!("{}: sample {x} outside the table", self.name));
+            counts[i] += 1;
+        }
+        counts
+    }
+}
+
+fn draw(seed: u64, n: usize, sample: impl Fn(f64) -> f64) -> Vec<f64> {
+    let mut rng: Rng = rng::seeded(seed);
+    (0..n).map(|_| sample(rng.random::<f64>())).collect()
+}
+
+/// The two statistical tests against `table`'s exact distribution.
+fn fit(table: &Table, linear: bool, xs: &[f64]) -> (ks::Ks, Result<Chi2, StatsError>) {
+    let ks = ks::one_sample(xs, |x| table.cdf(linear, x)).unwrap();
+    let expected: Vec<f64> = table
+        .probabilities(linear)
+        .iter()
+        .map(|p| p * xs.len() as f64)
+        .collect();
+    let observed = table.counts_clamped(xs);
+    (ks, chi2::pearson(&observed, &expected, 5.0))
+}
+
+impl Table {
+    /// Counts per cell; samples outside the table go to the nearest end cell (planted
+    /// bugs may produce them; the tests must then reject, not panic).
+    fn counts_clamped(&self, xs: &[f64]) -> Vec<u64> {
+        let inside: Vec<f64> = xs
+            .iter()
+            .map(|&x| x.clamp(self.edges[0], self.edges[self.edges.len() - 1].next_down()))
+            .collect();
+        self.counts(&inside)
+    }
+}
+
+/// Chi-squared rejects: a p-value below the level, or samples where the table is zero.
+fn chi2_rejects(result: &Result<Chi2, StatsError>) -> bool {
+    match result {
+        Ok(c) => c.p_value < test_alpha(),
+        Err(StatsError::SamplesWherePdfIsZero { .. }) => true,
+        Err(e) => panic!("chi-squared could not run: {e}"),
+    }
+}
+
+fn assert_fits(table: &Table, linear: bool, xs: &[f64]) {
+    let (ks, chi) = fit(table, linear, xs);
+    assert!(
+        ks.p_value >= test_alpha(),
+        "{}: KS rejects, D = {} p = {:e}",
+        table.name,
+        ks.statistic,
+        ks.p_value
+    );
+    match chi {
+        Ok(c) => assert!(
+            c.p_value >= test_alpha(),
+            "{}: chi2 rejects {c:?}",
+            table.name
+        ),
+        // A single cell with mass: the chi-squared test has no degree of freedom.
+        Err(StatsError::TooFewCells { .. }) => {}
+        Err(e) => panic!("{}: chi2 could not run: {e}", table.name),
+    }
+}
+
+fn assert_rejected(table: &Table, linear: bool, xs: &[f64], what: &str) {
+    let (ks, chi) = fit(table, linear, xs);
+    assert!(
+        ks.p_value < test_alpha() && chi2_rejects(&chi),
+        "{what} on {}: not rejected (KS p = {:e}, chi2 {chi:?})",
+        table.name,
+        ks.p_value
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// The project's code fits every table.
+
+#[test]
+fn constant_fits_smooth_table() {
+    let t = smooth();
+    let d = t.constant();
+    assert_fits(&t, false, &draw(1, N, |u| d.sample(u).x));
+}
+
+#[test]
+fn constant_fits_spiky_table() {
+    let t = spiky();
+    let d = t.constant();
+    assert_fits(&t, false, &draw(2, N, |u| d.sample(u).x));
+}
+
+#[test]
+fn constant_fits_table_with_zero_bins() {
+    let t = with_zeros();
+    let d = t.constant();
+    assert_fits(&t, false, &draw(3, N, |u| d.sample(u).x));
+}
+
+#[test]
+fn constant_fits_single_bin() {
+    let t = single_bin();
+    let d = t.constant();
+    let xs = draw(4, N, |u| d.sample(u).x);
+    assert!(xs.iter().all(|&x| (2.0..3.5).contains(&x)));
+    assert_fits(&t, false, &xs);
+}
+
+#[test]
+fn linear_fits_every_table() {
+    let mut tables = linear_tables();
+    tables.push(triangle());
+    for (k, t) in tables.iter().enumerate() {
+        let d = t.linear();
+        assert_fits(t, true, &draw(10 + k as u64, N, |u| d.sample(u).x));
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Planted bugs: each must be rejected.
+
+/// Samples uniformly over [x_0, x_n], ignoring the table.
+#[test]
+fn uniform_ignoring_the_table_is_rejected() {
+    for t in [smooth(), spiky(), with_zeros()] {
+        let (lo, hi) = (t.edges[0], t.edges[t.edges.len() - 1]);
+        assert_rejected(&t, false, &draw(20, N, |u| lo + u * (hi - lo)), "uniform");
+    }
+}
+
+/// The CDF as running sums of the masses, not divided by their total.
+#[test]
+fn unnormalised_cdf_is_rejected() {
+    let t = smooth();
+    let mut cdf = vec![0.0];
+    for m in t.masses(false) {
+        cdf.push(cdf.last().unwrap() + m);
+    }
+    assert!(
+        cdf[cdf.len() - 1] > 10.0,
+        "the table must not integrate to 1"
+    );
+    let bad = |u: f64| {
+        let i = cdf[1..]
+            .partition_point(|&c| c <= u)
+            .min(t.values.len() - 1);
+        let s = (u - cdf[i]) / (cdf[i + 1] - cdf[i]);
+        t.edges[i] + s.min(1.0) * (t.edges[i + 1] - t.edges[i])
+    };
+    assert_rejected(&t, false, &draw(21, N, bad), "unnormalised CDF");
+}
+
+/// Off by one: the bin after the right one.
+#[test]
+fn off_by_one_bin_is_rejected() {
+    for t in [smooth(), spiky(), with_zeros()] {
+        let d = t.constant();
+        let bad = |u: f64| {
+            let s = d.sample(u);
+            let j = (s.bin + 1).min(t.values.len() - 1);
+            let f = (s.x - t.edges[s.bin]) / (t.edges[s.bin + 1] - t.edges[s.bin]);
+            t.edges[j] + f * (t.edges[j + 1] - t.edges[j])
+        };
+        assert_rejected(&t, false, &draw(22, N, bad), "off by one");
+    }
+}
+
+/// Treating a piecewise-linear table as piecewise constant within each segment.
+#[test]
+fn linear_table_sampled_as_constant_is_rejected() {
+    let t = &linear_tables()[0];
+    let d = t.linear();
+    let bad = |u: f64| {
+        let s = d.sample(u);
+        let (x0, x1) = (t.edges[s.bin], t.edges[s.bin + 1]);
+        let (c0, c1) = (d.cdf(x0), d.cdf(x1));
+        x0 + (u - c0) / (c1 - c0) * (x1 - x0)
+    };
+    // One chi-squared cell per segment cannot see the shape within a segment (the
+    // segment probabilities are right); the unbinned KS test can.
+    let (ks, _) = fit(t, true, &draw(23, N, bad));
+    assert!(ks.p_value < test_alpha(), "not rejected: {ks:?}");
+}
+
+// ---------------------------------------------------------------------------------------
+// The pdf: normalised, equal to the exact density, and what `sample` returns.
+
+/// Gauss-Legendre, 3 points per cell: exact for the constant and linear pieces.
+fn integrate(edges: &[f64], f: impl Fn(f64) -> f64) -> f64 {
+    let (a, w) = ((0.6f64).sqrt(), [5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0]);
+    edges
+        .windows(2)
+        .map(|e| {
+            let (mid, half) = (0.5 * (e[0] + e[1]), 0.5 * (e[1] - e[0]));
+            half * (w[0] * f(mid - a * half) + w[1] * f(mid) + w[2] * f(mid + a * half))
+        })
+        .sum()
+}
+
+/// Checks a pdf: integrates to 1 within `64 n epsilon`, and equals the exact density at
+/// three points of every cell within `1e-12` relative. Returns the first failure.
+fn pdf_problem(t: &Table, linear: bool, pdf: impl Fn(f64) -> f64) -> Option<String> {
+    let integral = integrate(&t.edges, &pdf);
+    let bound = 64.0 * t.edges.len() as f64 * f64::EPSILON;
+    if (integral - 1.0).abs() > bound {
+        return Some(format!("{}: the pdf integrates to {integral}", t.name));
+    }
+    for e in t.edges.windows(2) {
+        for x in [e[0], 0.5 * (e[0] + e[1]), 0.9 * e[1] + 0.1 * e[0]] {
+            let (got, want) = (pdf(x), t.density(linear, x));
+            if (got - want).abs() > 1e-12 * want.max(1e-300) {
+                return Some(format!("{}: pdf({x}) = {got}, exact {want}", t.name));
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn pdf_integrates_to_one_and_matches_the_table() {
+    for t in [smooth(), spiky(), with_zeros(), single_bin()] {
+        let d = t.constant();
+        assert_eq!(pdf_problem(&t, false, |x| d.pdf(x)), None);
+    }
+    for t in linear_tables().into_iter().chain([triangle()]) {
+        let d = t.linear();
+        assert_eq!(pdf_problem(&t, true, |x| d.pdf(x)), None);
+    }
+}
+
+/// Planted bug: the pdf as the bin's probability, not divided by its width.
+#[test]
+fn pdf_without_bin_width_is_rejected() {
+    let t = smooth();
+    let d = t.constant();
+    let bad = |x: f64| match t.edges.windows(2).position(|e| x >= e[0] && x < e[1]) {
+        Some(i) => d.bin_probability(i),
+        None => 0.0,
+    };
+    let problem = pdf_problem(&t, false, bad).expect("pdf without width accepted");
+    assert!(problem.contains("integrates"), "{problem}");
+}
+
+/// Planted bug: the pdf of the table as given, not divided by its integral.
+#[test]
+fn unnormalised_pdf_is_rejected() {
+    let t = spiky();
+    let d = t.constant();
+    let bad = |x: f64| d.pdf(x) * d.integral();
+    assert!(pdf_problem(&t, false, bad).is_some());
+}
+
+// ---------------------------------------------------------------------------------------
+// Hard cases: plateaus of the CDF, u = 0 and u -> 1.
+
+/// The u values most likely to break a sampler: 0, the largest value below 1, 1 itself,
+/// every CDF entry (the levels of the plateaus) and its neighbouring floats.
+fn hard_us(cdf: &[f64]) -> Vec<f64> {
+    let mut us = vec![0.0, f64::MIN_POSITIVE, ONE_MINUS_EPSILON, 1.0];
+    for &c in cdf {
+        us.extend([c, c.next_up(), c.next_down().max(0.0)]);
+    }
+    us.retain(|u| (0.0..=1.0).contains(u));
+    us
+}
+
+/// A sample is sound if it lies in [x_0, x_n), its pdf is positive and equals `pdf(x)`,
+/// and it lies in its bin, whose table value is positive.
+fn unsound(t: &Table, linear: bool, u: f64, s: Sample, pdf: impl Fn(f64) -> f64) -> Option<String> {
+    let (lo, hi) = (t.edges[0], t.edges[t.edges.len() - 1]);
+    let in_bin = s.bin + 1 < t.edges.len() && s.x >= t.edges[s.bin] && s.x < t.edges[s.bin + 1];
+    let positive_bin = in_bin
+        && if linear {
+            t.values[s.bin] + t.values[s.bin + 1] > 0.0
+        } else {
+            t.values[s.bin] > 0.0
+        };
+    let ok = s.x >= lo
+        && s.x < hi
+        && s.pdf > 0.0
+        && s.pdf == pdf(s.x)
+        && t.density(linear, s.x) > 0.0
+        && positive_bin;
+    (!ok).then(|| {
+        format!(
+            "{}: u = {u:e} gave {s:?}, pdf(x) = {}, exact density {}",
+            t.name,
+            pdf(s.x),
+            t.density(linear, s.x)
+        )
+    })
+}
+
+#[test]
+fn hard_u_values_give_sound_samples() {
+    assert_eq!(ONE_MINUS_EPSILON, f64::from_bits(0x3FEF_FFFF_FFFF_FFFF));
+    for t in [smooth(), spiky(), with_zeros(), single_bin()] {
+        let d = t.constant();
+        let mut rng = rng::seeded(30);
+        let random = (0..10_000).map(|_| rng.random::<f64>());
+        for u in hard_us(d.cdf_table()).into_iter().chain(random) {
+            assert_eq!(unsound(&t, false, u, d.sample(u), |x| d.pdf(x)), None);
+        }
+    }
+    for t in linear_tables().into_iter().chain([triangle()]) {
+        let d = t.linear();
+        let cdf: Vec<f64> = t.edges.iter().map(|&x| d.cdf(x)).collect();
+        let mut rng = rng::seeded(31);
+        let random = (0..10_000).map(|_| rng.random::<f64>());
+        for u in hard_us(&cdf).into_iter().chain(random) {
+            assert_eq!(unsound(&t, true, u, d.sample(u), |x| d.pdf(x)), None);
+        }
+    }
+}
+
+/// Zero bins are never sampled, not even at the exact level of their plateau.
+#[test]
+fn plateau_levels_skip_zero_bins() {
+    let t = with_zeros();
+    let d = t.constant();
+    let cdf = d.cdf_table();
+    for (i, &v) in t.values.iter().enumerate() {
+        if v == 0.0 {
+            // The plateau's level maps to the first bin with mass after it (or, at the
+            // top, to the last bin with mass before it).
+            let s = d.sample(cdf[i]);
+            assert!(t.values[s.bin] > 0.0, "bin {i}: {s:?}");
+        }
+    }
+    let s = d.sample(0.0);
+    assert_eq!((s.bin, s.x), (5, t.edges[5]));
+    let s = d.sample(ONE_MINUS_EPSILON);
+    assert_eq!(s.bin, 33);
+    assert!(s.x < t.edges[34] && s.x > t.edges[33]);
+}
+
+// ANCHOR: plateau
+/// The textbook generalised inverse, `F^-1(u) = inf { x : F(x) >= u }`, read off a table
+/// (the first bin with `cdf[i + 1] >= u`): equal in distribution, but at the level of a
+/// plateau it lands on the left end of the zero bin, and at u = 0 with a leading zero bin
+/// it divides 0 by 0.
+fn generalised_inverse(d: &Piecewise1D, u: f64) -> Sample {
+    let (cdf, edges) = (d.cdf_table(), d.edges());
+    let i = cdf[1..].partition_point(|&c| c < u).min(d.bins() - 1);
+    let t = (u - cdf[i]) / (cdf[i + 1] - cdf[i]);
+    let x = edges[i] + t * (edges[i + 1] - edges[i]);
+    Sample {
+        x,
+        pdf: d.pdf(x),
+        bin: i,
+    }
+}
+
+/// The seed's premise "the PDF must always have a positive result" excludes the tables
+/// spectra give; with zero bins the inverse CDF is not single-valued, and the textbook
+/// choice of inverse returns points of zero density.
+#[test]
+fn seed_premise_textbook_inverse_lands_in_zero_bins() {
+    let t = with_zeros();
+    let d = t.constant();
+    let s = generalised_inverse(&d, 0.0);
+    assert!(s.x.is_nan(), "u = 0: {s:?}");
+    let bad = hard_us(d.cdf_table())
+        .into_iter()
+        .filter(|&u| unsound(&t, false, u, generalised_inverse(&d, u), |x| d.pdf(x)).is_some())
+        .count();
+    // u = 0 and the level of each interior plateau (3 runs of zeros between bins with mass).
+    assert!(bad >= 4, "only {bad} unsound samples");
+    // Equal in distribution: the plateau levels have probability 0.
+    assert_fits(
+        &t,
+        false,
+        &draw(32, N / 4, |u| generalised_inverse(&d, u).x),
+    );
+}
+// ANCHOR_END: plateau
+
+// ---------------------------------------------------------------------------------------
+// Round trip: invert(sample(u)) = u.
+
+/// `|invert(sample(u)) - u| <= 4 eps (1 + (|x_i| + |x_i+1|) p)`, where `p` is the largest
+/// density in the bin: the rounding of `x` (about `eps |x|`) moves `u` by `p` times it.
+#[test]
+fn round_trip_within_bound() {
+    let mut worst: f64 = 0.0;
+    // Narrow bins far from 0 make the rounding of x matter.
+    let narrow = Table {
+        name: "narrow",
+        edges: (0..=1000).map(|k| 550.0 + 1e-3 * f64::from(k)).collect(),
+        values: (0..1000).map(|k| 1.0 + f64::from(k % 7)).collect(),
+    };
+    let mut rng = rng::seeded(40);
+    for t in [smooth(), spiky(), with_zeros(), single_bin(), narrow] {
+        let d = t.constant();
+        let us: Vec<f64> = hard_us(d.cdf_table())
+            .into_iter()
+            .chain((0..20_000).map(|_| rng.random::<f64>()))
+            .filter(|&u| u < 1.0)
+            .collect();
+        for u in us {
+            let s = d.sample(u);
+            let scale = 1.0 + (t.edges[s.bin].abs() + t.edges[s.bin + 1].abs()) * s.pdf;
+            let err = (d.invert(s.x) - u).abs() / (f64::EPSILON * scale);
+            worst = worst.max(err);
+            assert!(
+                err <= 4.0,
+                "{}: u = {u:e}, {s:?}, error {err} units",
+                t.name
+            );
+        }
+    }
+    for t in linear_tables().into_iter().chain([triangle()]) {
+        let d = t.linear();
+        for _ in 0..20_000 {
+            let u = rng.random::<f64>();
+            let s = d.sample(u);
+            let p = d
+                .pdf(t.edges[s.bin])
+                .max(d.pdf(t.edges[s.bin + 1].next_down()));
+            let scale = 1.0 + (t.edges[s.bin].abs() + t.edges[s.bin + 1].abs()) * p;
+            let err = (d.invert(s.x) - u).abs() / (f64::EPSILON * scale);
+            worst = worst.max(err);
+            assert!(
+                err <= 8.0,
+                "{}: u = {u:e}, {s:?}, error {err} units",
+                t.name
+            );
+        }
+    }
+    println!("worst round-trip error: {worst:.2} units");
+}
+
+#[test]
+fn cdf_is_monotone_from_zero_to_one() {
+    for t in [smooth(), spiky(), with_zeros(), single_bin()] {
+        let d = t.constant();
+        let (lo, hi) = (t.edges[0], t.edges[t.edges.len() - 1]);
+        assert_eq!(
+            (d.cdf(lo - 1.0), d.cdf(lo), d.cdf(hi), d.cdf(hi + 1.0)),
+            (0.0, 0.0, 1.0, 1.0)
+        );
+        let xs: Vec<f64> = (0..=10_000)
+            .map(|k| lo + (hi - lo) * f64::from(k) / 1e4)
+            .collect();
+        assert!(
+            xs.windows(2).all(|w| d.cdf(w[0]) <= d.cdf(w[1])),
+            "{}",
+            t.name
+        );
+        for &x in &xs {
+            assert!(
+                (d.cdf(x) - t.cdf(false, x)).abs() <= 1e-13,
+                "{} at {x}",
+                t.name
+            );
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The piecewise-linear segment inverse: stable, exact in the limits.
+
+/// The textbook root `(-a + sqrt(a^2 + xi (b^2 - a^2))) / (b - a)`.
+fn segment_inverse_textbook(a: f64, b: f64, xi: f64) -> f64 {
+    (-a + (a * a + xi * (b * b - a * a)).sqrt()) / (b - a)
+}
+
+#[test]
+fn segment_inverse_is_exact_in_the_limits() {
+    for xi in [0.0, 1e-300, 0.25, 0.5, 0.7, ONE_MINUS_EPSILON] {
+        assert_eq!(segment_inverse(3.0, 3.0, xi), xi, "constant segment");
+        assert_eq!(
+            segment_inverse(1e-300, 1e-300, xi),
+            xi,
+            "tiny constant segment"
+        );
+        let ramp = segment_inverse(0.0, 2.0, xi);
+        assert!(
+            (ramp - xi.sqrt()).abs() <= f64::EPSILON * xi.sqrt(),
+            "ramp: {ramp}"
+        );
+    }
+    assert_eq!(segment_inverse(0.0, 1.0, 0.0), 0.0);
+}
+
+#[test]
+fn segment_inverse_round_trips() {
+    let mut rng = rng::seeded(41);
+    let mut worst: f64 = 0.0;
+    for _ in 0..200_000 {
+        let a = if rng.random::<f64>() < 0.1 {
+            0.0
+        } else {
+            rng::log_uniform(&mut rng, 1e-300, 1e300)
+        };
+        let b = match rng.random::<u8>() % 4 {
+            0 => a,
+            1 => a * (1.0 + 1e-12 * rng.random::<f64>()),
+            _ => rng::log_uniform(&mut rng, 1e-300, 1e300),
+        };
+        if a == 0.0 && b == 0.0 {
+            continue; // a segment without mass is never sampled
+        }
+        let xi = rng.random::<f64>();
+        let t = segment_inverse(a, b, xi);
+        assert!(
+            (0.0..=1.0).contains(&t),
+            "a = {a:e}, b = {b:e}, xi = {xi}: t = {t}"
+        );
+        let err = (segment_cdf(a, b, t) - xi).abs() / f64::EPSILON;
+        worst = worst.max(err);
+        assert!(
+            err <= 6.0,
+            "a = {a:e}, b = {b:e}, xi = {xi}: error {err} units"
+        );
+    }
+    println!("worst segment round trip: {worst:.2} units");
+}
+
+/// The textbook root is undefined for constant segments and loses most digits for
+/// nearly constant ones: this is why the sampler uses the other form.
+#[test]
+fn textbook_quadratic_fails_on_nearly_constant_segments() {
+    assert!(segment_inverse_textbook(2.0, 2.0, 0.5).is_nan());
+    let (a, b) = (1.0, 1.0 + 1e-13);
+    let (mut textbook, mut stable) = (0.0f64, 0.0f64);
+    for k in 1..1000 {
+        let xi = f64::from(k) / 1000.0 + 1e-7;
+        let exact = xi + 0.5 * (b - a) * xi * (1.0 - xi); // to first order in b - a
+        textbook = textbook.max((segment_inverse_textbook(a, b, xi) - exact).abs());
+        stable = stable.max((segment_inverse(a, b, xi) - exact).abs());
+    }
+    assert!(stable <= 2.0 * f64::EPSILON, "stable {stable:e}");
+    assert!(textbook >= 1e-4, "textbook {textbook:e}");
+    println!("worst error for b - a = 1e-13: textbook {textbook:.1e}, stable {stable:.1e}");
+}
+
+// ---------------------------------------------------------------------------------------
+// Errors: every malformed table is refused with a message naming the entry.
+
+fn err(edges: &[f64], values: &[f64]) -> TableError {
+    Piecewise1D::new(edges, values).expect_err("malformed table accepted")
+}
+
+#[test]
+fn malformed_tables_are_refused_with_a_named_entry() {
+    let cases: Vec<(TableError, &str)> = vec![
+        (err(&[0.0, 1.0, 2.0], &[0.0, 0.0]), "all 2 values are zero"),
+        (
+            err(&[0.0, 1.0, 2.0], &[1.0, -0.5]),
+            "values[1] = -0.5 is negative",
+        ),
+        (
+            err(&[0.0, 1.0, 2.0], &[f64::NAN, 1.0]),
+            "values[0] = NaN is NaN",
+        ),
+        (
+            err(&[0.0, 1.0, 2.0], &[1.0, f64::INFINITY]),
+            "values[1] = inf is infinite",
+        ),
+        (
+            err(&[0.0, 1.0, 1.0], &[1.0, 1.0]),
+            "edges[2] = 1 is not greater than edges[1] = 1",
+        ),
+        (
+            err(&[0.0, 2.0, 1.0], &[1.0, 1.0]),
+            "edges[2] = 1 is not greater than edges[1] = 2",
+        ),
+        (
+            err(&[0.0, f64::NAN], &[1.0]),
+            "edges[1] = NaN is not finite",
+        ),
+        (err(&[0.0, 1.0, 2.0], &[1.0]), "1 values for 3 edges"),
+        (err(&[0.0, 1.0], &[1.0, 1.0]), "2 values for 2 edges"),
+        (err(&[0.0], &[]), "1 edges given"),
+        (err(&[-1e308, 1e308], &[1.0]), "bin 0 from -1e308 to 1e308"),
+        (
+            err(&[0.0, 1.0, 2.0], &[1e308, 1e308]),
+            "overflows f64 at bin 1",
+        ),
+    ];
+    for (e, want) in cases {
+        let message = e.to_string();
+        assert!(
+            message.contains(want),
+            "{message:?} does not contain {want:?}"
+        );
+    }
+    let e = PiecewiseLinear1D::new(&[0.0, 1.0, 2.0], &[1.0, 1.0]).unwrap_err();
+    assert!(e.to_string().contains("2 values for 3 knots"), "{e}");
+    let e = PiecewiseLinear1D::new(&[0.0, 1.0], &[0.0, -0.0]).unwrap_err();
+    assert_eq!(e, TableError::AllZero { values: 2 });
+    let boxed: Box<dyn std::error::Error> = Box::new(e);
+    assert!(!boxed.to_string().is_empty());
+}
+
+/// The seed's drawing: a column per integer wavelength from 380 to 830 nm, 450 px wide.
+/// As bins `[l, l + 1)` that is 451 edges and 450 values, and fits; as samples at each
+/// integer wavelength it is one short (451 knots need 451 values).
+#[test]
+fn seed_fencepost_450_columns_for_380_to_830_nm() {
+    let edges: Vec<f64> = (380..=830).map(f64::from).collect();
+    let columns = vec![1.0; 450];
+    assert_eq!(edges.len(), 451);
+    assert!(Piecewise1D::new(&edges, &columns).is_ok());
+    let e = PiecewiseLinear1D::new(&edges, &columns).unwrap_err();
+    assert!(e.to_string().contains("450 values for 451 knots"), "{e}");
+}
+
+/// "The pertinent quantity is the ratio of black pixels to white pixels": read literally,
+/// a column with h black pixels of 256 gives h / (256 - h), not a density proportional
+/// to the drawn height h. A sampler built from the ratio is rejected against the drawing.
+#[test]
+fn seed_black_to_white_ratio_is_not_the_drawn_density() {
+    let edges: Vec<f64> = (0..=90).map(|k| 380.0 + 5.0 * f64::from(k)).collect();
+    let heights: Vec<f64> = (0..90)
+        .map(|k| (250.0 * (-((f64::from(k) - 40.0) / 18.0).powi(2)).exp()).round())
+        .collect();
+    let drawn = Table {
+        name: "drawn heights",
+        edges: edges.clone(),
+        values: heights.clone(),
+    };
+    let ratio: Vec<f64> = heights.iter().map(|h| h / (256.0 - h)).collect();
+    let d = Piecewise1D::new(&edges, &ratio).unwrap();
+    assert_rejected(
+        &drawn,
+        false,
+        &draw(50, N, |u| d.sample(u).x),
+        "black/white ratio",
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Importance sampling with a table (the seed's estimator and its support condition).
+
+/// The estimator `(1/N) sum f(x_i) / q(x_i)` with `x_i` drawn from `q`.
+fn estimate(seed: u64, n: usize, q: &Piecewise1D, f: impl Fn(f64) -> f64) -> Summary {
+    let mut rng = rng::seeded(seed);
+    Summary::of((0..n).map(|_| {
+        let s = q.sample(rng.random::<f64>());
+        f(s.x) / s.pdf
+    }))
+}
+
+/// With `q` proportional to `f`, every term equals the integral: zero variance.
+#[test]
+fn table_proportional_to_integrand_gives_zero_variance() {
+    let t = spiky();
+    let q = t.constant();
+    let f = |x: f64| 7.0 * q.pdf(x);
+    let mut rng = rng::seeded(60);
+    for _ in 0..10_000 {
+        let s = q.sample(rng.random::<f64>());
+        let term = f(s.x) / s.pdf;
+        assert!(
+            (term - 7.0).abs() <= 4.0 * f64::EPSILON * 7.0,
+            "{s:?}: {term}"
+        );
+    }
+}
+
+/// The seed requires `q` nonzero "wherever f(x) p_X(x) is nonzero". When `p` vanishes
+/// where `f` does not, that allows a `q` which misses part of `f`, and the estimate of
+/// `∫ f` is biased. What is needed is `q > 0` wherever `f != 0`.
+#[test]
+fn seed_support_condition_is_not_sufficient() {
+    // f = 1 on [0, 1]; p and q vanish on [0.4, 0.6); so does f p, as the seed allows.
+    let edges = [0.0, 0.4, 0.6, 1.0];
+    let p = Piecewise1D::new(&edges, &[1.0, 0.0, 1.0]).unwrap();
+    let f = |x: f64| if (0.0..1.0).contains(&x) { 1.0 } else { 0.0 };
+    let seed_ok = p.pdf(0.5) == 0.0 && f(0.5) * p.pdf(0.5) == 0.0;
+    assert!(seed_ok);
+    let biased = estimate(61, 100_000, &p, f);
+    let test = ttest::one_sample(&biased, 1.0).unwrap();
+    assert!(test.p_value < test_alpha(), "{test:?}");
+    assert!((biased.mean - 0.8).abs() < 1e-9, "{}", biased.mean); // misses 0.2 exactly
+    // q > 0 wherever f != 0: unbiased.
+    let q = Piecewise1D::new(&edges, &[1.0, 0.1, 1.0]).unwrap();
+    let fair = estimate(62, 100_000, &q, f);
+    let test = ttest::one_sample(&fair, 1.0).unwrap();
+    assert!(test.p_value >= test_alpha(), "{test:?}");
+}
+
+#[test]
+fn uniform_constructors_place_the_last_edge_exactly() {
+    let d = Piecewise1D::uniform(380.0, 780.0, &[1.0; 7]).unwrap();
+    assert_eq!(d.edges().len(), 8);
+    assert_eq!(d.edges()[7], 780.0);
+    let d = Piecewise1D::from_fn(0.0, 1.0, 10, |x| x).unwrap();
+    assert!((d.pdf(0.95) - 1.9).abs() < 1e-12);
+    let l = PiecewiseLinear1D::uniform(380.0, 780.0, &[1.0; 81]).unwrap();
+    assert_eq!((l.segments(), l.knots()[80]), (80, 780.0));
+    assert!((l.integral() - 400.0).abs() < 1e-9);
+}
