@@ -145,8 +145,8 @@ fn draw_panel(
                 .y_desc(&panel.y_label)
                 .label_style(("sans-serif", 13))
                 .axis_desc_style(("sans-serif", 15))
-                .x_label_formatter(&|v| format_tick(*v))
-                .y_label_formatter(&|v| format_tick(*v))
+                .x_label_formatter(&|v| tick(panel.x_scale, *v))
+                .y_label_formatter(&|v| tick(panel.y_scale, *v))
                 .draw()?;
             for (k, s) in panel.series.iter().enumerate() {
                 let color = PALETTE[k % PALETTE.len()];
@@ -186,6 +186,10 @@ fn draw_panel(
     Ok(())
 }
 
+fn tick(scale: Scale, v: f64) -> String {
+    if scale == Scale::Linear { format_linear_tick(v) } else { format_tick(v) }
+}
+
 /// Tick labels: plain numbers in a readable range, else scientific notation.
 pub fn format_tick(v: f64) -> String {
     let a = v.abs();
@@ -199,6 +203,12 @@ pub fn format_tick(v: f64) -> String {
     }
 }
 
+/// Tick labels on a linear axis: as [`format_tick`], but rounding noise around zero
+/// (`-2e-16` for a tick meant to be 0) prints as `0`.
+pub fn format_linear_tick(v: f64) -> String {
+    if v.abs() < 1e-12 { "0".into() } else { format_tick(v) }
+}
+
 /// Encodes an RGB8 buffer as PNG.
 pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> Result<Vec<u8>, BoxError> {
     let img =
@@ -206,4 +216,54 @@ pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> Result<Vec<u8>, BoxE
     let mut out = std::io::Cursor::new(Vec::new());
     img.write_to(&mut out, image::ImageFormat::Png)?;
     Ok(out.into_inner())
+}
+
+/// One panel of a scatter plot.
+#[derive(Clone, Debug)]
+pub struct ScatterPanel {
+    /// Title above the panel.
+    pub title: String,
+    /// X axis label.
+    pub x_label: String,
+    /// Y axis label.
+    pub y_label: String,
+    /// X range.
+    pub x_range: (f64, f64),
+    /// Y range.
+    pub y_range: (f64, f64),
+    /// The points.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// Draws scatter `panels` in a grid of `columns` columns into a PNG and returns its bytes.
+pub fn scatter_png(panels: &[ScatterPanel], columns: usize, width: u32, height: u32) -> Result<Vec<u8>, BoxError> {
+    register_embedded_font();
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let rows = panels.len().div_ceil(columns.max(1));
+        let areas = root.split_evenly((rows, columns.max(1)));
+        for (panel, area) in panels.iter().zip(areas.iter()) {
+            let mut chart = ChartBuilder::on(area)
+                .caption(&panel.title, ("sans-serif", 16))
+                .margin(10)
+                .x_label_area_size(35)
+                .y_label_area_size(50)
+                .build_cartesian_2d(panel.x_range.0..panel.x_range.1, panel.y_range.0..panel.y_range.1)?;
+            chart
+                .configure_mesh()
+                .disable_mesh()
+                .x_desc(&panel.x_label)
+                .y_desc(&panel.y_label)
+                .label_style(("sans-serif", 12))
+                .axis_desc_style(("sans-serif", 13))
+                .x_label_formatter(&|v| format_linear_tick(*v))
+                .y_label_formatter(&|v| format_linear_tick(*v))
+                .draw()?;
+            chart.draw_series(panel.points.iter().map(|&p| Circle::new(p, 1, PALETTE[0].filled())))?;
+        }
+        root.present()?;
+    }
+    encode_png(width, height, buffer)
 }

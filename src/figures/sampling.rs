@@ -20,6 +20,8 @@ use crate::stats;
 /// The outputs of these chapters.
 pub fn outputs() -> Vec<Output> {
     vec![
+        Output { file: "sampling_scatter.png", what: "sample scatter plots", make: scatter_png },
+        Output { file: "sampling_histograms.png", what: "histograms against pdfs", make: histograms_png },
         Output {
             file: "sampling_warped_grids.png",
             what: "disc maps' distortion",
@@ -418,4 +420,100 @@ fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         root.present()?;
     }
     plot::encode_png(w, h, buffer)
+}
+
+/// Azimuth in `[0, 2 pi)` and `cos(theta)`: the sphere's equal-area coordinates, in which a
+/// uniform sampler looks uniform.
+fn phi_z(w: DVec3) -> (f64, f64) {
+    let phi = w.y.atan2(w.x);
+    (if phi < 0.0 { phi + TAU } else { phi }, w.z)
+}
+
+fn scatter_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    use plot::ScatterPanel;
+    let mut rng = rng::seeded(0x5CA7);
+    let n = 2500;
+    let sphere_icdf: Vec<_> = (0..n).map(|_| phi_z(sphere_inverse_cdf(warp::square_point(&mut rng)))).collect();
+    let sphere_gauss: Vec<_> = (0..n).map(|_| phi_z(sphere_gaussian(&mut rng))).collect();
+    // One jittered sample per cell of a 24 x 24 grid: stratified samples.
+    let k = 24;
+    let strata: Vec<DVec2> = (0..k * k)
+        .map(|c| {
+            let (i, j) = ((c / k) as f64, (c % k) as f64);
+            DVec2::new((i + rng::uniform(&mut rng, 0.0, 1.0)) / k as f64, (j + rng::uniform(&mut rng, 0.0, 1.0)) / k as f64)
+        })
+        .collect();
+    let xy = |p: DVec3| (p.x, p.y);
+    let malley: Vec<_> = (0..n).map(|_| xy(cosine_malley(warp::square_point(&mut rng)))).collect();
+    let sphere_panel = |title: &str, points| ScatterPanel {
+        title: title.into(),
+        x_label: "phi".into(),
+        y_label: "cos theta".into(),
+        x_range: (0.0, TAU),
+        y_range: (-1.0, 1.0),
+        points,
+    };
+    let disc_panel = |title: &str, points| ScatterPanel {
+        title: title.into(),
+        x_label: "x".into(),
+        y_label: "y".into(),
+        x_range: (-1.05, 1.05),
+        y_range: (-1.05, 1.05),
+        points,
+    };
+    let panels = [
+        sphere_panel("sphere, inverse CDF (equal-area coordinates)", sphere_icdf),
+        sphere_panel("sphere, Gaussian (equal-area coordinates)", sphere_gauss),
+        disc_panel("cosine, Malley: (x, y) of the directions", malley),
+        disc_panel("polar map of 24 x 24 stratified samples", strata.iter().map(|&u| xy(disc_polar(u))).collect()),
+        disc_panel("concentric map of the same samples", strata.iter().map(|&u| xy(disc_concentric(u))).collect()),
+    ];
+    plot::scatter_png(&panels, 3, 1200, 800)
+}
+
+fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let n = if settings.quick { 100_000 } else { 1_000_000 };
+    let bins = 40;
+    let histogram = |sample: &dyn Fn(&mut Rng) -> f64| {
+        let mut rng = rng::seeded(0x4157);
+        let mut counts = vec![0usize; bins];
+        for _ in 0..n {
+            let z = sample(&mut rng);
+            counts[((z * bins as f64) as usize).min(bins - 1)] += 1;
+        }
+        let mut steps = Vec::new();
+        for (k, &c) in counts.iter().enumerate() {
+            let density = c as f64 / n as f64 * bins as f64;
+            steps.push((k as f64 / bins as f64, density));
+            steps.push(((k + 1) as f64 / bins as f64, density));
+        }
+        steps
+    };
+    let cosine = histogram(&|r| cosine_malley(warp::square_point(r)).z);
+    let uniform = histogram(&|r| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z).z);
+    let panels = [
+        Panel {
+            title: format!("cos theta of {n} cosine-weighted samples"),
+            x_label: "cos theta".into(),
+            y_label: "density".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            series: vec![
+                Series { label: "histogram (Malley)".into(), points: cosine },
+                Series { label: "pdf 2 cos theta".into(), points: vec![(0.0, 0.0), (1.0, 2.0)] },
+            ],
+        },
+        Panel {
+            title: format!("cos theta of {n} uniform hemisphere samples"),
+            x_label: "cos theta".into(),
+            y_label: "density".into(),
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            series: vec![
+                Series { label: "histogram (flipped inverse CDF)".into(), points: uniform },
+                Series { label: "pdf 1".into(), points: vec![(0.0, 1.0), (1.0, 1.0)] },
+            ],
+        },
+    ];
+    plot::line_chart_png(&panels, 1100, 420)
 }
