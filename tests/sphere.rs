@@ -247,6 +247,41 @@ fn nearest_root_ordering() {
     assert_eq!(nearest_root_above(1.0, 2.0, 1.5), Some(2.0));
     assert_eq!(nearest_root_above(f64::NAN, 2.0, 0.0), Some(2.0));
     assert_eq!(nearest_root_above(f64::NAN, f64::NAN, 0.0), None);
+    // Strictly greater: a root exactly at t_min is behind the caller.
+    assert_eq!(nearest_root_above(1.0, 2.0, 1.0), Some(2.0));
+    assert_eq!(nearest_root_above(1.0, 2.0, 2.0), None);
+}
+
+/// The textbook form is right where it is well-conditioned: in f64, at a scale of a few
+/// radii, with unnormalised directions, it agrees with the stable form to 1e-12. (Its
+/// failures elsewhere are numerical, not algebraic; this test catches algebraic slips.)
+#[test]
+fn textbook_form_is_right_where_well_conditioned() {
+    let mut rng = raylemma::rng::seeded(11);
+    let mut hits = 0;
+    for _ in 0..10_000 {
+        let origin = raylemma::rng::unit_vector(&mut rng) * 5.0;
+        let target =
+            raylemma::rng::unit_vector(&mut rng) * 1.5 * raylemma::rng::uniform(&mut rng, 0.0, 1.0);
+        let scale = raylemma::rng::log_uniform(&mut rng, 0.1, 10.0);
+        let ray = Ray::new(origin, (target - origin) * scale);
+        let sphere = Sphere::new(DVec3::new(0.1, -0.2, 0.3), 1.0);
+        for t_min in [0.0, 0.3 / scale, f64::NEG_INFINITY] {
+            let (a, b) = (
+                intersect_textbook(&ray, &sphere, t_min),
+                intersect_stable(&ray, &sphere, t_min),
+            );
+            match (a, b) {
+                (Some(a), Some(b)) => {
+                    hits += 1;
+                    assert!((a - b).abs() <= 1e-12 * b.abs().max(1.0), "{a} vs {b}");
+                }
+                (None, None) => {}
+                _ => panic!("textbook {a:?} vs stable {b:?} for {ray:?}"),
+            }
+        }
+    }
+    assert!(hits > 10_000);
 }
 
 #[test]
