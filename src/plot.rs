@@ -129,6 +129,7 @@ fn draw_panel(
     };
     let (x0, x1) = range(pts().map(|p| p.0), panel.x_scale);
     let (y0, y1) = range(pts().map(|p| p.1), panel.y_scale);
+    let legend = emptiest_corner(pts(), (x0, x1, panel.x_scale), (y0, y1, panel.y_scale));
     let mut builder = ChartBuilder::on(area);
     builder
         .caption(&panel.title, ("sans-serif", 18))
@@ -173,7 +174,7 @@ fn draw_panel(
                 .background_style(WHITE.mix(0.85))
                 .border_style(BLACK)
                 .label_font(("sans-serif", 13))
-                .position(SeriesLabelPosition::UpperLeft)
+                .position(legend)
                 .draw()?;
         }};
     }
@@ -187,7 +188,11 @@ fn draw_panel(
 }
 
 fn tick(scale: Scale, v: f64) -> String {
-    if scale == Scale::Linear { format_linear_tick(v) } else { format_tick(v) }
+    if scale == Scale::Linear {
+        format_linear_tick(v)
+    } else {
+        format_tick(v)
+    }
 }
 
 /// Tick labels: plain numbers in a readable range, else scientific notation.
@@ -203,10 +208,45 @@ pub fn format_tick(v: f64) -> String {
     }
 }
 
+/// The corner of the plot (a third of each axis) holding the fewest data points: where
+/// the legend hides the least.
+fn emptiest_corner(
+    points: impl Iterator<Item = (f64, f64)>,
+    x: (f64, f64, Scale),
+    y: (f64, f64, Scale),
+) -> SeriesLabelPosition {
+    let unit = |v: f64, (lo, hi, scale): (f64, f64, Scale)| match scale {
+        Scale::Linear => (v - lo) / (hi - lo),
+        Scale::Log => (v.ln() - lo.ln()) / (hi.ln() - lo.ln()),
+    };
+    let mut counts = [0usize; 4]; // upper left, upper right, lower left, lower right
+    for (px, py) in points {
+        let (u, v) = (unit(px, x), unit(py, y));
+        let corner = match (u < 1.0 / 3.0, u > 2.0 / 3.0, v > 2.0 / 3.0, v < 1.0 / 3.0) {
+            (true, _, true, _) => 0,
+            (_, true, true, _) => 1,
+            (true, _, _, true) => 2,
+            (_, true, _, true) => 3,
+            _ => continue,
+        };
+        counts[corner] += 1;
+    }
+    match (0..4).min_by_key(|&k| counts[k]).unwrap_or(0) {
+        0 => SeriesLabelPosition::UpperLeft,
+        1 => SeriesLabelPosition::UpperRight,
+        2 => SeriesLabelPosition::LowerLeft,
+        _ => SeriesLabelPosition::LowerRight,
+    }
+}
+
 /// Tick labels on a linear axis: as [`format_tick`], but rounding noise around zero
 /// (`-2e-16` for a tick meant to be 0) prints as `0`.
 pub fn format_linear_tick(v: f64) -> String {
-    if v.abs() < 1e-12 { "0".into() } else { format_tick(v) }
+    if v.abs() < 1e-12 {
+        "0".into()
+    } else {
+        format_tick(v)
+    }
 }
 
 /// Encodes an RGB8 buffer as PNG.
@@ -236,7 +276,12 @@ pub struct ScatterPanel {
 }
 
 /// Draws scatter `panels` in a grid of `columns` columns into a PNG and returns its bytes.
-pub fn scatter_png(panels: &[ScatterPanel], columns: usize, width: u32, height: u32) -> Result<Vec<u8>, BoxError> {
+pub fn scatter_png(
+    panels: &[ScatterPanel],
+    columns: usize,
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, BoxError> {
     register_embedded_font();
     let mut buffer = vec![255u8; (width * height * 3) as usize];
     {
@@ -250,7 +295,10 @@ pub fn scatter_png(panels: &[ScatterPanel], columns: usize, width: u32, height: 
                 .margin(10)
                 .x_label_area_size(35)
                 .y_label_area_size(50)
-                .build_cartesian_2d(panel.x_range.0..panel.x_range.1, panel.y_range.0..panel.y_range.1)?;
+                .build_cartesian_2d(
+                    panel.x_range.0..panel.x_range.1,
+                    panel.y_range.0..panel.y_range.1,
+                )?;
             chart
                 .configure_mesh()
                 .disable_mesh()
@@ -261,7 +309,12 @@ pub fn scatter_png(panels: &[ScatterPanel], columns: usize, width: u32, height: 
                 .x_label_formatter(&|v| format_linear_tick(*v))
                 .y_label_formatter(&|v| format_linear_tick(*v))
                 .draw()?;
-            chart.draw_series(panel.points.iter().map(|&p| Circle::new(p, 1, PALETTE[0].filled())))?;
+            chart.draw_series(
+                panel
+                    .points
+                    .iter()
+                    .map(|&p| Circle::new(p, 1, PALETTE[0].filled())),
+            )?;
         }
         root.present()?;
     }
