@@ -176,3 +176,43 @@ fn rng_samplers_get_the_chi_squared_test_only() {
     v.assert_pass();
     assert_eq!(v.findings.len(), 1);
 }
+
+#[test]
+fn interval_domain_checks_a_linear_density() {
+    // x = sqrt(u1) has density 2x on [0, 1].
+    let ok = square(
+        "linear on [0,1]",
+        Domain::Interval { lo: 0.0, hi: 1.0 },
+        |u| DVec3::new(u.x.sqrt(), 0.0, 0.0),
+        |p| 2.0 * p.x,
+    );
+    ok.assert_pass();
+    // Planted bug: x = u1 (uniform) claimed as 2x.
+    let bad = square(
+        "uniform as linear",
+        Domain::Interval { lo: 0.0, hi: 1.0 },
+        |u| DVec3::new(u.x, 0.0, 0.0),
+        |p| 2.0 * p.x,
+    );
+    assert!(bad.failed("chi_squared") && bad.failed("jacobian"), "{bad}");
+}
+
+#[test]
+fn square_domain_checks_a_product_density() {
+    // (sqrt(u1), u2) has density 2x on the unit square.
+    let ok = square(
+        "2x on the square",
+        Domain::Square,
+        |u| DVec3::new(u.x.sqrt(), u.y, 0.0),
+        |p| 2.0 * p.x,
+    );
+    ok.assert_pass();
+    // Planted bug: the density claimed along the wrong axis.
+    let bad = square(
+        "2y claimed",
+        Domain::Square,
+        |u| DVec3::new(u.x.sqrt(), u.y, 0.0),
+        |p| 2.0 * p.y,
+    );
+    assert!(bad.failed("chi_squared") && bad.failed("jacobian"), "{bad}");
+}
