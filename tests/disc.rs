@@ -81,3 +81,11 @@ fn centre_and_edges_are_exact() {
         }
     }
 }
+
+/// The polar inverse maps azimuth 0 to u2 = 0, not 1.
+#[test]
+fn polar_inverse_at_the_azimuth_seam() {
+    let u = DVec2::new(0.25, 0.0);
+    let back = disc_polar_invert(disc_polar(u));
+    assert!((back - u).abs().max_element() <= 1e-15, "{back:?}");
+}

@@ -166,3 +166,12 @@ fn inverse_cdf_is_accurate_at_the_poles() {
     let z: f64 = 1.0 - 2.0 * u;
     assert_eq!((1.0 - z * z).sqrt(), 0.0);
 }
+
+/// The inverse maps azimuth 0 to u2 = 0, not 1: the seam of the square is closed on one
+/// side only.
+#[test]
+fn inverse_at_the_azimuth_seam() {
+    let u = DVec2::new(0.3, 0.0);
+    let back = sphere_inverse_cdf_invert(sphere_inverse_cdf(u));
+    assert!((back - u).abs().max_element() <= 1e-15, "{back:?}");
+}

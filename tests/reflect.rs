@@ -1,0 +1,378 @@
+//! Tests of the chapter *Reflection and refraction* (`chapters/optics/reflect.md`).
+//!
+//! Deterministic checks (fixed seeds, constructed answers). The chapter's checker runs on
+//! the project's `reflect` and `refract`, which must pass, and on planted bugs, each of which
+//! must fail the claim it breaks.
+
+use glam::DVec3;
+use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
+use raylemma::optics::reflect::{Refraction, check, critical_angle, planted, reflect, refract};
+
+/// Random cases per checker run.
+const CASES: usize = 20_000;
+const EPS: f64 = f64::EPSILON;
+
+/// A unit direction at angle `theta` (radians) from `-n`, tilted towards `t`.
+fn incident(theta: f64, n: DVec3, t: DVec3) -> DVec3 {
+    -theta.cos() * n + theta.sin() * t
+}
+
+fn frame() -> (DVec3, DVec3) {
+    let n = DVec3::new(0.3, -0.5, 0.8).normalize();
+    (n, n.any_orthonormal_vector())
+}
+
+fn transmitted(r: Refraction) -> DVec3 {
+    match r {
+        Refraction::Transmitted(w) => w,
+        Refraction::TotalInternalReflection => panic!("unexpected total internal reflection"),
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The project's code passes every claim.
+
+#[test]
+fn reflect_passes_every_check() {
+    let verdict = check::reflection(&reflect, CASES, 1);
+    verdict.assert_pass();
+}
+
+#[test]
+fn refract_passes_every_check() {
+    let verdict = check::refraction(&refract, CASES, 2);
+    verdict.assert_pass();
+}
+
+// ---------------------------------------------------------------------------------------
+// The seed's claims.
+
+// ANCHOR: seed_reflection
+/// Seed: "w_o = 2n + w_i". Right at normal incidence only; elsewhere the result is not
+/// even a unit vector (|2n + w_i|^2 = 5 - 4 cos_i) and leaves at the wrong angle.
+#[test]
+fn seed_reflection_fails_unit_length_and_equal_angles() {
+    let verdict = check::reflection(&planted::seed_reflect, CASES, 1);
+    assert!(verdict.failed("unit_length"), "{verdict}");
+    assert!(verdict.failed("equal_angles"), "{verdict}");
+    // It stays in the plane of incidence and retraces itself: those claims cannot see it.
+    assert!(
+        !verdict.failed("coplanar") && !verdict.failed("reversible"),
+        "{verdict}"
+    );
+    let (n, t) = frame();
+    let w_i = incident(60f64.to_radians(), n, t);
+    let seed = planted::seed_reflect(w_i, n);
+    assert!((seed.length() - 3f64.sqrt()).abs() < 1e-15); // 5 - 4 cos 60° = 3
+    assert!((reflect(w_i, n) - incident(60f64.to_radians(), -n, t)).length() < 1e-15);
+}
+// ANCHOR_END: seed_reflection
+
+/// Seed: "n = (w_o - w_i) / 2". For the true mirror direction this is cos(theta_i) n: it
+/// has the normal's direction but not its length, except at normal incidence.
+#[test]
+fn seed_normal_formula_is_off_by_cos_theta() {
+    let (n, t) = frame();
+    for degrees in [0.0, 30.0, 60.0, 85.0] {
+        let theta = f64::to_radians(degrees);
+        let w_i = incident(theta, n, t);
+        let half = (reflect(w_i, n) - w_i) / 2.0;
+        assert!((half - theta.cos() * n).length() < 4.0 * EPS, "{degrees}");
+        assert!(half.normalize().dot(n) > 1.0 - 4.0 * EPS);
+    }
+}
+
+/// Seed: the perpendicular (surface) component of w_t is (n1/n2) times that of w_i, and
+/// the normal component is -sqrt(1 - |w_t,perp|^2) n, for a normal facing the light.
+#[test]
+fn seed_refraction_components_are_right() {
+    let (n, t) = frame();
+    for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.0, 2.4)] {
+        for degrees in [0.0, 20.0, 40.0, 60.0, 89.0] {
+            let w_i = incident(f64::to_radians(degrees), n, t);
+            let Refraction::Transmitted(w_t) = refract(w_i, n, n1, n2) else {
+                assert!(n1 / n2 * f64::to_radians(degrees).sin() > 1.0);
+                continue;
+            };
+            let perp_i = w_i - w_i.dot(n) * n;
+            let perp_t = n1 / n2 * perp_i;
+            let seed = perp_t - (1.0 - perp_t.length_squared()).sqrt() * n;
+            assert!((seed - w_t).length() < 8.0 * EPS, "{n1} {n2} {degrees}");
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Planted bugs the refraction checker must reject.
+
+#[test]
+fn checker_rejects_a_missing_square_root() {
+    let verdict = check::refraction(&planted::refract_without_sqrt, CASES, 2);
+    assert!(
+        verdict.failed("unit_length") && verdict.failed("snell"),
+        "{verdict}"
+    );
+}
+
+#[test]
+fn checker_rejects_swapped_indices() {
+    let verdict = check::refraction(&planted::refract_swapped_indices, CASES, 2);
+    assert!(
+        verdict.failed("snell") && verdict.failed("tir_iff"),
+        "{verdict}"
+    );
+}
+
+#[test]
+fn checker_rejects_nan_for_total_internal_reflection() {
+    let verdict = check::refraction(&planted::refract_nan_tir, CASES, 2);
+    assert!(
+        verdict.failed("finite") && verdict.failed("tir_iff"),
+        "{verdict}"
+    );
+}
+
+#[test]
+fn checker_rejects_an_unflipped_normal() {
+    let verdict = check::refraction(&planted::refract_unflipped_normal, CASES, 2);
+    assert!(
+        verdict.failed("normal_side") && verdict.failed("far_side"),
+        "{verdict}"
+    );
+}
+
+#[test]
+fn reflection_checker_rejects_nan_and_identity() {
+    // The identity map is reversible and coplanar: only the angle claim sees it.
+    let nan = |_: DVec3, _: DVec3| DVec3::NAN;
+    let verdict = check::reflection(&nan, 1_000, 3);
+    assert!(
+        verdict.failed("finite") && verdict.failed("unit_length"),
+        "{verdict}"
+    );
+    let identity = |w: DVec3, _: DVec3| w;
+    let verdict = check::reflection(&identity, 1_000, 3);
+    assert!(
+        verdict.failed("equal_angles") && !verdict.failed("reversible"),
+        "{verdict}"
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Constructed cases.
+
+/// Reflection: the angle of reflection equals the angle of incidence, for constructed
+/// angles, with the normal on either side.
+#[test]
+fn angle_of_reflection_equals_angle_of_incidence() {
+    let (n, t) = frame();
+    for degrees in [0.0, 10.0, 45.0, 80.0, 90.0] {
+        let theta = f64::to_radians(degrees);
+        let w_i = incident(theta, n, t);
+        let expected = incident(theta, -n, t); // mirror image: normal component flipped
+        for normal in [n, -n] {
+            let w_o = reflect(w_i, normal);
+            assert!((w_o - expected).length() < 4.0 * EPS, "{degrees}: {w_o:?}");
+        }
+    }
+}
+
+/// Snell's law on constructed angles, both ways through glass: n1 sin t1 = n2 sin t2.
+#[test]
+fn snell_law_on_constructed_angles() {
+    let (n, t) = frame();
+    for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.33, 2.4)] {
+        for degrees in [0.0, 15.0, 30.0, 41.0, 60.0, 89.0] {
+            let theta = f64::to_radians(degrees);
+            let w_i = incident(theta, n, t);
+            let sin_t = n1 * theta.sin() / n2;
+            let result = refract(w_i, n, n1, n2);
+            if sin_t > 1.0 {
+                assert_eq!(result, Refraction::TotalInternalReflection);
+                continue;
+            }
+            // The expected direction, built from the angle asin(sin_t) on the far side.
+            let expected = -(1.0 - sin_t * sin_t).sqrt() * n + sin_t * t;
+            let w_t = transmitted(result);
+            assert!(
+                (w_t - expected).length() < 8.0 * EPS,
+                "{n1}->{n2} {degrees}"
+            );
+        }
+    }
+}
+
+/// The critical angle of glass (1.5) to air: asin(1/1.5) = 41.81°. Just below it the ray
+/// is transmitted, nearly grazing; just above it is totally reflected.
+#[test]
+fn critical_angle_of_glass_is_41_81_degrees() {
+    let theta_c = critical_angle(1.5, 1.0).unwrap();
+    assert!((theta_c.to_degrees() - 41.81).abs() < 0.005);
+    assert_eq!(critical_angle(1.0, 1.5), None);
+    let (n, t) = frame();
+    let below = refract(incident(theta_c - 1e-9, n, t), n, 1.5, 1.0);
+    let w_t = transmitted(below);
+    assert!(w_t.dot(n) > -1e-3 && w_t.dot(n) < 0.0, "{w_t:?}"); // nearly grazing
+    let above = refract(incident(theta_c + 1e-9, n, t), n, 1.5, 1.0);
+    assert_eq!(above, Refraction::TotalInternalReflection);
+    // At the critical angle itself either answer is right, but never a NaN.
+    if let Refraction::Transmitted(w) = refract(incident(theta_c, n, t), n, 1.5, 1.0) {
+        assert!(w.is_finite() && (w.length() - 1.0).abs() < 1e-15);
+    }
+}
+
+/// Grazing incidence: into the denser medium the ray bends to the critical angle; out of
+/// it, it is totally reflected; with matched indices it goes straight on.
+#[test]
+fn grazing_incidence() {
+    let (n, t) = frame();
+    let w_i = t; // exactly along the surface
+    let w_t = transmitted(refract(w_i, n, 1.0, 1.5));
+    let sin_t = w_t.cross(n).length();
+    assert!((sin_t - 1.0 / 1.5).abs() < 4.0 * EPS);
+    assert!(w_t.dot(n) < 0.0);
+    assert_eq!(
+        refract(w_i, n, 1.5, 1.0),
+        Refraction::TotalInternalReflection
+    );
+    assert!((transmitted(refract(w_i, n, 1.2, 1.2)) - w_i).length() < 4.0 * EPS);
+    assert!((reflect(w_i, n) - w_i).length() < 4.0 * EPS);
+}
+
+/// Normal incidence goes straight through, whatever the indices.
+#[test]
+fn normal_incidence_goes_straight_through() {
+    let (n, _) = frame();
+    for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (2.4, 1.0)] {
+        for normal in [n, -n] {
+            let w_t = transmitted(refract(-n, normal, n1, n2));
+            assert!((w_t + n).length() < 8.0 * EPS);
+        }
+    }
+}
+
+/// The normal on either side gives the same answer, bit for bit up to rounding.
+#[test]
+fn either_side_normal_gives_the_same_answer() {
+    let (n, t) = frame();
+    for degrees in [5.0, 35.0, 50.0, 80.0] {
+        let w_i = incident(f64::to_radians(degrees), n, t);
+        for (n1, n2) in [(1.0, 1.5), (1.5, 1.0)] {
+            assert_eq!(refract(w_i, n, n1, n2), refract(w_i, -n, n1, n2));
+        }
+        assert_eq!(reflect(w_i, n), reflect(w_i, -n));
+    }
+}
+
+/// Reversibility: refracting back along -w_t recovers -w_i.
+#[test]
+fn refraction_is_reversible() {
+    let (n, t) = frame();
+    for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.0, 2.4)] {
+        for degrees in [0.0, 20.0, 40.0, 70.0] {
+            let w_i = incident(f64::to_radians(degrees), n, t);
+            let Refraction::Transmitted(w_t) = refract(w_i, n, n1, n2) else {
+                continue;
+            };
+            let back = transmitted(refract(-w_t, n, n2, n1));
+            assert!((back + w_i).length() < 16.0 * EPS, "{n1}->{n2} {degrees}");
+        }
+    }
+}
+
+/// Refraction never returns NaN, even for every angle around the critical one.
+#[test]
+fn no_nan_across_the_critical_angle() {
+    let (n, t) = frame();
+    let theta_c = critical_angle(1.5, 1.0).unwrap();
+    for k in -1000..=1000 {
+        let theta = theta_c + f64::from(k) * 1e-15;
+        match refract(incident(theta, n, t), n, 1.5, 1.0) {
+            Refraction::Transmitted(w) => assert!(w.is_finite() && theta <= theta_c + 1e-13),
+            Refraction::TotalInternalReflection => assert!(theta >= theta_c - 1e-13),
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Properties over random inputs (quickcheck, fixed seeds).
+
+/// A random unit direction and normal, from three integers each.
+#[derive(Clone, Debug)]
+struct Dirs {
+    w_i: DVec3,
+    n: DVec3,
+    pair: usize,
+}
+
+fn unit(g: &mut Gen) -> DVec3 {
+    loop {
+        let mut c = || f64::from(i32::arbitrary(g) % 10_000) / 10_000.0;
+        let v = DVec3::new(c(), c(), c());
+        if v.length() > 1e-3 {
+            return v.normalize();
+        }
+    }
+}
+
+impl Arbitrary for Dirs {
+    fn arbitrary(g: &mut Gen) -> Self {
+        let n = unit(g);
+        let mut w_i = unit(g);
+        if bool::arbitrary(g) && w_i.dot(n) > 0.0 {
+            w_i = -w_i; // half of the cases with the normal facing the light
+        }
+        Dirs {
+            w_i,
+            n,
+            pair: usize::arbitrary(g) % check::INDEX_PAIRS.len(),
+        }
+    }
+}
+
+fn quickcheck(seed: u64) -> QuickCheck {
+    QuickCheck::new()
+        .rng(Gen::from_size_and_seed(100, seed))
+        .tests(5_000)
+        .max_tests(50_000)
+}
+
+fn prop_reflection(d: Dirs) -> bool {
+    let w_o = reflect(d.w_i, d.n);
+    let coplanar = d.w_i.cross(d.n).dot(w_o).abs() <= 8.0 * EPS;
+    let angles = (w_o.dot(d.n) + d.w_i.dot(d.n)).abs() <= 8.0 * EPS;
+    let length = (w_o.length() - 1.0).abs() <= 8.0 * EPS;
+    coplanar && angles && length
+}
+
+#[test]
+fn quickcheck_reflection() {
+    quickcheck(11).quickcheck(prop_reflection as fn(Dirs) -> bool);
+}
+
+fn prop_refraction(d: Dirs) -> TestResult {
+    let (n1, n2) = check::INDEX_PAIRS[d.pair];
+    let cos_i = d.w_i.dot(d.n).abs();
+    let sin_i = d.w_i.cross(d.n).length();
+    if (n1 / n2 * sin_i - 1.0).abs() < 1e-9 || cos_i < 1e-6 {
+        return TestResult::discard();
+    }
+    match refract(d.w_i, d.n, n1, n2) {
+        Refraction::TotalInternalReflection => TestResult::from_bool(n1 / n2 * sin_i > 1.0),
+        Refraction::Transmitted(w_t) => {
+            let sin_t = w_t.cross(d.n).length();
+            let snell = (n1 * sin_i - n2 * sin_t).abs() <= 8.0 * EPS * n1.max(n2);
+            let length = (w_t.length() - 1.0).abs() <= 8.0 * EPS;
+            let through = w_t.dot(d.n) * d.w_i.dot(d.n) > 0.0;
+            let back = refract(-w_t, d.n, n2, n1)
+                .transmitted()
+                .is_some_and(|b| (b + d.w_i).length() * cos_i <= 16.0 * EPS);
+            TestResult::from_bool(snell && length && through && back)
+        }
+    }
+}
+
+#[test]
+fn quickcheck_refraction() {
+    quickcheck(12).quickcheck(prop_refraction as fn(Dirs) -> TestResult);
+}

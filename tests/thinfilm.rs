@@ -1,0 +1,729 @@
+//! Tests of the chapter *Thin-film interference* (`chapters/optics/thinfilm.md`).
+//!
+//! The reference is a transfer-matrix computation written here, independently of the
+//! library: Macleod's characteristic matrix of a film (*Thin-Film Optical Filters*, ch. 2)
+//! with tilted admittances, in Macleod's own conventions (time dependence `exp(+iωt)`,
+//! evanescent cosines `−i·sqrt(sin²θ − 1)`, `r_p` with the opposite sign to Born & Wolf's).
+//! The library uses the Airy sum in Born & Wolf's conventions; only the measurable powers
+//! R and T must agree. Planted bugs (and the seed's formula) must be rejected.
+//! Everything is deterministic (fixed seeds); no statistics are involved.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use num_complex::Complex64;
+use raylemma::optics::thinfilm::{
+    Film, airy_r, cos_theta, incoherent_reflectance, interface, phase, quarter_wave_reflectance,
+    seed_reflectance,
+};
+use raylemma::rng;
+
+// ---------------------------------------------------------------------------------------
+// The independent reference: Macleod's characteristic matrix.
+
+/// `cos θ` in Macleod's convention: real, or `−i·sqrt(sin²θ − 1)` (fourth quadrant).
+fn macleod_cos(n_sin: f64, n: f64) -> Complex64 {
+    let s2 = (n_sin / n).powi(2);
+    if s2 <= 1.0 {
+        Complex64::new((1.0 - s2).sqrt(), 0.0)
+    } else {
+        Complex64::new(0.0, -(s2 - 1.0).sqrt())
+    }
+}
+
+/// `(cos δ, sin δ / δ)` times `e^{−|Im δ|}`, and `|Im δ|`: the matrix of a thick
+/// evanescent layer overflows otherwise. `sin δ / δ` is taken by its series near 0, so
+/// that a film exactly at its critical angle (`δ = 0`) needs no special case.
+fn scaled_cos_sinc(delta: Complex64) -> (Complex64, Complex64, f64) {
+    let y = delta.im.abs();
+    let e = (-2.0 * y).exp();
+    let (sx, cx) = delta.re.sin_cos();
+    let (cosh, sinh) = (0.5 * (1.0 + e), 0.5 * (1.0 - e) * delta.im.signum());
+    let cos = Complex64::new(cx * cosh, -sx * sinh);
+    let sin = Complex64::new(sx * cosh, cx * sinh);
+    let sinc = if delta.norm() < 1e-6 {
+        (1.0 - delta * delta / 6.0) * (-y).exp()
+    } else {
+        sin / delta
+    };
+    (cos, sinc, y)
+}
+
+/// `(R_s, R_p, T_s, T_p)` by the transfer matrix.
+fn tmm(film: &Film, wavelength_nm: f64, theta1: f64) -> [f64; 4] {
+    let (n1, n2, n3, d) = (film.n1, film.n2, film.n3, film.thickness_nm);
+    let n_sin = n1 * theta1.sin();
+    let c1 = Complex64::new(theta1.cos(), 0.0);
+    let c2 = macleod_cos(n_sin, n2);
+    let c3 = macleod_cos(n_sin, n3);
+    let k = 2.0 * PI / wavelength_nm;
+    let delta = c2 * (k * n2 * d);
+    let (cos, sinc, y) = scaled_cos_sinc(delta);
+    let i = Complex64::i();
+    let mut out = [0.0; 4];
+    for pol in 0..2 {
+        // Tilted admittances (in units of the free-space admittance): n cos θ (s), n / cos θ (p).
+        // The film's matrix entries i sin δ / η2 and i η2 sin δ, written with sin δ = δ·sinc
+        // so that no cosine is divided by.
+        let (eta1, eta3, m12, m21) = if pol == 0 {
+            (
+                c1 * n1,
+                c3 * n3,
+                i * k * d * sinc,
+                i * k * d * (c2 * n2) * (c2 * n2) * sinc,
+            )
+        } else {
+            (
+                n1 / c1,
+                n3 / c3,
+                i * k * d * c2 * c2 * sinc,
+                i * k * n2 * n2 * d * sinc,
+            )
+        };
+        // [B, C] = M [1, η3] (scaled by e^{−|Im δ|}).
+        let b = cos + m12 * eta3;
+        let c = m21 + cos * eta3;
+        let den = eta1 * b + c;
+        let r = (eta1 * b - c) / den;
+        out[pol] = r.norm_sqr();
+        out[pol + 2] = 4.0 * eta1.re * eta3.re * (-2.0 * y).exp() / den.norm_sqr();
+    }
+    out
+}
+
+/// The bare interface `n1 | n3`, from the Fresnel equations written out here (the test's
+/// own, in Macleod's admittance form).
+fn bare(n1: f64, n3: f64, theta1: f64) -> [f64; 2] {
+    let n_sin = n1 * theta1.sin();
+    let c1 = Complex64::new(theta1.cos(), 0.0);
+    let c3 = macleod_cos(n_sin, n3);
+    let rs = (c1 * n1 - c3 * n3) / (c1 * n1 + c3 * n3);
+    let rp = (n1 / c1 - n3 / c3) / (n1 / c1 + n3 / c3);
+    [rs.norm_sqr(), rp.norm_sqr()]
+}
+
+fn library(film: &Film, wavelength_nm: f64, theta1: f64) -> [f64; 4] {
+    let r = film.response(wavelength_nm, theta1);
+    [
+        r.reflectance_s,
+        r.reflectance_p,
+        r.transmittance_s,
+        r.transmittance_p,
+    ]
+}
+
+// ---------------------------------------------------------------------------------------
+// The sweep: random films over the whole domain, including the awkward corners.
+
+#[derive(Clone, Copy, Debug)]
+struct Case {
+    film: Film,
+    wavelength_nm: f64,
+    theta1: f64,
+}
+
+/// `count` random cases: indices 1–2.5 in every order (so films and substrates both
+/// denser and rarer than the ambient, total internal reflection at either interface and
+/// evanescent films), one in ten with two equal indices, thicknesses 0 or 0.01 nm to
+/// 100 µm, wavelengths 360–830 nm, angles 0 to exactly 90°.
+fn sweep(count: usize, seed: u64) -> Vec<Case> {
+    let mut g = rng::seeded(seed);
+    (0..count)
+        .map(|_| {
+            let mut n = [0.0; 3];
+            for x in &mut n {
+                *x = rng::uniform(&mut g, 1.0, 2.5);
+            }
+            match (rng::uniform(&mut g, 0.0, 1.0) * 30.0) as u32 {
+                0 => n[1] = n[0],
+                1 => n[2] = n[1],
+                2 => n[2] = n[0],
+                _ => {}
+            }
+            let thickness_nm = if rng::uniform(&mut g, 0.0, 1.0) < 0.1 {
+                0.0
+            } else {
+                rng::log_uniform(&mut g, 1e-2, 1e5)
+            };
+            let u = rng::uniform(&mut g, 0.0, 1.0);
+            let theta1 = if u < 0.03 {
+                0.0
+            } else if u < 0.06 {
+                FRAC_PI_2
+            } else {
+                rng::uniform(&mut g, 0.0, FRAC_PI_2)
+            };
+            Case {
+                film: Film::new(n[0], n[1], n[2], thickness_nm),
+                wavelength_nm: rng::uniform(&mut g, 360.0, 830.0),
+                theta1,
+            }
+        })
+        .collect()
+}
+
+/// The worst disagreement of `f` (unpolarised reflectance) with the transfer matrix over
+/// `cases`, and the case where it occurs. NaN counts as infinitely wrong.
+fn worst_unpolarised(cases: &[Case], f: impl Fn(&Case) -> f64) -> (f64, Option<Case>) {
+    let mut worst = (0.0, None);
+    for case in cases {
+        let [rs, rp, ..] = tmm(&case.film, case.wavelength_nm, case.theta1);
+        let got = f(case);
+        let err = if got.is_finite() {
+            (got - 0.5 * (rs + rp)).abs()
+        } else {
+            f64::INFINITY
+        };
+        if err > worst.0 {
+            worst = (err, Some(*case));
+        }
+    }
+    worst
+}
+
+const SWEEP_SEED: u64 = 0x7f11;
+const SWEEP_CASES: usize = 20_000;
+
+// ANCHOR: tmm_test
+/// The Airy sum agrees with the transfer matrix to 1e-12 in R_s, R_p, T_s and T_p over
+/// 20 000 random films: every order of indices, total internal reflection at either
+/// interface, evanescent films, thicknesses from 0 to 100 µm, angles up to exactly 90°.
+#[test]
+fn airy_sum_agrees_with_the_transfer_matrix() {
+    let cases = sweep(SWEEP_CASES, SWEEP_SEED);
+    let mut worst = (0.0f64, String::new());
+    for case in &cases {
+        let want = tmm(&case.film, case.wavelength_nm, case.theta1);
+        let got = library(&case.film, case.wavelength_nm, case.theta1);
+        for (k, name) in ["R_s", "R_p", "T_s", "T_p"].iter().enumerate() {
+            let err = (got[k] - want[k]).abs();
+            if !(err <= worst.0) && !worst.0.is_nan() {
+                worst = (
+                    err,
+                    format!("{name}: {} vs {} for {case:?}", got[k], want[k]),
+                );
+            }
+        }
+    }
+    assert!(worst.0 <= 1e-12, "worst error {:e}: {}", worst.0, worst.1);
+}
+// ANCHOR_END: tmm_test
+
+// ---------------------------------------------------------------------------------------
+// Limits that must reduce to a single interface.
+
+/// Angles 0..90° and index pairs including total internal reflection (n1 > n3).
+fn interface_cases() -> impl Iterator<Item = (f64, f64, f64)> {
+    let pairs = [
+        (1.0, 1.33),
+        (1.0, 1.5),
+        (1.33, 1.5),
+        (1.5, 1.0),
+        (1.52, 1.33),
+        (2.4, 1.0),
+    ];
+    pairs
+        .into_iter()
+        .flat_map(|(n1, n3)| (0..=90).map(move |a| (n1, n3, FRAC_PI_2 * f64::from(a) / 90.0)))
+}
+
+#[track_caller]
+fn assert_bare(film: Film, n1: f64, n3: f64, theta1: f64, tol: f64) {
+    let r = film.response(550.0, theta1);
+    let [bs, bp] = bare(n1, n3, theta1);
+    assert!(
+        (r.reflectance_s - bs).abs() <= tol && (r.reflectance_p - bp).abs() <= tol,
+        "{film:?} at {theta1}: ({}, {}) vs bare ({bs}, {bp})",
+        r.reflectance_s,
+        r.reflectance_p
+    );
+}
+
+/// d = 0: the film vanishes, leaving the bare n1 | n3 interface, for any film index.
+#[test]
+fn zero_thickness_is_the_bare_interface() {
+    for (n1, n3, t) in interface_cases() {
+        for n2 in [1.2, 1.38, 2.0, 3.0] {
+            assert_bare(Film::new(n1, n2, n3, 0.0), n1, n3, t, 1e-14);
+        }
+    }
+}
+
+/// n2 = n1: the film is part of the ambient and only its far interface (n1 | n3) remains,
+/// at any thickness; n2 = n3: it is part of the substrate and only the near one remains.
+#[test]
+fn film_matching_either_neighbour_leaves_one_interface() {
+    for (n1, n3, t) in interface_cases() {
+        for d in [10.0, 123.4, 5000.0] {
+            assert_bare(Film::new(n1, n1, n3, d), n1, n3, t, 1e-14);
+            assert_bare(Film::new(n1, n3, n3, d), n1, n3, t, 1e-14);
+        }
+    }
+}
+
+/// A half-wave film (2δ = 2π, so e^{2iδ} = 1) is absent at its own wavelength and angle:
+/// r = (r12 + r23)/(1 + r12 r23) = r13, for any film index.
+#[test]
+fn half_wave_film_is_absent() {
+    for (n1, n3, t) in interface_cases() {
+        for n2 in [1.8, 2.4, 3.0] {
+            // Films denser than the ambient, so cos θ2 is real.
+            let c2 = cos_theta(n1 * t.sin(), n2).re;
+            let d = 550.0 / (2.0 * n2 * c2);
+            assert_bare(Film::new(n1, n2, n3, d), n1, n3, t, 1e-12);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Energy, range, the soap film, thin and thick films, grazing and total reflection.
+
+/// R in [0, 1] and R + T = 1 (lossless media) for each polarisation, to 1e-12, over the
+/// random sweep.
+#[test]
+fn energy_is_conserved_and_reflectance_is_in_range() {
+    for case in sweep(SWEEP_CASES, SWEEP_SEED + 1) {
+        let r = case.film.response(case.wavelength_nm, case.theta1);
+        for (rr, tt) in [
+            (r.reflectance_s, r.transmittance_s),
+            (r.reflectance_p, r.transmittance_p),
+        ] {
+            assert!(
+                (0.0..=1.0 + 1e-12).contains(&rr) && tt >= -1e-12 && (rr + tt - 1.0).abs() <= 1e-12,
+                "R = {rr}, T = {tt} for {case:?}"
+            );
+        }
+    }
+}
+
+// ANCHOR: soap_test
+/// A quarter-wave film at normal incidence (n2 d = λ/4, e^{2iδ} = −1) reflects
+/// ((n1 n3 − n2²)/(n1 n3 + n2²))²: for a soap film (n2 = 1.33) in air, ((1 − n2²)/(1 + n2²))²
+/// = 0.0771. For a film denser than both neighbours (n2² > n1 n3) that is the largest R over
+/// all thicknesses; for an anti-reflection coating (MgF2, 1.38, on glass, 1.52:
+/// n2² < n1 n3) the smallest, 0.0126.
+#[test]
+fn quarter_wave_soap_film_reflects_most() {
+    let lambda = 550.0;
+    let soap = quarter_wave_reflectance(1.0, 1.33, 1.0);
+    assert!((soap - 0.0771).abs() < 5e-5, "{soap}");
+    let coating = quarter_wave_reflectance(1.0, 1.38, 1.52);
+    assert!((coating - 0.0126).abs() < 5e-5, "{coating}");
+    for (n1, n2, n3) in [
+        (1.0, 1.33, 1.0),
+        (1.0, 1.5, 1.33),
+        (1.0, 1.38, 1.52),
+        (1.33, 2.0, 1.5),
+    ] {
+        let quarter = lambda / (4.0 * n2);
+        let r = Film::new(n1, n2, n3, quarter).reflectance(lambda, 0.0);
+        let want = quarter_wave_reflectance(n1, n2, n3);
+        assert!((r - want).abs() <= 1e-14, "{n1}/{n2}/{n3}: {r} vs {want}");
+        // Over one period of thickness (0 to λ/(2 n2)) the quarter wave is the extreme.
+        let mut others = (0..=400).map(|k| {
+            Film::new(n1, n2, n3, 2.0 * quarter * f64::from(k) / 400.0).reflectance(lambda, 0.0)
+        });
+        if n2 * n2 > n1 * n3 {
+            assert!(others.all(|x| x <= r + 1e-15));
+        } else {
+            assert!(others.all(|x| x >= r - 1e-15));
+        }
+    }
+}
+// ANCHOR_END: soap_test
+
+/// A film much thinner than the wavelength barely changes the interface, and only to
+/// second order: with real cosines the first-order change of r is in quadrature with r, so
+/// R(d) − R(0) ∝ d² (doubling d quadruples the change; |R(1e-6 nm) − R(0)| < 1e-9).
+#[test]
+fn very_thin_films_tend_to_the_bare_interface() {
+    for (n1, n2, n3) in [(1.0, 1.33, 1.0), (1.0, 1.5, 1.33), (1.52, 1.38, 1.0)] {
+        for t in [0.0, 0.5] {
+            let r0 = Film::new(n1, n2, n3, 0.0).reflectance(550.0, t);
+            let r = |d: f64| Film::new(n1, n2, n3, d).reflectance(550.0, t);
+            assert!((r(1e-6) - r0).abs() < 1e-9);
+            let (a, b) = (r(2.0) - r0, r(1.0) - r0);
+            assert!(a.abs() < 1e-2 && (a / b - 4.0).abs() <= 1e-2, "{a} {b}");
+        }
+    }
+}
+
+/// A thick film's fringes, averaged over one period of the phase, leave the incoherent
+/// sum of the multiple reflections, (R12 + R23 − 2 R12 R23)/(1 − R12 R23), per polarisation:
+/// 100 µm of oil on water at 30°, sampled at 64 points per fringe over ten fringes (uniform
+/// in 1/λ, where the phase is uniform), agrees to 1e-9.
+#[test]
+fn thick_film_fringes_average_to_the_incoherent_sum() {
+    let film = Film::new(1.0, 1.5, 1.33, 1e5);
+    let theta1 = 30f64.to_radians();
+    let c2 = cos_theta(theta1.sin(), 1.5).re;
+    // 2δ = 4π n2 d c2 / λ advances by 2π when 1/λ advances by 1/(2 n2 d c2).
+    let step = 1.0 / (2.0 * 1.5 * 1e5 * c2) / 64.0;
+    let (mut s, mut p) = (0.0, 0.0);
+    let count = 640;
+    for k in 0..count {
+        let lambda = 1.0 / (1.0 / 550.0 + step * f64::from(k));
+        let r = film.response(lambda, theta1);
+        s += r.reflectance_s / f64::from(count);
+        p += r.reflectance_p / f64::from(count);
+    }
+    let [r12s, r12p] = bare(1.0, 1.5, theta1);
+    let theta2 = (theta1.sin() / 1.5).asin();
+    let [r23s, r23p] = bare(1.5, 1.33, theta2);
+    let want_s = incoherent_reflectance(r12s, r23s);
+    let want_p = incoherent_reflectance(r12p, r23p);
+    assert!((s - want_s).abs() < 1e-9, "{s} vs {want_s}");
+    assert!((p - want_p).abs() < 1e-9, "{p} vs {want_p}");
+}
+
+/// Grazing incidence reflects everything: R = 1 and T = 0 at exactly 90°, and R → 1
+/// continuously as the angle approaches it.
+#[test]
+fn grazing_incidence_reflects_everything() {
+    for (n1, n2, n3) in [
+        (1.0, 1.33, 1.0),
+        (1.0, 1.5, 1.33),
+        (1.52, 1.38, 1.0),
+        (1.0, 1.0, 1.5),
+    ] {
+        let film = Film::new(n1, n2, n3, 300.0);
+        let r = film.response(550.0, FRAC_PI_2);
+        assert!((r.reflectance() - 1.0).abs() <= 1e-12 && r.transmittance().abs() <= 1e-12);
+        let mut previous = 0.0;
+        for k in 1..=6 {
+            let near = film.reflectance(550.0, FRAC_PI_2 - 10f64.powi(-k));
+            assert!(near > previous && near < 1.0 + 1e-12, "{near}");
+            previous = near;
+        }
+        assert!(previous > 1.0 - 1e-4, "{previous}");
+    }
+}
+
+/// Seen from inside glass (1.52) through an MgF2 film (1.38) into air, every angle beyond
+/// the glass–air critical angle (41.1°) is totally reflected: R = 1, T = 0, with no NaN,
+/// although the wave in the air (and, beyond 65.2°, in the film too) is evanescent.
+#[test]
+fn total_internal_reflection_through_a_film() {
+    let film = Film::new(1.52, 1.38, 1.0, 100.0);
+    let critical = (1.0f64 / 1.52).asin();
+    assert!((critical.to_degrees() - 41.14).abs() < 0.01);
+    for k in 0..=200 {
+        let t = critical + (FRAC_PI_2 - critical) * f64::from(k) / 200.0 + 1e-12;
+        let t = t.min(FRAC_PI_2);
+        let r = film.response(550.0, t);
+        assert!(
+            (r.reflectance_s - 1.0).abs() <= 1e-12 && (r.reflectance_p - 1.0).abs() <= 1e-12,
+            "{t}: {r:?}"
+        );
+        assert!(r.transmittance() == 0.0, "{t}: {r:?}");
+    }
+}
+
+/// Frustrated total internal reflection: an air gap (n2 = 1) between two glass blocks
+/// (1.5) at 60°, beyond the critical angle. Light tunnels through a thin gap, T falls by
+/// e^{−2 k κ Δd} for each added Δd of thickness (κ = n2 |cos θ2|), and the sum stays 1.
+#[test]
+fn frustrated_total_internal_reflection_tunnels_and_decays() {
+    let theta1 = 60f64.to_radians();
+    let kappa = cos_theta(1.5 * theta1.sin(), 1.0).im;
+    assert!(kappa > 0.0);
+    let k = 2.0 * PI / 550.0;
+    let t = |d: f64| Film::new(1.5, 1.0, 1.5, d).response(550.0, theta1);
+    assert!(t(10.0).transmittance() > 0.5);
+    for d in [600.0, 1200.0, 2400.0] {
+        let ratio = t(d + 50.0).transmittance_s / t(d).transmittance_s;
+        let want = (-2.0 * k * kappa * 50.0).exp();
+        assert!((ratio / want - 1.0).abs() < 1e-3, "{ratio} vs {want}");
+        let r = t(d);
+        assert!((r.reflectance() + r.transmittance() - 1.0).abs() <= 1e-12);
+    }
+}
+
+/// The film exactly at its critical angle (n1 sin θ1 = n2, cos θ2 = 0) makes the Airy sum
+/// 0/0; the library takes the limit. It agrees with the transfer matrix (which needs no
+/// special case) to 1e-12 and conserves energy.
+#[test]
+fn film_exactly_at_its_critical_angle() {
+    let (n1, n2, n3): (f64, f64, f64) = (2.0, 1.0, 1.5);
+    // Walk to the angle whose sine, times n1, is exactly n2 in floating point.
+    let mut t = (n2 / n1).asin();
+    let mut steps = 0;
+    while n1 * t.sin() != n2 {
+        t = if n1 * t.sin() < n2 {
+            t.next_up()
+        } else {
+            t.next_down()
+        };
+        steps += 1;
+        assert!(steps < 100, "no exact angle found");
+    }
+    assert_eq!(cos_theta(n1 * t.sin(), n2).norm_sqr(), 0.0);
+    for d in [0.0, 1.0, 100.0, 5000.0] {
+        let film = Film::new(n1, n2, n3, d);
+        let got = library(&film, 550.0, t);
+        let want = tmm(&film, 550.0, t);
+        for k in 0..4 {
+            assert!(
+                got[k].is_finite() && (got[k] - want[k]).abs() <= 1e-12,
+                "d = {d}: {got:?} vs {want:?}"
+            );
+        }
+        assert!((got[0] + got[2] - 1.0).abs() <= 1e-12 && (got[1] + got[3] - 1.0).abs() <= 1e-12);
+    }
+}
+
+/// Near the film's critical angle (|cos θ2| → 0) the Airy sum subtracts nearly equal
+/// numbers, r12 ≈ 1 and r23 ≈ −1: its error grows like ε/|cos θ2|. Measured here at
+/// |cos θ2| = 1e-6: worse than elsewhere, still within 1e-9 of the transfer matrix.
+#[test]
+fn airy_sum_loses_digits_only_near_the_films_critical_angle() {
+    let (n1, n2, n3): (f64, f64, f64) = (2.0, 1.0, 1.5);
+    let mut worst: f64 = 0.0;
+    for c2 in [1e-6f64, -1e-6] {
+        // n1 sin θ1 = n2 sqrt(1 − c2²) (c2 > 0) or n2 sqrt(1 + c2²) (evanescent, c2 < 0).
+        let s1 = n2 * (1.0 - c2 * c2.abs()).sqrt() / n1;
+        let t = s1.asin();
+        for d in [50.0, 500.0] {
+            let film = Film::new(n1, n2, n3, d);
+            let (got, want) = (library(&film, 550.0, t), tmm(&film, 550.0, t));
+            for k in 0..4 {
+                worst = worst.max((got[k] - want[k]).abs());
+            }
+        }
+    }
+    assert!(worst <= 1e-9, "{worst}");
+}
+
+/// No NaN, R and T in [0, 1], R + T = 1 on a grid over the whole domain: indices 1, 1.33,
+/// 1.5, 2.4 in every combination, thicknesses 0 to 100 µm, the ends of the render range,
+/// and angles 0 to exactly 90° plus each exact critical angle.
+#[test]
+fn no_nan_anywhere_in_the_domain() {
+    let indices = [1.0f64, 1.33, 1.5, 2.4];
+    let mut count = 0;
+    for &n1 in &indices {
+        for &n2 in &indices {
+            for &n3 in &indices {
+                let mut angles: Vec<f64> =
+                    (0..=90).map(|a| FRAC_PI_2 * f64::from(a) / 90.0).collect();
+                for n in [n2, n3] {
+                    if n < n1 {
+                        angles.push((n / n1).asin());
+                    }
+                }
+                for d in [0.0, 1e-3, 1.0, 100.0, 1e3, 1e5] {
+                    for lambda in [360.0, 550.0, 830.0] {
+                        for &t in &angles {
+                            let r = Film::new(n1, n2, n3, d).response(lambda, t);
+                            for (rr, tt) in [
+                                (r.reflectance_s, r.transmittance_s),
+                                (r.reflectance_p, r.transmittance_p),
+                            ] {
+                                assert!(
+                                    rr.is_finite()
+                                        && tt.is_finite()
+                                        && (-1e-12..=1.0 + 1e-12).contains(&rr)
+                                        && (-1e-12..=1.0 + 1e-12).contains(&tt)
+                                        && (rr + tt - 1.0).abs() <= 1e-10,
+                                    "{n1}/{n2}/{n3}, d {d}, λ {lambda}, θ {t}: {r:?}"
+                                );
+                            }
+                            count += 1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(count > 100_000);
+}
+
+// ---------------------------------------------------------------------------------------
+// Planted bugs: each must disagree with the transfer matrix.
+
+/// A reflectance built from the library's pieces, with one piece swapped.
+fn assembled(
+    case: &Case,
+    phase_of: impl Fn(f64, f64, Complex64, f64) -> Complex64,
+    flip_r12_p: bool,
+) -> f64 {
+    let Film { n1, n2, n3, .. } = case.film;
+    let n_sin = n1 * case.theta1.sin();
+    let c1 = Complex64::new(case.theta1.cos(), 0.0);
+    let (c2, c3) = (cos_theta(n_sin, n2), cos_theta(n_sin, n3));
+    let (i12, i23) = (interface(n1, c1, n2, c2), interface(n2, c2, n3, c3));
+    let delta = phase_of(n2, case.film.thickness_nm, c2, case.wavelength_nm);
+    let r12_p = if flip_r12_p { -i12.r_p } else { i12.r_p };
+    let rs = airy_r(i12.r_s, i23.r_s, delta).norm_sqr();
+    let rp = airy_r(r12_p, i23.r_p, delta).norm_sqr();
+    0.5 * (rs + rp)
+}
+
+#[test]
+fn assembling_the_pieces_reproduces_the_library() {
+    let cases = sweep(2_000, SWEEP_SEED);
+    let (worst, at) = worst_unpolarised(&cases, |c| assembled(c, phase, false));
+    assert!(worst <= 1e-12, "{worst} at {at:?}");
+}
+
+#[test]
+fn rejects_a_missing_factor_2_in_the_phase() {
+    // e^{iδ} for the round trip instead of e^{2iδ}.
+    let cases = sweep(2_000, SWEEP_SEED);
+    let (worst, _) = worst_unpolarised(&cases, |c| {
+        assembled(c, |n, d, c2, l| 0.5 * phase(n, d, c2, l), false)
+    });
+    assert!(worst > 0.05, "{worst}");
+}
+
+#[test]
+fn rejects_the_wrong_sign_of_r12_for_p() {
+    // Mixing the two sign conventions of r_p between the two interfaces.
+    let cases = sweep(2_000, SWEEP_SEED);
+    let (worst, _) = worst_unpolarised(&cases, |c| assembled(c, phase, true));
+    assert!(worst > 0.05, "{worst}");
+}
+
+#[test]
+fn rejects_a_missing_cos_theta2_in_the_phase() {
+    // δ = 2π n2 d / λ: right at normal incidence only.
+    let cases = sweep(2_000, SWEEP_SEED);
+    let (worst, _) = worst_unpolarised(&cases, |c| {
+        assembled(
+            c,
+            |n, d, _c2, l| phase(n, d, Complex64::new(1.0, 0.0), l),
+            false,
+        )
+    });
+    assert!(worst > 0.05, "{worst}");
+    // ...and at normal incidence it is right, which is why it survives casual testing.
+    let normal: Vec<Case> = cases.iter().map(|c| Case { theta1: 0.0, ..*c }).collect();
+    let (worst, _) = worst_unpolarised(&normal, |c| {
+        assembled(
+            c,
+            |n, d, _c2, l| phase(n, d, Complex64::new(1.0, 0.0), l),
+            false,
+        )
+    });
+    assert!(worst <= 1e-12, "{worst}");
+}
+
+#[test]
+fn rejects_the_wrong_branch_of_the_evanescent_cosine() {
+    // cos θ = −i sqrt(sin²θ − 1) in Born & Wolf's convention: a growing wave. A thick
+    // evanescent film then overflows e^{2iδ} to infinity and the sum to NaN.
+    let cases = sweep(2_000, SWEEP_SEED);
+    let wrong_branch = |n_sin: f64, n: f64| cos_theta(n_sin, n).conj();
+    let (worst, _) = worst_unpolarised(&cases, |c| {
+        let Film { n1, n2, n3, .. } = c.film;
+        let n_sin = n1 * c.theta1.sin();
+        let c1 = Complex64::new(c.theta1.cos(), 0.0);
+        let (c2, c3) = (wrong_branch(n_sin, n2), wrong_branch(n_sin, n3));
+        let (i12, i23) = (interface(n1, c1, n2, c2), interface(n2, c2, n3, c3));
+        let delta = phase(n2, c.film.thickness_nm, c2, c.wavelength_nm);
+        0.5 * (airy_r(i12.r_s, i23.r_s, delta).norm_sqr()
+            + airy_r(i12.r_p, i23.r_p, delta).norm_sqr())
+    });
+    assert!(worst > 0.05, "{worst}");
+}
+
+// ---------------------------------------------------------------------------------------
+// The seed's formula.
+
+/// The seed's denominator has −2 r12 r23 cos φ where the Airy sum gives +2 r12 r23 cos φ
+/// (|1 + r12 r23 e^{iφ}|² = 1 + r12² r23² + 2 r12 r23 cos φ). For the quarter-wave soap film
+/// at normal incidence it gives 0.0836 instead of 0.0771 (so R + T = 1.0065 > 1), and near
+/// grazing incidence it exceeds 1: 631 at 89°.
+#[test]
+fn seed_airy_denominator_has_the_wrong_sign() {
+    let soap = Film::new(1.0, 1.33, 1.0, 550.0 / (4.0 * 1.33));
+    let seed = seed_reflectance(&soap, 550.0, 0.0);
+    let right = soap.response(550.0, 0.0);
+    assert!((seed - 0.0836).abs() < 5e-5, "{seed}");
+    assert!((right.reflectance() - 0.0771).abs() < 5e-5);
+    assert!((seed + right.transmittance() - 1.0065).abs() < 5e-5);
+    let grazing = seed_reflectance(&soap, 550.0, 89f64.to_radians());
+    assert!((grazing - 631.0).abs() < 1.0, "{grazing}");
+    assert!(soap.reflectance(550.0, 89f64.to_radians()) <= 1.0);
+    // With the sign corrected (and the seed's other choices kept: s only, real cosines)
+    // the formula is the library's s reflectance wherever the cosines are real.
+    let fixed = |f: &Film, l: f64, t: f64| {
+        let (n1, n2, n3, d) = (f.n1, f.n2, f.n3, f.thickness_nm);
+        let c1 = t.cos();
+        let c2 = (1.0 - (n1 / n2 * t.sin()).powi(2)).sqrt();
+        let c3 = (1.0 - (n1 / n3 * t.sin()).powi(2)).sqrt();
+        let r12 = (n1 * c1 - n2 * c2) / (n1 * c1 + n2 * c2);
+        let r23 = (n2 * c2 - n3 * c3) / (n2 * c2 + n3 * c3);
+        let phi = 4.0 * PI * n2 * d * c2 / l;
+        (r12 * r12 + r23 * r23 + 2.0 * r12 * r23 * phi.cos())
+            / (1.0 + r12 * r12 * r23 * r23 + 2.0 * r12 * r23 * phi.cos())
+    };
+    for case in sweep(2_000, SWEEP_SEED) {
+        let f = case.film;
+        if f.n2 >= f.n1 && f.n3 >= f.n1 {
+            let want = f.response(case.wavelength_nm, case.theta1).reflectance_s;
+            let got = fixed(&f, case.wavelength_nm, case.theta1);
+            assert!((got - want).abs() <= 1e-12, "{got} vs {want} for {case:?}");
+        }
+    }
+}
+
+/// The seed's cosines are real, sqrt(1 − sin²θ): beyond a critical angle they are NaN, and
+/// so is its reflectance. Glass (1.52) | MgF2 (1.38) | air beyond 41.1°: every angle NaN,
+/// where the true reflectance is 1.
+#[test]
+fn seed_real_cosines_give_nan_beyond_the_critical_angle() {
+    let film = Film::new(1.52, 1.38, 1.0, 100.0);
+    for a in [42, 50, 60, 70, 80, 89] {
+        let t = f64::from(a).to_radians();
+        assert!(seed_reflectance(&film, 550.0, t).is_nan(), "{a}°");
+        assert!((film.reflectance(550.0, t) - 1.0).abs() <= 1e-12);
+    }
+    let cases = sweep(2_000, SWEEP_SEED);
+    let (worst, _) = worst_unpolarised(&cases, |c| {
+        seed_reflectance(&c.film, c.wavelength_nm, c.theta1)
+    });
+    assert!(worst.is_infinite());
+}
+
+/// The seed uses the s-polarised coefficients for all light. Unpolarised light is the mean
+/// of s and p, and they differ away from normal incidence: for the 300 nm soap film at
+/// 550 nm and 60°, R_s = 0.2186 and R_p = 0.0006, so the seed's choice (even with its sign
+/// fixed) reports 0.2186 where unpolarised light sees 0.1096.
+#[test]
+fn seed_uses_s_polarisation_for_unpolarised_light() {
+    let soap = Film::new(1.0, 1.33, 1.0, 300.0);
+    let r = soap.response(550.0, 60f64.to_radians());
+    assert!(
+        (r.reflectance_s - 0.2186).abs() < 5e-5,
+        "{}",
+        r.reflectance_s
+    );
+    assert!(
+        (r.reflectance_p - 0.0006).abs() < 5e-5,
+        "{}",
+        r.reflectance_p
+    );
+    assert!(
+        (r.reflectance() - 0.1096).abs() < 5e-5,
+        "{}",
+        r.reflectance()
+    );
+    // At normal incidence s and p agree, so the seed's choice is harmless there.
+    let r0 = soap.response(550.0, 0.0);
+    assert!((r0.reflectance_s - r0.reflectance_p).abs() <= 1e-15);
+}
+
+/// Sanity of the building blocks' conventions (Born & Wolf): r_p = −r_s at normal
+/// incidence; r_p = 0 at Brewster's angle; the evanescent cosine has Im > 0.
+#[test]
+fn building_block_conventions() {
+    let one = Complex64::new(1.0, 0.0);
+    let i = interface(1.0, one, 1.5, one);
+    assert!((i.r_s + i.r_p).norm() <= 1e-15 && (i.r_s.re + 0.2).abs() <= 1e-15);
+    let brewster = 1.5f64.atan();
+    let c1 = Complex64::new(brewster.cos(), 0.0);
+    let c2 = cos_theta(brewster.sin(), 1.5);
+    assert!(interface(1.0, c1, 1.5, c2).r_p.norm() <= 1e-15);
+    let ev = cos_theta(1.2, 1.0);
+    assert!(ev.re == 0.0 && ev.im > 0.0);
+}
