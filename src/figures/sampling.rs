@@ -20,8 +20,16 @@ use crate::stats;
 /// The outputs of these chapters.
 pub fn outputs() -> Vec<Output> {
     vec![
-        Output { file: "sampling_scatter.png", what: "sample scatter plots", make: scatter_png },
-        Output { file: "sampling_histograms.png", what: "histograms against pdfs", make: histograms_png },
+        Output {
+            file: "sampling_scatter.png",
+            what: "sample scatter plots",
+            make: scatter_png,
+        },
+        Output {
+            file: "sampling_histograms.png",
+            what: "histograms against pdfs",
+            make: histograms_png,
+        },
         Output {
             file: "sampling_warped_grids.png",
             what: "disc maps' distortion",
@@ -433,18 +441,25 @@ fn scatter_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     use plot::ScatterPanel;
     let mut rng = rng::seeded(0x5CA7);
     let n = 2500;
-    let sphere_icdf: Vec<_> = (0..n).map(|_| phi_z(sphere_inverse_cdf(warp::square_point(&mut rng)))).collect();
+    let sphere_icdf: Vec<_> = (0..n)
+        .map(|_| phi_z(sphere_inverse_cdf(warp::square_point(&mut rng))))
+        .collect();
     let sphere_gauss: Vec<_> = (0..n).map(|_| phi_z(sphere_gaussian(&mut rng))).collect();
     // One jittered sample per cell of a 24 x 24 grid: stratified samples.
     let k = 24;
     let strata: Vec<DVec2> = (0..k * k)
         .map(|c| {
             let (i, j) = ((c / k) as f64, (c % k) as f64);
-            DVec2::new((i + rng::uniform(&mut rng, 0.0, 1.0)) / k as f64, (j + rng::uniform(&mut rng, 0.0, 1.0)) / k as f64)
+            DVec2::new(
+                (i + rng::uniform(&mut rng, 0.0, 1.0)) / k as f64,
+                (j + rng::uniform(&mut rng, 0.0, 1.0)) / k as f64,
+            )
         })
         .collect();
     let xy = |p: DVec3| (p.x, p.y);
-    let malley: Vec<_> = (0..n).map(|_| xy(cosine_malley(warp::square_point(&mut rng)))).collect();
+    let malley: Vec<_> = (0..n)
+        .map(|_| xy(cosine_malley(warp::square_point(&mut rng))))
+        .collect();
     let sphere_panel = |title: &str, points| ScatterPanel {
         title: title.into(),
         x_label: "phi".into(),
@@ -465,8 +480,14 @@ fn scatter_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         sphere_panel("sphere, inverse CDF (equal-area coordinates)", sphere_icdf),
         sphere_panel("sphere, Gaussian (equal-area coordinates)", sphere_gauss),
         disc_panel("cosine, Malley: (x, y) of the directions", malley),
-        disc_panel("polar map of 24 x 24 stratified samples", strata.iter().map(|&u| xy(disc_polar(u))).collect()),
-        disc_panel("concentric map of the same samples", strata.iter().map(|&u| xy(disc_concentric(u))).collect()),
+        disc_panel(
+            "polar map of 24 x 24 stratified samples",
+            strata.iter().map(|&u| xy(disc_polar(u))).collect(),
+        ),
+        disc_panel(
+            "concentric map of the same samples",
+            strata.iter().map(|&u| xy(disc_concentric(u))).collect(),
+        ),
     ];
     plot::scatter_png(&panels, 3, 1200, 800)
 }
@@ -490,7 +511,8 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         steps
     };
     let cosine = histogram(&|r| cosine_malley(warp::square_point(r)).z);
-    let uniform = histogram(&|r| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z).z);
+    let uniform =
+        histogram(&|r| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z).z);
     let panels = [
         Panel {
             title: format!("cos theta of {n} cosine-weighted samples"),
@@ -499,8 +521,14 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             x_scale: Scale::Linear,
             y_scale: Scale::Linear,
             series: vec![
-                Series { label: "histogram (Malley)".into(), points: cosine },
-                Series { label: "pdf 2 cos theta".into(), points: vec![(0.0, 0.0), (1.0, 2.0)] },
+                Series {
+                    label: "histogram (Malley)".into(),
+                    points: cosine,
+                },
+                Series {
+                    label: "pdf 2 cos theta".into(),
+                    points: vec![(0.0, 0.0), (1.0, 2.0)],
+                },
             ],
         },
         Panel {
@@ -510,8 +538,14 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             x_scale: Scale::Linear,
             y_scale: Scale::Linear,
             series: vec![
-                Series { label: "histogram (flipped inverse CDF)".into(), points: uniform },
-                Series { label: "pdf 1".into(), points: vec![(0.0, 1.0), (1.0, 1.0)] },
+                Series {
+                    label: "histogram (flipped inverse CDF)".into(),
+                    points: uniform,
+                },
+                Series {
+                    label: "pdf 1".into(),
+                    points: vec![(0.0, 1.0), (1.0, 1.0)],
+                },
             ],
         },
     ];
