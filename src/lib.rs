@@ -10,13 +10,17 @@
 //! * [`rng`]: the seeded generator every test and figure uses.
 //! * [`stats`]: chi-squared, Kolmogorov-Smirnov and t-tests, with Šidák correction.
 //! * [`sampling`]: warps and tabulated distributions (*Sampling*).
+//! * [`optics`]: reflection, refraction, Fresnel, specular deltas, dispersion, thin films.
+//! * [`transport`]: Lambertian reflectance, Russian roulette, shadow-ray pdfs.
 //! * [`figures`]: the code that draws the book's figures and tables.
 
 pub mod check;
 pub mod figures;
 pub mod geometry;
+pub mod optics;
 pub mod plot;
 pub mod real;
 pub mod rng;
 pub mod sampling;
 pub mod stats;
+pub mod transport;

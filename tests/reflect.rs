@@ -6,6 +6,7 @@
 
 use glam::DVec3;
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
+use raylemma::figures::reflect::{REFLECTION_SEED, REFRACTION_SEED};
 use raylemma::optics::reflect::{Refraction, check, critical_angle, planted, reflect, refract};
 
 /// Random cases per checker run.
@@ -34,13 +35,13 @@ fn transmitted(r: Refraction) -> DVec3 {
 
 #[test]
 fn reflect_passes_every_check() {
-    let verdict = check::reflection(&reflect, CASES, 1);
+    let verdict = check::reflection(&reflect, CASES, REFLECTION_SEED);
     verdict.assert_pass();
 }
 
 #[test]
 fn refract_passes_every_check() {
-    let verdict = check::refraction(&refract, CASES, 2);
+    let verdict = check::refraction(&refract, CASES, REFRACTION_SEED);
     verdict.assert_pass();
 }
 
@@ -52,7 +53,7 @@ fn refract_passes_every_check() {
 /// even a unit vector (|2n + w_i|^2 = 5 - 4 cos_i) and leaves at the wrong angle.
 #[test]
 fn seed_reflection_fails_unit_length_and_equal_angles() {
-    let verdict = check::reflection(&planted::seed_reflect, CASES, 1);
+    let verdict = check::reflection(&planted::seed_reflect, CASES, REFLECTION_SEED);
     assert!(verdict.failed("unit_length"), "{verdict}");
     assert!(verdict.failed("equal_angles"), "{verdict}");
     // It stays in the plane of incidence and retraces itself: those claims cannot see it.
@@ -107,7 +108,7 @@ fn seed_refraction_components_are_right() {
 
 #[test]
 fn checker_rejects_a_missing_square_root() {
-    let verdict = check::refraction(&planted::refract_without_sqrt, CASES, 2);
+    let verdict = check::refraction(&planted::refract_without_sqrt, CASES, REFRACTION_SEED);
     assert!(
         verdict.failed("unit_length") && verdict.failed("snell"),
         "{verdict}"
@@ -116,7 +117,7 @@ fn checker_rejects_a_missing_square_root() {
 
 #[test]
 fn checker_rejects_swapped_indices() {
-    let verdict = check::refraction(&planted::refract_swapped_indices, CASES, 2);
+    let verdict = check::refraction(&planted::refract_swapped_indices, CASES, REFRACTION_SEED);
     assert!(
         verdict.failed("snell") && verdict.failed("tir_iff"),
         "{verdict}"
@@ -125,7 +126,7 @@ fn checker_rejects_swapped_indices() {
 
 #[test]
 fn checker_rejects_nan_for_total_internal_reflection() {
-    let verdict = check::refraction(&planted::refract_nan_tir, CASES, 2);
+    let verdict = check::refraction(&planted::refract_nan_tir, CASES, REFRACTION_SEED);
     assert!(
         verdict.failed("finite") && verdict.failed("tir_iff"),
         "{verdict}"
@@ -134,7 +135,7 @@ fn checker_rejects_nan_for_total_internal_reflection() {
 
 #[test]
 fn checker_rejects_an_unflipped_normal() {
-    let verdict = check::refraction(&planted::refract_unflipped_normal, CASES, 2);
+    let verdict = check::refraction(&planted::refract_unflipped_normal, CASES, REFRACTION_SEED);
     assert!(
         verdict.failed("normal_side") && verdict.failed("far_side"),
         "{verdict}"

@@ -1,0 +1,426 @@
+//! Figures and tables of the chapter *Fresnel and Schlick*.
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use super::{Output, Settings, timing};
+use crate::optics::fresnel::{
+    ErrorStats, FresnelFit, SWEEP_ANGLES, approximation_error, check, fresnel_dielectric,
+    fresnel_polarized, fresnel_transmittance, planted, schlick, schlick_seed,
+};
+use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::rng;
+
+/// The outputs of this chapter.
+pub fn outputs() -> Vec<Output> {
+    vec![
+        Output {
+            file: "fresnel_outside.png",
+            what: "R_s, R_p, R from the less dense side",
+            make: outside_png,
+        },
+        Output {
+            file: "fresnel_inside.png",
+            what: "R_s, R_p, R from the denser side",
+            make: inside_png,
+        },
+        Output {
+            file: "fresnel_error.png",
+            what: "approximation error against angle",
+            make: error_png,
+        },
+        Output {
+            file: "fresnel_errors.md",
+            what: "worst approximation errors",
+            make: errors_md,
+        },
+        Output {
+            file: "fresnel_verdicts.md",
+            what: "checker verdicts",
+            make: verdicts_md,
+        },
+        Output {
+            file: "fresnel_speed.md",
+            what: "ns per reflectance",
+            make: speed_md,
+        },
+        Output {
+            file: "fresnel_speed.png",
+            what: "speed against error",
+            make: speed_png,
+        },
+    ]
+}
+
+/// Relative indices of the figures: water, glass, diamond.
+pub const FIGURE_IORS: [f64; 3] = [1.33, 1.5, 2.4];
+
+/// Relative indices of the error table: the figures' and glass under water (1.5 / 1.33).
+pub const TABLE_IORS: [(f64, &str); 4] = [
+    (1.33, "1.33 (water)"),
+    (1.5, "1.5 (glass)"),
+    (2.4, "2.4 (diamond)"),
+    (1.5 / 1.33, "1.128 (glass in water)"),
+];
+
+/// Angles of the curves: 0 to 90 degrees in steps of 0.25.
+fn degrees() -> impl Iterator<Item = f64> {
+    (0..=360).map(|k| f64::from(k) * 0.25)
+}
+
+fn cos_deg(d: f64) -> f64 {
+    if d >= 90.0 { 0.0 } else { d.to_radians().cos() }
+}
+
+fn curve(label: &str, f: impl Fn(f64) -> f64) -> Series {
+    Series {
+        label: label.into(),
+        points: degrees().map(|d| (d, f(cos_deg(d)))).collect(),
+    }
+}
+
+fn reflectance_panels(inside: bool) -> Vec<Panel> {
+    FIGURE_IORS
+        .iter()
+        .map(|&n| {
+            let (n1, n2) = if inside { (n, 1.0) } else { (1.0, n) };
+            let mut series = vec![
+                curve("R_s", |c| fresnel_polarized(c, n1, n2).s),
+                curve("R_p", |c| fresnel_polarized(c, n1, n2).p),
+                curve("R = (R_s + R_p)/2", |c| fresnel_dielectric(c, n1, n2)),
+                curve(
+                    if inside {
+                        "Schlick with cos θt"
+                    } else {
+                        "Schlick"
+                    },
+                    |c| schlick(c, n1, n2),
+                ),
+            ];
+            if inside {
+                series.push(curve("seed: Schlick with cos θi", |c| {
+                    schlick_seed(c, n1, n2)
+                }));
+            }
+            Panel {
+                title: format!("n1 = {n1}, n2 = {n2}"),
+                x_label: "angle of incidence θi (degrees)".into(),
+                y_label: "reflectance".into(),
+                x_scale: Scale::Linear,
+                y_scale: Scale::Linear,
+                series,
+            }
+        })
+        .collect()
+}
+
+fn outside_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    plot::line_chart_png(&reflectance_panels(false), 1500, 480)
+}
+
+fn inside_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    plot::line_chart_png(&reflectance_panels(true), 1500, 480)
+}
+
+fn error_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let panels: Vec<Panel> = FIGURE_IORS
+        .iter()
+        .map(|&n| {
+            let (fit_out, fit_in) = (FresnelFit::new(1.0, n), FresnelFit::new(n, 1.0));
+            // Errors below 1e-9 (near normal incidence, where every method is exact) are
+            // left out so that the interesting range fills the panel.
+            let error = |label: &str, n1: f64, n2: f64, f: &dyn Fn(f64) -> f64| {
+                let mut series = curve(label, |c| (f(c) - fresnel_dielectric(c, n1, n2)).abs());
+                series.points.retain(|p| p.1 >= 1e-9);
+                series
+            };
+            Panel {
+                title: format!("relative index {n}"),
+                x_label: "angle of incidence θi (degrees)".into(),
+                y_label: "|approximation − exact|".into(),
+                x_scale: Scale::Linear,
+                y_scale: Scale::Log,
+                series: vec![
+                    error("Schlick, outside", 1.0, n, &|c| schlick(c, 1.0, n)),
+                    error("Schlick (cos θt), inside", n, 1.0, &|c| schlick(c, n, 1.0)),
+                    error("seed: Schlick (cos θi), inside", n, 1.0, &|c| {
+                        schlick_seed(c, n, 1.0)
+                    }),
+                    error("Chebyshev-8, outside", 1.0, n, &|c| fit_out.eval(c)),
+                    error("Chebyshev-8, inside", n, 1.0, &|c| fit_in.eval(c)),
+                ],
+            }
+        })
+        .collect();
+    plot::line_chart_png(&panels, 1500, 520)
+}
+
+/// Worst errors of Schlick, the seed's Schlick and the fit for light in medium `n1`.
+pub struct ErrorRow {
+    /// Schlick with the cosine on the less dense side.
+    pub schlick: ErrorStats,
+    /// The seed's Schlick (always `cos theta_i`).
+    pub seed: ErrorStats,
+    /// The Chebyshev interpolant.
+    pub fit: ErrorStats,
+}
+
+/// The errors of the table for `n1 -> n2`, over [`SWEEP_ANGLES`] angles.
+pub fn error_row(n1: f64, n2: f64) -> ErrorRow {
+    let fit = FresnelFit::new(n1, n2);
+    ErrorRow {
+        schlick: approximation_error(&|c| schlick(c, n1, n2), n1, n2, SWEEP_ANGLES),
+        seed: approximation_error(&|c| schlick_seed(c, n1, n2), n1, n2, SWEEP_ANGLES),
+        fit: approximation_error(&|c| fit.eval(c), n1, n2, SWEEP_ANGLES),
+    }
+}
+
+fn errors_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| n2/n1 | light arrives from | Schlick: worst abs. error (at θi) | Schlick: worst rel. error (at θi) | seed's Schlick: worst abs. error (at θi) | Chebyshev-8: worst abs. error (at θi) | Chebyshev-8: worst rel. error |"
+    )?;
+    writeln!(md, "|---|---|---:|---:|---:|---:|---:|")?;
+    let at = |e: f64, d: f64| format!("{e:.4} ({d:.2}°)");
+    for (n, name) in TABLE_IORS {
+        for (side, n1, n2) in [("outside", 1.0, n), ("inside", n, 1.0)] {
+            let row = error_row(n1, n2);
+            writeln!(
+                md,
+                "| {name} | {side} | {} | {} | {} | {:.2e} ({:.2}°) | {:.2e} |",
+                at(row.schlick.worst_abs, row.schlick.worst_abs_deg),
+                at(row.schlick.worst_rel, row.schlick.worst_rel_deg),
+                at(row.seed.worst_abs, row.seed.worst_abs_deg),
+                row.fit.worst_abs,
+                row.fit.worst_abs_deg,
+                row.fit.worst_rel,
+            )?;
+        }
+    }
+    writeln!(
+        md,
+        "\n*θi is the angle of incidence in the medium the light arrives from; {SWEEP_ANGLES} angles from 0° to 90°. \
+         \"Inside\" is the denser medium, light leaving it; errors past the critical angle are 0 for every method but the seed's. \
+         Generated by `cargo run --release` (`src/figures/fresnel.rs`); the numbers are pinned by `tests/fresnel.rs`.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn verdicts_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    type Reflectance = fn(f64, f64, f64) -> f64;
+    let fit: Reflectance = |c, n1, n2| FresnelFit::new(n1, n2).eval(c);
+    let routines: [(&str, Reflectance); 7] = [
+        ("`fresnel_dielectric` (exact)", fresnel_dielectric),
+        ("`schlick` (cos on the less dense side)", schlick),
+        ("`FresnelFit` (Chebyshev-8)", fit),
+        ("seed: `schlick_seed` (always cos θi)", schlick_seed),
+        ("planted: no special cases", planted::fresnel_naive),
+        (
+            "planted: T = t², no beam factor",
+            planted::fresnel_without_beam_factor,
+        ),
+        (
+            "planted: R_p paired like R_s",
+            planted::fresnel_p_paired_like_s,
+        ),
+    ];
+    let verdicts: Vec<_> = routines
+        .iter()
+        .map(|(name, f)| (name, check::reflectance(f)))
+        .collect();
+    let mut md = String::from("| routine |");
+    let claims: Vec<String> = verdicts[0]
+        .1
+        .findings
+        .iter()
+        .map(|f| f.name.clone())
+        .collect();
+    for claim in &claims {
+        write!(md, " `{claim}` |")?;
+    }
+    md.push_str("\n|---|");
+    md.push_str(&"---|".repeat(claims.len()));
+    md.push('\n');
+    for (name, verdict) in &verdicts {
+        write!(md, "| {name} |")?;
+        for finding in &verdict.findings {
+            if finding.passed() {
+                md.push_str(" ok |");
+            } else {
+                write!(md, " **fails** {}/{} |", finding.failures, finding.cases)?;
+            }
+        }
+        md.push('\n');
+    }
+    writeln!(
+        md,
+        "\n*The checker `raylemma::optics::fresnel::check::reflectance` on {} index pairs and {} cosines each; \
+         \"fails k/N\": k of the N cases that claim applies to. Generated by `cargo run --release`.*",
+        check::PAIRS.len(),
+        check::sweep_cosines().len()
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// One method of the speed comparison.
+struct Timed {
+    name: &'static str,
+    /// ns per evaluation entering glass (1 -> 1.5) and leaving it (1.5 -> 1).
+    ns: (f64, f64),
+    /// Worst absolute error over the figure's indices, outside and inside.
+    error: (f64, f64),
+}
+
+/// Cosines for timing: 4096 uniform in `[0, 1]`, seeded.
+pub fn timing_cosines(n: usize) -> Vec<f64> {
+    let mut rng = rng::seeded(0xf7e5);
+    (0..n).map(|_| rng::uniform(&mut rng, 0.0, 1.0)).collect()
+}
+
+/// Generic, so that each method is inlined into its own loop (no indirect call).
+fn time(f: impl Fn(f64) -> f64, cosines: &[f64], reps: usize) -> f64 {
+    timing::median_ns_per_item(cosines.len(), reps, || {
+        let mut sum = 0.0;
+        for &c in cosines {
+            sum += f(black_box(c));
+        }
+        sum.to_bits()
+    })
+}
+
+/// The worst error of `f(n1, n2)(cos)` over the figure's indices, outside and inside.
+fn worst_error(f: &dyn Fn(f64, f64) -> Box<dyn Fn(f64) -> f64>) -> (f64, f64) {
+    let mut worst = (0.0f64, 0.0f64);
+    for n in FIGURE_IORS {
+        let out = approximation_error(&*f(1.0, n), 1.0, n, SWEEP_ANGLES).worst_abs;
+        let inside = approximation_error(&*f(n, 1.0), n, 1.0, SWEEP_ANGLES).worst_abs;
+        worst = (worst.0.max(out), worst.1.max(inside));
+    }
+    worst
+}
+
+fn timed(settings: &Settings) -> Vec<Timed> {
+    let cosines = timing_cosines(4096);
+    let reps = if settings.quick { 5 } else { 201 };
+    let (fit_out, fit_in) = (FresnelFit::new(1.0, 1.5), FresnelFit::new(1.5, 1.0));
+    // The exact formula's "error": its disagreement with 1 - T from the transmission
+    // amplitudes, i.e. rounding.
+    let exact_error = worst_error(&|n1, n2| {
+        Box::new(move |c| 1.0 - fresnel_transmittance(c, n1, n2).unpolarized())
+    });
+    vec![
+        Timed {
+            name: "exact",
+            ns: (
+                time(|c| fresnel_dielectric(c, 1.0, 1.5), &cosines, reps),
+                time(|c| fresnel_dielectric(c, 1.5, 1.0), &cosines, reps),
+            ),
+            error: exact_error,
+        },
+        Timed {
+            name: "Schlick",
+            ns: (
+                time(|c| schlick(c, 1.0, 1.5), &cosines, reps),
+                time(|c| schlick(c, 1.5, 1.0), &cosines, reps),
+            ),
+            error: worst_error(&|n1, n2| Box::new(move |c| schlick(c, n1, n2))),
+        },
+        Timed {
+            name: "Chebyshev-8",
+            ns: (
+                time(|c| fit_out.eval(c), &cosines, reps),
+                time(|c| fit_in.eval(c), &cosines, reps),
+            ),
+            error: worst_error(&|n1, n2| {
+                let fit = FresnelFit::new(n1, n2);
+                Box::new(move |c| fit.eval(c))
+            }),
+        },
+        Timed {
+            name: "seed's Schlick",
+            ns: (
+                time(|c| schlick_seed(c, 1.0, 1.5), &cosines, reps),
+                time(|c| schlick_seed(c, 1.5, 1.0), &cosines, reps),
+            ),
+            error: worst_error(&|n1, n2| Box::new(move |c| schlick_seed(c, n1, n2))),
+        },
+    ]
+}
+
+/// ns to build one [`FresnelFit`] (9 exact evaluations and the coefficients).
+fn fit_construction_ns(settings: &Settings) -> f64 {
+    let mut rng = rng::seeded(0xf17);
+    let indices: Vec<f64> = (0..256).map(|_| rng::uniform(&mut rng, 1.3, 1.7)).collect();
+    let reps = if settings.quick { 5 } else { 101 };
+    timing::median_ns_per_item(indices.len(), reps, || {
+        let mut sum = 0.0;
+        for &n in &indices {
+            sum += FresnelFit::new(1.0, black_box(n)).eval(0.5);
+        }
+        sum.to_bits()
+    })
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let rows = timed(settings);
+    let cosines = timing_cosines(4096);
+    let tir_share = cosines
+        .iter()
+        .filter(|&&c| crate::optics::fresnel::cos_transmitted(c, 1.5, 1.0).is_none())
+        .count() as f64
+        / cosines.len() as f64;
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| method | ns per evaluation, entering glass (1 → 1.5) | ns per evaluation, leaving glass (1.5 → 1) | worst abs. error, outside | worst abs. error, inside |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---:|")?;
+    for row in &rows {
+        writeln!(
+            md,
+            "| {} | {:.2} | {:.2} | {:.1e} | {:.1e} |",
+            row.name, row.ns.0, row.ns.1, row.error.0, row.error.1
+        )?;
+    }
+    let reps = if settings.quick { 5 } else { 201 };
+    writeln!(
+        md,
+        "\n*{}; 4096 cosines uniform in [0, 1] per batch (leaving glass, {:.0} % of them are past the critical angle), \
+         median of {reps} batches{}. Errors: worst over relative indices 1.33, 1.5 and 2.4 and {SWEEP_ANGLES} angles; \
+         for the exact formula, its disagreement with 1 − T computed from the transmission amplitudes (rounding). \
+         Building one `FresnelFit` costs {:.0} ns.*",
+        timing::machine(),
+        100.0 * tir_share,
+        if settings.quick {
+            " (quick mode: noisy)"
+        } else {
+            ""
+        },
+        fit_construction_ns(settings),
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn speed_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let rows = timed(settings);
+    let panel = |title: &str, pick: fn(&Timed) -> (f64, f64)| Panel {
+        title: title.into(),
+        x_label: "ns per evaluation".into(),
+        y_label: "worst |R − R_exact| (n = 1.33, 1.5, 2.4)".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Log,
+        series: rows
+            .iter()
+            .map(|row| Series {
+                label: row.name.into(),
+                points: vec![pick(row)],
+            })
+            .collect(),
+    };
+    let panels = [
+        panel("entering glass (1 → 1.5)", |r| (r.ns.0, r.error.0)),
+        panel("leaving glass (1.5 → 1)", |r| (r.ns.1, r.error.1)),
+    ];
+    plot::line_chart_png(&panels, 1200, 520)
+}
