@@ -245,7 +245,7 @@ fn parser_accepts_a_good_row_with_commas_in_the_source() {
 #[test]
 fn parser_rejects_a_missing_column() {
     let e = parse_err("glass,0.3,2.5,1.0,0.006,0.2");
-    assert_error(&e, 3, "missing column `C2_um2`");
+    assert_error(&e, 3, "missing column `C2_um2` (found 6 of 12 columns)");
 }
 
 #[test]

@@ -20,13 +20,17 @@ use raylemma::rng;
 // ---------------------------------------------------------------------------------------
 // The independent reference: Macleod's characteristic matrix.
 
-/// `cos θ` in Macleod's convention: real, or `−i·sqrt(sin²θ − 1)` (fourth quadrant).
-fn macleod_cos(n_sin: f64, n: f64) -> Complex64 {
-    let s2 = (n_sin / n).powi(2);
-    if s2 <= 1.0 {
-        Complex64::new((1.0 - s2).sqrt(), 0.0)
+/// `cos θ` in a medium of index `n` for light arriving from index `n1` at `cos θ1`, in
+/// Macleod's convention: real, or `−i·sqrt(sin²θ − 1)` (fourth quadrant). From
+/// `cos²θ = 1 − ρ² sin²θ1 = (1 − ρ²) + ρ² cos²θ1`, `ρ = n1/n`, so that a medium of the
+/// ambient's index gets the ambient's cosine even at grazing incidence.
+fn macleod_cos(n1: f64, cos1: f64, n: f64) -> Complex64 {
+    let rho2 = (n1 / n).powi(2);
+    let c2 = (1.0 - rho2) + rho2 * cos1 * cos1;
+    if c2 >= 0.0 {
+        Complex64::new(c2.sqrt(), 0.0)
     } else {
-        Complex64::new(0.0, -(s2 - 1.0).sqrt())
+        Complex64::new(0.0, -(-c2).sqrt())
     }
 }
 
@@ -50,42 +54,42 @@ fn scaled_cos_sinc(delta: Complex64) -> (Complex64, Complex64, f64) {
 
 /// `(R_s, R_p, T_s, T_p)` by the transfer matrix.
 fn tmm(film: &Film, wavelength_nm: f64, theta1: f64) -> [f64; 4] {
+    tmm_cos(film, wavelength_nm, theta1.cos())
+}
+
+fn tmm_cos(film: &Film, wavelength_nm: f64, cos1: f64) -> [f64; 4] {
     let (n1, n2, n3, d) = (film.n1, film.n2, film.n3, film.thickness_nm);
-    let n_sin = n1 * theta1.sin();
-    let c1 = Complex64::new(theta1.cos(), 0.0);
-    let c2 = macleod_cos(n_sin, n2);
-    let c3 = macleod_cos(n_sin, n3);
+    let c1 = Complex64::new(cos1, 0.0);
+    let c2 = macleod_cos(n1, cos1, n2);
+    let c3 = macleod_cos(n1, cos1, n3);
     let k = 2.0 * PI / wavelength_nm;
     let delta = c2 * (k * n2 * d);
     let (cos, sinc, y) = scaled_cos_sinc(delta);
     let i = Complex64::i();
     let mut out = [0.0; 4];
-    for pol in 0..2 {
-        // Tilted admittances (in units of the free-space admittance): n cos θ (s), n / cos θ (p).
-        // The film's matrix entries i sin δ / η2 and i η2 sin δ, written with sin δ = δ·sinc
-        // so that no cosine is divided by.
-        let (eta1, eta3, m12, m21) = if pol == 0 {
-            (
-                c1 * n1,
-                c3 * n3,
-                i * k * d * sinc,
-                i * k * d * (c2 * n2) * (c2 * n2) * sinc,
-            )
-        } else {
-            (
-                n1 / c1,
-                n3 / c3,
-                i * k * d * c2 * c2 * sinc,
-                i * k * n2 * n2 * d * sinc,
-            )
-        };
-        // [B, C] = M [1, η3] (scaled by e^{−|Im δ|}).
+    // s: tilted admittances (in units of the free-space admittance) η = n cos θ; the
+    // film's matrix entries i sin δ / η2 and i η2 sin δ are written with sin δ = δ·sinc δ,
+    // so that no cosine is divided by. [B, C] = M [1, η3], scaled by e^{−|Im δ|}.
+    {
+        let (eta1, eta3) = (c1 * n1, c3 * n3);
+        let (m12, m21) = (i * k * d * sinc, i * k * d * (c2 * n2) * (c2 * n2) * sinc);
         let b = cos + m12 * eta3;
         let c = m21 + cos * eta3;
         let den = eta1 * b + c;
-        let r = (eta1 * b - c) / den;
-        out[pol] = r.norm_sqr();
-        out[pol + 2] = 4.0 * eta1.re * eta3.re * (-2.0 * y).exp() / den.norm_sqr();
+        out[0] = ((eta1 * b - c) / den).norm_sqr();
+        out[2] = 4.0 * eta1.re * eta3.re * (-2.0 * y).exp() / den.norm_sqr();
+    }
+    // p: η = n / cos θ. Multiplying B and C by cos θ3, and r's numerator and denominator
+    // by cos θ1, keeps grazing and critical cosines (0) out of every denominator:
+    // B' = c3 B, C' = c3 C, r = (n1 B' − c1 C') / (n1 B' + c1 C'),
+    // T = 4 n1 c1 Re(n3 c3*) / |n1 B' + c1 C'|².
+    {
+        let (m12, m21) = (i * k * d * c2 * c2 * sinc, i * k * n2 * n2 * d * sinc);
+        let b = cos * c3 + m12 * n3;
+        let c = m21 * c3 + cos * n3;
+        let den = b * n1 + c * c1;
+        out[1] = ((b * n1 - c * c1) / den).norm_sqr();
+        out[3] = 4.0 * n1 * c1.re * (c3.conj() * n3).re * (-2.0 * y).exp() / den.norm_sqr();
     }
     out
 }
@@ -93,9 +97,8 @@ fn tmm(film: &Film, wavelength_nm: f64, theta1: f64) -> [f64; 4] {
 /// The bare interface `n1 | n3`, from the Fresnel equations written out here (the test's
 /// own, in Macleod's admittance form).
 fn bare(n1: f64, n3: f64, theta1: f64) -> [f64; 2] {
-    let n_sin = n1 * theta1.sin();
     let c1 = Complex64::new(theta1.cos(), 0.0);
-    let c3 = macleod_cos(n_sin, n3);
+    let c3 = macleod_cos(n1, theta1.cos(), n3);
     let rs = (c1 * n1 - c3 * n3) / (c1 * n1 + c3 * n3);
     let rp = (n1 / c1 - n3 / c3) / (n1 / c1 + n3 / c3);
     [rs.norm_sqr(), rp.norm_sqr()]
@@ -196,7 +199,7 @@ fn airy_sum_agrees_with_the_transfer_matrix() {
         let got = library(&case.film, case.wavelength_nm, case.theta1);
         for (k, name) in ["R_s", "R_p", "T_s", "T_p"].iter().enumerate() {
             let err = (got[k] - want[k]).abs();
-            if !(err <= worst.0) && !worst.0.is_nan() {
+            if (err.is_nan() || err > worst.0) && !worst.0.is_nan() {
                 worst = (
                     err,
                     format!("{name}: {} vs {} for {case:?}", got[k], want[k]),
@@ -265,9 +268,9 @@ fn film_matching_either_neighbour_leaves_one_interface() {
 #[test]
 fn half_wave_film_is_absent() {
     for (n1, n3, t) in interface_cases() {
-        for n2 in [1.8, 2.4, 3.0] {
+        for n2 in [n1 + 0.3, n1 + 0.9, n1 + 1.5] {
             // Films denser than the ambient, so cos θ2 is real.
-            let c2 = cos_theta(n1 * t.sin(), n2).re;
+            let c2 = cos_theta(n1, t.cos(), n2).re;
             let d = 550.0 / (2.0 * n2 * c2);
             assert_bare(Film::new(n1, n2, n3, d), n1, n3, t, 1e-12);
         }
@@ -298,9 +301,9 @@ fn energy_is_conserved_and_reflectance_is_in_range() {
 // ANCHOR: soap_test
 /// A quarter-wave film at normal incidence (n2 d = λ/4, e^{2iδ} = −1) reflects
 /// ((n1 n3 − n2²)/(n1 n3 + n2²))²: for a soap film (n2 = 1.33) in air, ((1 − n2²)/(1 + n2²))²
-/// = 0.0771. For a film denser than both neighbours (n2² > n1 n3) that is the largest R over
-/// all thicknesses; for an anti-reflection coating (MgF2, 1.38, on glass, 1.52:
-/// n2² < n1 n3) the smallest, 0.0126.
+/// = 0.0771. For a film denser (or rarer) than both neighbours, r12 r23 < 0 and that is the
+/// largest R over all thicknesses; for a film between them, as an anti-reflection coating
+/// (MgF2, 1.38, on glass, 1.52), the smallest: 0.0126, against 0.0426 for bare glass.
 #[test]
 fn quarter_wave_soap_film_reflects_most() {
     let lambda = 550.0;
@@ -308,6 +311,8 @@ fn quarter_wave_soap_film_reflects_most() {
     assert!((soap - 0.0771).abs() < 5e-5, "{soap}");
     let coating = quarter_wave_reflectance(1.0, 1.38, 1.52);
     assert!((coating - 0.0126).abs() < 5e-5, "{coating}");
+    let glass = Film::new(1.0, 1.52, 1.52, 0.0).reflectance(lambda, 0.0);
+    assert!((glass - 0.0426).abs() < 5e-5, "{glass}");
     for (n1, n2, n3) in [
         (1.0, 1.33, 1.0),
         (1.0, 1.5, 1.33),
@@ -322,7 +327,7 @@ fn quarter_wave_soap_film_reflects_most() {
         let mut others = (0..=400).map(|k| {
             Film::new(n1, n2, n3, 2.0 * quarter * f64::from(k) / 400.0).reflectance(lambda, 0.0)
         });
-        if n2 * n2 > n1 * n3 {
+        if (n2 - n1) * (n3 - n2) < 0.0 {
             assert!(others.all(|x| x <= r + 1e-15));
         } else {
             assert!(others.all(|x| x >= r - 1e-15));
@@ -355,7 +360,7 @@ fn very_thin_films_tend_to_the_bare_interface() {
 fn thick_film_fringes_average_to_the_incoherent_sum() {
     let film = Film::new(1.0, 1.5, 1.33, 1e5);
     let theta1 = 30f64.to_radians();
-    let c2 = cos_theta(theta1.sin(), 1.5).re;
+    let c2 = cos_theta(1.0, theta1.cos(), 1.5).re;
     // 2δ = 4π n2 d c2 / λ advances by 2π when 1/λ advances by 1/(2 n2 d c2).
     let step = 1.0 / (2.0 * 1.5 * 1e5 * c2) / 64.0;
     let (mut s, mut p) = (0.0, 0.0);
@@ -376,7 +381,7 @@ fn thick_film_fringes_average_to_the_incoherent_sum() {
 }
 
 /// Grazing incidence reflects everything: R = 1 and T = 0 at exactly 90°, and R → 1
-/// continuously as the angle approaches it.
+/// continuously as the angle approaches it (1 − R within 10 times the angle to grazing).
 #[test]
 fn grazing_incidence_reflects_everything() {
     for (n1, n2, n3) in [
@@ -388,13 +393,14 @@ fn grazing_incidence_reflects_everything() {
         let film = Film::new(n1, n2, n3, 300.0);
         let r = film.response(550.0, FRAC_PI_2);
         assert!((r.reflectance() - 1.0).abs() <= 1e-12 && r.transmittance().abs() <= 1e-12);
-        let mut previous = 0.0;
-        for k in 1..=6 {
-            let near = film.reflectance(550.0, FRAC_PI_2 - 10f64.powi(-k));
-            assert!(near > previous && near < 1.0 + 1e-12, "{near}");
-            previous = near;
+        for k in 1..=8 {
+            let gap = 10f64.powi(-k);
+            let near = film.reflectance(550.0, FRAC_PI_2 - gap);
+            assert!(
+                near <= 1.0 + 1e-12 && 1.0 - near <= 10.0 * gap,
+                "{gap}: {near}"
+            );
         }
-        assert!(previous > 1.0 - 1e-4, "{previous}");
     }
 }
 
@@ -406,6 +412,8 @@ fn total_internal_reflection_through_a_film() {
     let film = Film::new(1.52, 1.38, 1.0, 100.0);
     let critical = (1.0f64 / 1.52).asin();
     assert!((critical.to_degrees() - 41.14).abs() < 0.01);
+    let film_critical = (1.38f64 / 1.52).asin();
+    assert!((film_critical.to_degrees() - 65.2).abs() < 0.05);
     for k in 0..=200 {
         let t = critical + (FRAC_PI_2 - critical) * f64::from(k) / 200.0 + 1e-12;
         let t = t.min(FRAC_PI_2);
@@ -424,7 +432,7 @@ fn total_internal_reflection_through_a_film() {
 #[test]
 fn frustrated_total_internal_reflection_tunnels_and_decays() {
     let theta1 = 60f64.to_radians();
-    let kappa = cos_theta(1.5 * theta1.sin(), 1.0).im;
+    let kappa = cos_theta(1.5, theta1.cos(), 1.0).im;
     assert!(kappa > 0.0);
     let k = 2.0 * PI / 550.0;
     let t = |d: f64| Film::new(1.5, 1.0, 1.5, d).response(550.0, theta1);
@@ -438,29 +446,24 @@ fn frustrated_total_internal_reflection_tunnels_and_decays() {
     }
 }
 
-/// The film exactly at its critical angle (n1 sin θ1 = n2, cos θ2 = 0) makes the Airy sum
-/// 0/0; the library takes the limit. It agrees with the transfer matrix (which needs no
-/// special case) to 1e-12 and conserves energy.
+/// The film exactly at its critical angle: n1 = 1.25, n2 = 1, cos θ1 = 0.6, so that
+/// cos²θ2 = (1 − 1.25²) + (1.25 · 0.6)² = 0 exactly in floating point. The plain Airy sum
+/// is 0/0 there (r12 = 1, r23 = −1, z = 1); the rearranged form needs no special case and
+/// agrees with the transfer matrix to 1e-12, conserving energy.
 #[test]
 fn film_exactly_at_its_critical_angle() {
-    let (n1, n2, n3): (f64, f64, f64) = (2.0, 1.0, 1.5);
-    // Walk to the angle whose sine, times n1, is exactly n2 in floating point.
-    let mut t = (n2 / n1).asin();
-    let mut steps = 0;
-    while n1 * t.sin() != n2 {
-        t = if n1 * t.sin() < n2 {
-            t.next_up()
-        } else {
-            t.next_down()
-        };
-        steps += 1;
-        assert!(steps < 100, "no exact angle found");
-    }
-    assert_eq!(cos_theta(n1 * t.sin(), n2).norm_sqr(), 0.0);
+    let (n1, n2, n3, cos1) = (1.25, 1.0, 1.5, 0.6);
+    assert_eq!(cos_theta(n1, cos1, n2).norm_sqr(), 0.0);
     for d in [0.0, 1.0, 100.0, 5000.0] {
         let film = Film::new(n1, n2, n3, d);
-        let got = library(&film, 550.0, t);
-        let want = tmm(&film, 550.0, t);
+        let r = film.response_cos(550.0, cos1);
+        let got = [
+            r.reflectance_s,
+            r.reflectance_p,
+            r.transmittance_s,
+            r.transmittance_p,
+        ];
+        let want = tmm_cos(&film, 550.0, cos1);
         for k in 0..4 {
             assert!(
                 got[k].is_finite() && (got[k] - want[k]).abs() <= 1e-12,
@@ -471,26 +474,57 @@ fn film_exactly_at_its_critical_angle() {
     }
 }
 
-/// Near the film's critical angle (|cos θ2| → 0) the Airy sum subtracts nearly equal
-/// numbers, r12 ≈ 1 and r23 ≈ −1: its error grows like ε/|cos θ2|. Measured here at
-/// |cos θ2| = 1e-6: worse than elsewhere, still within 1e-9 of the transfer matrix.
+/// The plain Airy sum `(r12 + r23 z)/(1 + r12 r23 z)`, assembled from the library's
+/// pieces, is right away from two corners: 1e-12 against the transfer matrix wherever
+/// |cos θ1| and |cos θ2| exceed 1e-3. In the corners its denominator is a difference of
+/// nearly equal numbers:
+/// * near the film's critical angle r12 → 1, r23 → −1, z → 1. At 30° in glass of
+///   n1 = 2.4 under a film of n2 = 1.2 (n1 sin θ1 = n2 but for rounding, |cos θ2| < 1e-7)
+///   with d = 0 it is wrong by more than 1e-10;
+/// * within 1e-12 rad of grazing incidence over a sub-picometre film whose far side has
+///   the ambient's index, r12 → −1, r23 → 1: n1 = n3 = 1, n2 = 1.33, d = 1e-9 nm, it is
+///   wrong by more than 1e-7 (a corner no real scene reaches).
+///
+/// The library's rearranged form stays within 1e-13 in both.
 #[test]
-fn airy_sum_loses_digits_only_near_the_films_critical_angle() {
-    let (n1, n2, n3): (f64, f64, f64) = (2.0, 1.0, 1.5);
-    let mut worst: f64 = 0.0;
-    for c2 in [1e-6f64, -1e-6] {
-        // n1 sin θ1 = n2 sqrt(1 − c2²) (c2 > 0) or n2 sqrt(1 + c2²) (evanescent, c2 < 0).
-        let s1 = n2 * (1.0 - c2 * c2.abs()).sqrt() / n1;
-        let t = s1.asin();
-        for d in [50.0, 500.0] {
-            let film = Film::new(n1, n2, n3, d);
-            let (got, want) = (library(&film, 550.0, t), tmm(&film, 550.0, t));
-            for k in 0..4 {
-                worst = worst.max((got[k] - want[k]).abs());
-            }
-        }
+fn plain_airy_sum_loses_digits_in_two_corners() {
+    let cases = sweep(SWEEP_CASES, SWEEP_SEED);
+    let away: Vec<Case> = cases
+        .into_iter()
+        .filter(|c| {
+            let cos1 = c.theta1.cos();
+            cos1 > 1e-3 && cos_theta(c.film.n1, cos1, c.film.n2).norm() > 1e-3
+        })
+        .collect();
+    assert!(away.len() > SWEEP_CASES / 2);
+    let (worst, at) = worst_unpolarised(&away, |c| assembled(c, phase, false));
+    assert!(worst <= 1e-12, "{worst} at {at:?}");
+
+    for (film, t, threshold) in [
+        (Film::new(2.4, 1.2, 1.0, 0.0), 30f64.to_radians(), 1e-10),
+        (Film::new(1.0, 1.33, 1.0, 1e-9), FRAC_PI_2 - 1e-12, 1e-7),
+    ] {
+        let case = Case {
+            film,
+            wavelength_nm: 550.0,
+            theta1: t,
+        };
+        let [rs, rp, ..] = tmm(&film, 550.0, t);
+        let reference = 0.5 * (rs + rp);
+        let plain = assembled(&case, phase, false);
+        let plain_error = (plain - reference).abs();
+        let stable_error = (film.reflectance(550.0, t) - reference).abs();
+        assert!(
+            plain_error.is_nan() || plain_error > threshold,
+            "plain sum error {plain_error} for {film:?}"
+        );
+        assert!(
+            stable_error <= 1e-13,
+            "stable error {stable_error} for {film:?}"
+        );
     }
-    assert!(worst <= 1e-9, "{worst}");
+    // The first reference is known exactly: the bare interface totally reflects.
+    assert_eq!(bare(2.4, 1.0, 30f64.to_radians()), [1.0, 1.0]);
 }
 
 /// No NaN, R and T in [0, 1], R + T = 1 on a grid over the whole domain: indices 1, 1.33,
@@ -547,22 +581,15 @@ fn assembled(
     flip_r12_p: bool,
 ) -> f64 {
     let Film { n1, n2, n3, .. } = case.film;
-    let n_sin = n1 * case.theta1.sin();
-    let c1 = Complex64::new(case.theta1.cos(), 0.0);
-    let (c2, c3) = (cos_theta(n_sin, n2), cos_theta(n_sin, n3));
+    let cos1 = case.theta1.cos();
+    let c1 = Complex64::new(cos1, 0.0);
+    let (c2, c3) = (cos_theta(n1, cos1, n2), cos_theta(n1, cos1, n3));
     let (i12, i23) = (interface(n1, c1, n2, c2), interface(n2, c2, n3, c3));
     let delta = phase_of(n2, case.film.thickness_nm, c2, case.wavelength_nm);
     let r12_p = if flip_r12_p { -i12.r_p } else { i12.r_p };
     let rs = airy_r(i12.r_s, i23.r_s, delta).norm_sqr();
     let rp = airy_r(r12_p, i23.r_p, delta).norm_sqr();
     0.5 * (rs + rp)
-}
-
-#[test]
-fn assembling_the_pieces_reproduces_the_library() {
-    let cases = sweep(2_000, SWEEP_SEED);
-    let (worst, at) = worst_unpolarised(&cases, |c| assembled(c, phase, false));
-    assert!(worst <= 1e-12, "{worst} at {at:?}");
 }
 
 #[test]
@@ -612,12 +639,12 @@ fn rejects_the_wrong_branch_of_the_evanescent_cosine() {
     // cos θ = −i sqrt(sin²θ − 1) in Born & Wolf's convention: a growing wave. A thick
     // evanescent film then overflows e^{2iδ} to infinity and the sum to NaN.
     let cases = sweep(2_000, SWEEP_SEED);
-    let wrong_branch = |n_sin: f64, n: f64| cos_theta(n_sin, n).conj();
+    let wrong_branch = |n1: f64, cos1: f64, n: f64| cos_theta(n1, cos1, n).conj();
     let (worst, _) = worst_unpolarised(&cases, |c| {
         let Film { n1, n2, n3, .. } = c.film;
-        let n_sin = n1 * c.theta1.sin();
-        let c1 = Complex64::new(c.theta1.cos(), 0.0);
-        let (c2, c3) = (wrong_branch(n_sin, n2), wrong_branch(n_sin, n3));
+        let cos1 = c.theta1.cos();
+        let c1 = Complex64::new(cos1, 0.0);
+        let (c2, c3) = (wrong_branch(n1, cos1, n2), wrong_branch(n1, cos1, n3));
         let (i12, i23) = (interface(n1, c1, n2, c2), interface(n2, c2, n3, c3));
         let delta = phase(n2, c.film.thickness_nm, c2, c.wavelength_nm);
         0.5 * (airy_r(i12.r_s, i23.r_s, delta).norm_sqr()
@@ -631,8 +658,8 @@ fn rejects_the_wrong_branch_of_the_evanescent_cosine() {
 
 /// The seed's denominator has −2 r12 r23 cos φ where the Airy sum gives +2 r12 r23 cos φ
 /// (|1 + r12 r23 e^{iφ}|² = 1 + r12² r23² + 2 r12 r23 cos φ). For the quarter-wave soap film
-/// at normal incidence it gives 0.0836 instead of 0.0771 (so R + T = 1.0065 > 1), and near
-/// grazing incidence it exceeds 1: 631 at 89°.
+/// at normal incidence it gives 0.0836 instead of 0.0771 (so R + T = 1.0064 > 1), and near
+/// grazing incidence it exceeds 1: 2.83 at 89°.
 #[test]
 fn seed_airy_denominator_has_the_wrong_sign() {
     let soap = Film::new(1.0, 1.33, 1.0, 550.0 / (4.0 * 1.33));
@@ -640,12 +667,13 @@ fn seed_airy_denominator_has_the_wrong_sign() {
     let right = soap.response(550.0, 0.0);
     assert!((seed - 0.0836).abs() < 5e-5, "{seed}");
     assert!((right.reflectance() - 0.0771).abs() < 5e-5);
-    assert!((seed + right.transmittance() - 1.0065).abs() < 5e-5);
+    assert!((seed + right.transmittance() - 1.0064).abs() < 5e-5);
     let grazing = seed_reflectance(&soap, 550.0, 89f64.to_radians());
-    assert!((grazing - 631.0).abs() < 1.0, "{grazing}");
+    assert!((grazing - 2.83).abs() < 5e-3, "{grazing}");
     assert!(soap.reflectance(550.0, 89f64.to_radians()) <= 1.0);
     // With the sign corrected (and the seed's other choices kept: s only, real cosines)
-    // the formula is the library's s reflectance wherever the cosines are real.
+    // the formula is the library's s reflectance wherever the cosines are real (short of
+    // exactly grazing, where its real cosines give 0/0).
     let fixed = |f: &Film, l: f64, t: f64| {
         let (n1, n2, n3, d) = (f.n1, f.n2, f.n3, f.thickness_nm);
         let c1 = t.cos();
@@ -659,7 +687,7 @@ fn seed_airy_denominator_has_the_wrong_sign() {
     };
     for case in sweep(2_000, SWEEP_SEED) {
         let f = case.film;
-        if f.n2 >= f.n1 && f.n3 >= f.n1 {
+        if f.n2 >= f.n1 && f.n3 >= f.n1 && case.theta1 < 1.5 {
             let want = f.response(case.wavelength_nm, case.theta1).reflectance_s;
             let got = fixed(&f, case.wavelength_nm, case.theta1);
             assert!((got - want).abs() <= 1e-12, "{got} vs {want} for {case:?}");
@@ -687,24 +715,24 @@ fn seed_real_cosines_give_nan_beyond_the_critical_angle() {
 
 /// The seed uses the s-polarised coefficients for all light. Unpolarised light is the mean
 /// of s and p, and they differ away from normal incidence: for the 300 nm soap film at
-/// 550 nm and 60°, R_s = 0.2186 and R_p = 0.0006, so the seed's choice (even with its sign
-/// fixed) reports 0.2186 where unpolarised light sees 0.1096.
+/// 550 nm and 60°, R_s = 0.0536 and R_p = 0.0017, so the seed's choice (even with its sign
+/// fixed) reports 0.0536 where unpolarised light sees 0.0277, almost twice as much.
 #[test]
 fn seed_uses_s_polarisation_for_unpolarised_light() {
     let soap = Film::new(1.0, 1.33, 1.0, 300.0);
     let r = soap.response(550.0, 60f64.to_radians());
     assert!(
-        (r.reflectance_s - 0.2186).abs() < 5e-5,
+        (r.reflectance_s - 0.0536).abs() < 5e-5,
         "{}",
         r.reflectance_s
     );
     assert!(
-        (r.reflectance_p - 0.0006).abs() < 5e-5,
+        (r.reflectance_p - 0.0017).abs() < 5e-5,
         "{}",
         r.reflectance_p
     );
     assert!(
-        (r.reflectance() - 0.1096).abs() < 5e-5,
+        (r.reflectance() - 0.0277).abs() < 5e-5,
         "{}",
         r.reflectance()
     );
@@ -722,8 +750,8 @@ fn building_block_conventions() {
     assert!((i.r_s + i.r_p).norm() <= 1e-15 && (i.r_s.re + 0.2).abs() <= 1e-15);
     let brewster = 1.5f64.atan();
     let c1 = Complex64::new(brewster.cos(), 0.0);
-    let c2 = cos_theta(brewster.sin(), 1.5);
+    let c2 = cos_theta(1.0, brewster.cos(), 1.5);
     assert!(interface(1.0, c1, 1.5, c2).r_p.norm() <= 1e-15);
-    let ev = cos_theta(1.2, 1.0);
+    let ev = cos_theta(1.5, 0.6, 1.0); // n1 sin θ1 = 1.2 > 1
     assert!(ev.re == 0.0 && ev.im > 0.0);
 }
