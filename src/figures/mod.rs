@@ -4,11 +4,19 @@
 //! into a staging directory first; only when *all* outputs succeeded are they moved into
 //! `figures/` (one rename per file), so a failed run leaves the previous figures intact.
 
+pub mod dispersion;
 pub mod frame;
+pub mod fresnel;
+pub mod lambert;
+pub mod reflect;
+pub mod roulette;
 pub mod sampling;
+pub mod shadow;
+pub mod specular;
 pub mod sphere;
 pub mod stats;
 pub mod tabulated;
+pub mod thinfilm;
 pub mod timing;
 
 use std::fs;
@@ -43,6 +51,14 @@ pub fn all() -> Vec<Output> {
     outputs.extend(sampling::outputs());
     outputs.extend(tabulated::outputs());
     outputs.extend(frame::outputs());
+    outputs.extend(reflect::outputs());
+    outputs.extend(fresnel::outputs());
+    outputs.extend(specular::outputs());
+    outputs.extend(dispersion::outputs());
+    outputs.extend(thinfilm::outputs());
+    outputs.extend(lambert::outputs());
+    outputs.extend(roulette::outputs());
+    outputs.extend(shadow::outputs());
     outputs
 }
 

@@ -1,0 +1,180 @@
+//! Lambertian reflectance. Chapter: *Lambertian reflectance* (`chapters/transport/lambert.md`).
+//!
+//! A Lambertian surface of albedo `rho` has the constant BRDF `f = rho / pi` above the
+//! surface. The factor `1 / pi` is what makes the directional-hemispherical reflectance
+//! `int f cos dw` equal `rho`. Reflected radiance `L_o = int f L cos dw` is estimated with
+//! one direction drawn uniformly on the hemisphere (`2 rho L cos`) or cosine-weighted
+//! (`rho L`). A closed "furnace" of albedo `a` and emission `L_e` has radiance
+//! `L_e / (1 - a)`, simulated here by a random walk.
+//!
+//! The surface normal is `+z` throughout (the chapter *Tangent frames* maps any normal to it).
+
+use std::f64::consts::{FRAC_1_PI, PI, TAU};
+
+use glam::{DVec2, DVec3};
+
+use crate::rng::{self, Rng};
+use crate::sampling::cosine::{cosine_malley, cosine_pdf};
+use crate::sampling::sphere::{HEMISPHERE_PDF, hemisphere_flip, sphere_inverse_cdf};
+use crate::stats::ttest::Summary;
+
+// ANCHOR: brdf
+/// The Lambertian BRDF of albedo `rho` for the normal `+z`: `rho / pi` when both
+/// directions are above the surface, 0 otherwise. Symmetric in its arguments by
+/// construction (Helmholtz reciprocity).
+pub fn lambert_brdf(rho: f64, wi: DVec3, wo: DVec3) -> f64 {
+    if wi.z > 0.0 && wo.z > 0.0 {
+        rho * FRAC_1_PI
+    } else {
+        0.0
+    }
+}
+// ANCHOR_END: brdf
+
+// ANCHOR: quadrature
+/// `int g(w) dw` over the hemisphere `z >= 0`, by the midpoint rule in
+/// `(theta, phi)` with `n` by `2n` cells and the Jacobian `sin theta`:
+/// `int_0^{2 pi} int_0^{pi/2} g sin theta dtheta dphi`. Error `O(1/n^2)` for smooth `g`.
+pub fn hemisphere_quadrature(g: impl Fn(DVec3) -> f64, n: usize) -> f64 {
+    let (dt, dp) = (PI / 2.0 / n as f64, TAU / (2 * n) as f64);
+    let mut sum = 0.0;
+    for i in 0..n {
+        let theta = (i as f64 + 0.5) * dt;
+        let (s, c) = theta.sin_cos();
+        let mut ring = 0.0;
+        for j in 0..2 * n {
+            let phi = (j as f64 + 0.5) * dp;
+            ring += g(DVec3::new(s * phi.cos(), s * phi.sin(), c));
+        }
+        sum += ring * s;
+    }
+    sum * dt * dp
+}
+
+/// The directional-hemispherical reflectance `int f(wi, wo) cos(theta_i) dwi` of a BRDF
+/// for the outgoing direction `wo`, by [`hemisphere_quadrature`].
+pub fn albedo(brdf: impl Fn(DVec3, DVec3) -> f64, wo: DVec3, n: usize) -> f64 {
+    hemisphere_quadrature(|wi| brdf(wi, wo) * wi.z, n)
+}
+// ANCHOR_END: quadrature
+
+// ANCHOR: environments
+/// An environment with a known answer: incident radiance `radiance(w)`, and the exact
+/// reflected radiance of a Lambertian surface of albedo 1 under it (`L_o` is linear in `rho`).
+#[derive(Clone, Copy)]
+pub struct Environment {
+    /// Name for tables.
+    pub name: &'static str,
+    /// Incident radiance from direction `w` (pointing away from the surface).
+    pub radiance: fn(DVec3) -> f64,
+    /// `(1 / pi) int L(w) cos(theta) dw`, derived by hand.
+    pub reflected_white: f64,
+}
+
+/// `L = 1 + z`: `(1/pi) int (1 + cos) cos dw = (1/pi)(pi + 2 pi / 3) = 5/3`.
+pub const GRADIENT: Environment = Environment {
+    name: "L = 1 + z",
+    radiance: |w| 1.0 + w.z,
+    reflected_white: 5.0 / 3.0,
+};
+
+/// A sky `L = max(z, 0)^3`: `(1/pi) 2 pi int_0^1 mu^4 dmu = 2/5`
+/// (in general `2 / (k + 2)` for `max(z, 0)^k`).
+pub const SKY: Environment = Environment {
+    name: "sky L = max(z, 0)^3",
+    radiance: |w| w.z.max(0.0).powi(3),
+    reflected_white: 2.0 / 5.0,
+};
+// ANCHOR_END: environments
+
+// ANCHOR: estimators
+/// One-sample estimate of `L_o` with a direction uniform on the hemisphere:
+/// `f L cos / (1 / (2 pi))`.
+pub fn estimate_uniform(rho: f64, radiance: impl Fn(DVec3) -> f64, u: DVec2) -> f64 {
+    let wi = hemisphere_flip(sphere_inverse_cdf(u), DVec3::Z);
+    lambert_brdf(rho, wi, DVec3::Z) * radiance(wi) * wi.z / HEMISPHERE_PDF
+}
+
+/// One-sample estimate of `L_o` with a cosine-weighted direction: `f L cos / (cos / pi)`.
+/// A direction exactly on the horizon (pdf 0) contributes 0.
+pub fn estimate_cosine(rho: f64, radiance: impl Fn(DVec3) -> f64, u: DVec2) -> f64 {
+    let wi = cosine_malley(u);
+    let pdf = cosine_pdf(wi);
+    if pdf > 0.0 {
+        lambert_brdf(rho, wi, DVec3::Z) * radiance(wi) * wi.z / pdf
+    } else {
+        0.0
+    }
+}
+// ANCHOR_END: estimators
+
+// ANCHOR: seed_forms
+/// The seed's simplification for uniform directions: `2 rho L cos`.
+pub fn seed_uniform(rho: f64, radiance: f64, cos: f64) -> f64 {
+    2.0 * rho * radiance * cos
+}
+
+/// The seed's simplification for cosine-weighted directions: `rho L`.
+pub fn seed_cosine(rho: f64, radiance: f64) -> f64 {
+    rho * radiance
+}
+// ANCHOR_END: seed_forms
+
+/// Summary of `n` one-sample estimates `estimator(u)`, `u` uniform in the unit square.
+pub fn summarize(estimator: impl Fn(DVec2) -> f64, n: usize, rng: &mut Rng) -> Summary {
+    let mut s = Summary::default();
+    for _ in 0..n {
+        let u = DVec2::new(rng::uniform(rng, 0.0, 1.0), rng::uniform(rng, 0.0, 1.0));
+        s.push(estimator(u));
+    }
+    s
+}
+
+/// Exact variance of one estimate under the sky `max(z, 0)^k` with albedo `rho`.
+/// Cosine: `E[(rho L)^2] = rho^2 int z^{2k} z / pi dw = rho^2 / (k + 1)`.
+/// Uniform: `E[(2 rho L z)^2] = 4 rho^2 int z^{2k + 2} / (2 pi) dw = 4 rho^2 / (2k + 3)`.
+/// Both minus the squared mean `(2 rho / (k + 2))^2`. Returns `(uniform, cosine)`.
+pub fn sky_variances(rho: f64, k: i32) -> (f64, f64) {
+    let k = f64::from(k);
+    let mean2 = (2.0 * rho / (k + 2.0)).powi(2);
+    (
+        4.0 * rho * rho / (2.0 * k + 3.0) - mean2,
+        rho * rho / (k + 1.0) - mean2,
+    )
+}
+
+// ANCHOR: furnace
+/// One random walk in a white furnace: every surface is Lambertian with albedo `a` and
+/// emits `emission`, so every direction sees `L = L_e + a L`, i.e. `L = L_e / (1 - a)`.
+///
+/// `bounce(u)` is one bounce's weight `f cos / pdf` for a direction drawn from `u`. The walk
+/// adds `T L_e` at each vertex, multiplies the throughput `T` by the weight, and then
+/// plays Russian roulette with survival probability `p = min(1, T)` (dividing `T` by `p`
+/// on survival; chapter *Russian roulette*). With cosine-weighted directions the weight
+/// is exactly `a`, so this is the walk that continues with probability `a` and counts
+/// vertices. Returns the estimate and the number of vertices.
+pub fn furnace_walk(emission: f64, bounce: impl Fn(DVec2) -> f64, rng: &mut Rng) -> (f64, u32) {
+    let (mut radiance, mut throughput, mut vertices) = (0.0, 1.0, 0);
+    loop {
+        radiance += throughput * emission;
+        vertices += 1;
+        let u = DVec2::new(rng::uniform(rng, 0.0, 1.0), rng::uniform(rng, 0.0, 1.0));
+        throughput *= bounce(u);
+        let p = throughput.min(1.0);
+        if rng::uniform(rng, 0.0, 1.0) >= p {
+            return (radiance, vertices);
+        }
+        throughput /= p;
+    }
+}
+// ANCHOR_END: furnace
+
+/// A furnace bounce with cosine-weighted directions: the weight `f cos / pdf` (= `a`).
+pub fn furnace_bounce_cosine(a: f64, u: DVec2) -> f64 {
+    estimate_cosine(a, |_| 1.0, u)
+}
+
+/// A furnace bounce with uniform directions: the weight `2 a cos`.
+pub fn furnace_bounce_uniform(a: f64, u: DVec2) -> f64 {
+    estimate_uniform(a, |_| 1.0, u)
+}

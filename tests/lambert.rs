@@ -1,0 +1,264 @@
+//! Tests of the chapter *Lambertian reflectance* (`src/transport/lambert.rs`).
+//! t-tests run at `raylemma::stats::test_alpha()` (Šidák across the suite), fixed seeds;
+//! each planted bug is a twin of a passing test that must be rejected.
+
+use std::f64::consts::{FRAC_1_PI, PI, TAU};
+
+use glam::{DVec2, DVec3};
+use raylemma::rng;
+use raylemma::sampling::cosine::{cosine_malley, cosine_pdf};
+use raylemma::sampling::sphere::{hemisphere_flip, sphere_inverse_cdf};
+use raylemma::stats::test_alpha;
+use raylemma::stats::ttest::{self, Summary};
+use raylemma::transport::lambert::*;
+
+const N: usize = 400_000;
+const RHO: f64 = 0.7;
+
+fn accepts(s: &Summary, mu: f64) -> bool {
+    ttest::one_sample(s, mu).unwrap().p_value >= test_alpha()
+}
+
+fn mean_and_p(s: &Summary, mu: f64) -> String {
+    format!(
+        "mean {} vs {mu} (p = {:.3e})",
+        s.mean,
+        ttest::one_sample(s, mu).unwrap().p_value
+    )
+}
+
+/// The albedo int f cos dw of f = rho / pi is rho, for every outgoing direction.
+#[test]
+fn albedo_of_rho_over_pi_is_rho_by_quadrature() {
+    for rho in [0.1, 0.5, 1.0] {
+        for wo in [
+            DVec3::Z,
+            DVec3::new(0.6, 0.0, 0.8),
+            DVec3::new(0.0, 0.99, 0.141),
+        ] {
+            let a = albedo(|wi, wo| lambert_brdf(rho, wi, wo), wo.normalize(), 512);
+            assert!((a - rho).abs() < 1e-5 * rho, "rho {rho}: albedo {a}");
+        }
+    }
+}
+
+/// Planted bug: f = rho (no 1/pi) has albedo pi rho, which exceeds 1 for rho > 1/pi.
+#[test]
+fn planted_brdf_without_one_over_pi_has_albedo_pi_rho() {
+    let a = albedo(|wi, _| if wi.z > 0.0 { RHO } else { 0.0 }, DVec3::Z, 512);
+    assert!((a - PI * RHO).abs() < 1e-5, "albedo {a}");
+    assert!((a - RHO).abs() > 1.0);
+}
+
+/// The seed's chain rho0 int int cos sin = (rho0/2) int int sin 2theta
+/// = (rho0/4) int [-cos 2theta]_0^{pi/2} dphi = (rho0/2) int dphi = rho0 pi, line by line.
+#[test]
+fn seed_normalisation_steps_agree() {
+    let n = 4096;
+    let dt = PI / 2.0 / n as f64;
+    let mid = |g: &dyn Fn(f64) -> f64| (0..n).map(|i| g((i as f64 + 0.5) * dt)).sum::<f64>() * dt;
+    let line1 = TAU * mid(&|t| t.cos() * t.sin());
+    let line2 = 0.5 * TAU * mid(&|t| (2.0 * t).sin());
+    let line3 = 0.25 * TAU * (-(PI).cos() + 0f64.cos());
+    let line4 = 0.5 * TAU;
+    for (k, v) in [line1, line2, line3, line4].into_iter().enumerate() {
+        assert!((v - PI).abs() < 1e-6, "line {}: {v}", k + 1);
+    }
+    // So the constant BRDF value rho0 conserves energy (albedo <= 1) iff rho0 <= 1/pi.
+    for rho0 in [0.9 * FRAC_1_PI, FRAC_1_PI, 1.1 * FRAC_1_PI] {
+        let a = albedo(|wi, _| if wi.z > 0.0 { rho0 } else { 0.0 }, DVec3::Z, 256);
+        assert_eq!(
+            a <= 1.0 + 1e-4,
+            rho0 <= FRAC_1_PI,
+            "rho0 {rho0}: albedo {a}"
+        );
+    }
+}
+
+/// The albedo of rho / pi is rho by Monte Carlo too (cosine-free uniform estimator of
+/// int f cos dw, one-sample t-test).
+#[test]
+fn albedo_of_rho_over_pi_is_rho_by_monte_carlo() {
+    let s = summarize(
+        |u| estimate_uniform(RHO, |_| 1.0, u),
+        N,
+        &mut rng::seeded(11),
+    );
+    assert!(accepts(&s, RHO), "{}", mean_and_p(&s, RHO));
+}
+
+#[test]
+fn reciprocity() {
+    let mut r = rng::seeded(12);
+    for _ in 0..10_000 {
+        let (a, b) = (rng::unit_vector(&mut r), rng::unit_vector(&mut r));
+        assert_eq!(lambert_brdf(RHO, a, b), lambert_brdf(RHO, b, a));
+    }
+}
+
+/// The hand-derived exact answers of both environments agree with quadrature.
+#[test]
+fn environments_exact_answers_match_quadrature() {
+    for env in [GRADIENT, SKY] {
+        let q = FRAC_1_PI * hemisphere_quadrature(|w| (env.radiance)(w) * w.z, 512);
+        assert!((q - env.reflected_white).abs() < 1e-5, "{}: {q}", env.name);
+    }
+}
+
+/// The seed takes L_i out of the integral, which is only right for a constant L_i. Under
+/// the sky max(z,0)^3 the reflected radiance is 2 rho / 5, while rho times any single value
+/// of L_i, or rho times its hemispherical average 1/4, is not.
+#[test]
+fn incoming_radiance_cannot_leave_the_integral() {
+    let average = hemisphere_quadrature(SKY.radiance, 512) / TAU;
+    assert!((average - 0.25).abs() < 1e-5, "average {average}");
+    assert!((SKY.reflected_white - average).abs() > 0.1);
+}
+
+/// Both estimators of reflected radiance are unbiased under both environments.
+#[test]
+fn reflected_radiance_estimators_are_unbiased() {
+    for (seed, env) in [(13, GRADIENT), (14, SKY)] {
+        let exact = RHO * env.reflected_white;
+        let u = summarize(
+            |u| estimate_uniform(RHO, env.radiance, u),
+            N,
+            &mut rng::seeded(seed),
+        );
+        assert!(
+            accepts(&u, exact),
+            "uniform, {}: {}",
+            env.name,
+            mean_and_p(&u, exact)
+        );
+        let c = summarize(
+            |u| estimate_cosine(RHO, env.radiance, u),
+            N,
+            &mut rng::seeded(seed + 100),
+        );
+        assert!(
+            accepts(&c, exact),
+            "cosine, {}: {}",
+            env.name,
+            mean_and_p(&c, exact)
+        );
+    }
+}
+
+/// The seed's simplified forms 2 rho L cos and rho L equal the general f L cos / pdf.
+#[test]
+fn seed_simplified_forms_match_the_general_estimator() {
+    let mut r = rng::seeded(15);
+    for _ in 0..10_000 {
+        let u = DVec2::new(
+            rng::uniform(&mut r, 0.0, 1.0),
+            rng::uniform(&mut r, 0.0, 1.0),
+        );
+        let wi = hemisphere_flip(sphere_inverse_cdf(u), DVec3::Z);
+        let general = estimate_uniform(RHO, SKY.radiance, u);
+        let seed = seed_uniform(RHO, (SKY.radiance)(wi), wi.z);
+        assert!((general - seed).abs() <= 1e-14, "{general} vs {seed}");
+        let wi = cosine_malley(u);
+        let general = estimate_cosine(RHO, SKY.radiance, u);
+        let seed = seed_cosine(RHO, (SKY.radiance)(wi));
+        assert!((general - seed).abs() <= 1e-14, "{general} vs {seed}");
+    }
+}
+
+/// Measured variances match the formulas of `sky_variances` (sky, k = 3) within 3 %, and
+/// cosine sampling has less than a third of uniform sampling's variance there.
+#[test]
+fn sky_variances_match_the_formula() {
+    let (vu, vc) = sky_variances(RHO, 3);
+    let u = summarize(
+        |u| estimate_uniform(RHO, SKY.radiance, u),
+        N,
+        &mut rng::seeded(16),
+    );
+    let c = summarize(
+        |u| estimate_cosine(RHO, SKY.radiance, u),
+        N,
+        &mut rng::seeded(17),
+    );
+    assert!(
+        (u.variance() / vu - 1.0).abs() < 0.03,
+        "uniform {} vs {vu}",
+        u.variance()
+    );
+    assert!(
+        (c.variance() / vc - 1.0).abs() < 0.03,
+        "cosine {} vs {vc}",
+        c.variance()
+    );
+    assert!(3.0 * vc < vu);
+}
+
+// Planted bugs: each estimator with one mistake, rejected by the same t-test.
+
+fn bug_rho_not_over_pi(u: DVec2) -> f64 {
+    let wi = cosine_malley(u);
+    RHO * (SKY.radiance)(wi) * wi.z / cosine_pdf(wi)
+}
+
+fn bug_cosine_extra_cos(u: DVec2) -> f64 {
+    let wi = cosine_malley(u);
+    RHO * (SKY.radiance)(wi) * wi.z
+}
+
+fn bug_uniform_missing_2(u: DVec2) -> f64 {
+    let wi = hemisphere_flip(sphere_inverse_cdf(u), DVec3::Z);
+    RHO * (SKY.radiance)(wi) * wi.z
+}
+
+#[test]
+fn planted_bugs_are_rejected() {
+    let exact = RHO * SKY.reflected_white;
+    type Estimator = fn(DVec2) -> f64;
+    let bugs: [(&str, Estimator); 3] = [
+        ("f = rho", bug_rho_not_over_pi),
+        ("cosine with extra cos", bug_cosine_extra_cos),
+        ("uniform missing 2", bug_uniform_missing_2),
+    ];
+    for (k, (name, bug)) in bugs.into_iter().enumerate() {
+        let s = summarize(bug, N, &mut rng::seeded(20 + k as u64));
+        assert!(!accepts(&s, exact), "{name}: {}", mean_and_p(&s, exact));
+    }
+}
+
+/// White furnace: L = L_e / (1 - a), with cosine-weighted bounces (the walk that continues
+/// with probability a) and uniform bounces (throughput 2 a cos, roulette on it).
+#[test]
+fn white_furnace() {
+    for (seed, a) in [(30, 0.5), (31, 0.8)] {
+        let exact = 1.0 / (1.0 - a);
+        let c = Summary::of((0..N).scan(rng::seeded(seed), |r, _| {
+            Some(furnace_walk(1.0, |u| furnace_bounce_cosine(a, u), r).0)
+        }));
+        assert!(
+            accepts(&c, exact),
+            "cosine walk, a = {a}: {}",
+            mean_and_p(&c, exact)
+        );
+        let u = Summary::of((0..N).scan(rng::seeded(seed + 100), |r, _| {
+            Some(furnace_walk(1.0, |u| furnace_bounce_uniform(a, u), r).0)
+        }));
+        assert!(
+            accepts(&u, exact),
+            "uniform walk, a = {a}: {}",
+            mean_and_p(&u, exact)
+        );
+    }
+}
+
+/// Planted bug in the furnace: f = rho makes every bounce weigh pi a; for a = 0.2 the walk
+/// converges to 1 / (1 - 0.2 pi) = 2.69 instead of 1.25.
+#[test]
+fn planted_furnace_with_f_equal_rho_is_rejected() {
+    let a = 0.2;
+    let s = Summary::of((0..N).scan(rng::seeded(32), |r, _| {
+        Some(furnace_walk(1.0, |u| PI * furnace_bounce_cosine(a, u), r).0)
+    }));
+    assert!(!accepts(&s, 1.0 / (1.0 - a)), "{}", mean_and_p(&s, 1.25));
+    let wrong = 1.0 / (1.0 - PI * a);
+    assert!(accepts(&s, wrong), "{}", mean_and_p(&s, wrong));
+}
