@@ -7,14 +7,17 @@
 //! * [`real`]: the two precisions the geometry is written for.
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
+//! * [`data`]: errors of data files (file, line, problem).
 //! * [`rng`]: the seeded generator every test and figure uses.
 //! * [`stats`]: chi-squared, Kolmogorov-Smirnov and t-tests, with Šidák correction.
 //! * [`sampling`]: warps and tabulated distributions (*Sampling*).
 //! * [`optics`]: reflection, refraction, Fresnel, specular deltas, dispersion, thin films.
+//! * [`spectral`]: spectra, CIE colour, wavelength sampling, emission spectra, display.
 //! * [`transport`]: Lambertian reflectance, Russian roulette, shadow-ray pdfs.
 //! * [`figures`]: the code that draws the book's figures and tables.
 
 pub mod check;
+pub mod data;
 pub mod figures;
 pub mod geometry;
 pub mod optics;
@@ -22,5 +25,6 @@ pub mod plot;
 pub mod real;
 pub mod rng;
 pub mod sampling;
+pub mod spectral;
 pub mod stats;
 pub mod transport;

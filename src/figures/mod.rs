@@ -4,7 +4,10 @@
 //! into a staging directory first; only when *all* outputs succeeded are they moved into
 //! `figures/` (one rename per file), so a failed run leaves the previous figures intact.
 
+pub mod colour;
 pub mod dispersion;
+pub mod display;
+pub mod emission;
 pub mod frame;
 pub mod fresnel;
 pub mod lambert;
@@ -18,6 +21,8 @@ pub mod stats;
 pub mod tabulated;
 pub mod thinfilm;
 pub mod timing;
+pub mod upsample;
+pub mod wavelength;
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -59,6 +64,11 @@ pub fn all() -> Vec<Output> {
     outputs.extend(lambert::outputs());
     outputs.extend(roulette::outputs());
     outputs.extend(shadow::outputs());
+    outputs.extend(colour::outputs());
+    outputs.extend(wavelength::outputs());
+    outputs.extend(emission::outputs());
+    outputs.extend(display::outputs());
+    outputs.extend(upsample::outputs());
     outputs
 }
 

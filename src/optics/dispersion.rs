@@ -11,7 +11,6 @@
 //! micrometres inside the Sellmeier formula (the catalogues' unit). Angles are in radians.
 
 use std::f64::consts::PI;
-use std::fmt;
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -101,29 +100,7 @@ impl Sellmeier {
 // ---------------------------------------------------------------------------------------
 // The table and its parser.
 
-/// A problem with a data file: which file, which line (1-based; 0 for the whole file),
-/// and what is wrong.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct DataError {
-    /// The file's name or path, as given to the parser.
-    pub file: String,
-    /// The line, counting from 1; 0 when the problem is not on one line.
-    pub line: usize,
-    /// What is wrong, in words.
-    pub problem: String,
-}
-
-impl fmt::Display for DataError {
-    fn fmt(&self, out: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.line == 0 {
-            write!(out, "{}: {}", self.file, self.problem)
-        } else {
-            write!(out, "{}:{}: {}", self.file, self.line, self.problem)
-        }
-    }
-}
-
-impl std::error::Error for DataError {}
+pub use crate::data::DataError;
 
 /// A set of Sellmeier fits, in file order.
 #[derive(Clone, Debug, PartialEq)]
@@ -339,12 +316,7 @@ fn parse_row(fields: &[&str]) -> Result<Sellmeier, String> {
 /// # Errors
 /// If the file cannot be read (line 0), or as [`parse`].
 pub fn load(path: &Path) -> Result<Catalogue, DataError> {
-    let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| DataError {
-        file: name.clone(),
-        line: 0,
-        problem: format!("cannot read the file: {e}"),
-    })?;
+    let (text, name) = crate::data::read_text(path)?;
     parse(&text, &name)
 }
 

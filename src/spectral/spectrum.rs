@@ -1,0 +1,365 @@
+//! Spectra: what the scenes need and nothing more. Chapter: *Spectra and CIE colour*
+//! (`chapters/spectral/colour.md`).
+//!
+//! A spectrum is a function of wavelength λ in nanometres. Three kinds cover every scene:
+//!
+//! * a [`Table`]: values at increasing wavelengths, linear between them and zero outside
+//!   (measured reflectances, lamp and illuminant spectra, read from CSV files in `data/`);
+//! * a blackbody, by Planck's law
+//!   `B(λ, T) = 2hc² / λ⁵ / (exp(hc / (λ k T)) − 1)`;
+//! * a constant.
+
+use std::path::Path;
+
+use crate::data::DataError;
+
+/// Planck's constant, J s (exact in the SI since 2019).
+pub const PLANCK_H: f64 = 6.626_070_15e-34;
+/// The speed of light in vacuum, m/s (exact).
+pub const LIGHT_C: f64 = 299_792_458.0;
+/// Boltzmann's constant, J/K (exact).
+pub const BOLTZMANN_K: f64 = 1.380_649e-23;
+/// Wien's displacement constant b, m K: the peak of `B(λ, T)` is at `λ = b / T`.
+pub const WIEN_B: f64 = 2.897_771_955e-3;
+
+// ANCHOR: table
+/// A piecewise-linear spectrum: `values[i]` at `nm[i]` (strictly increasing), linear in
+/// between and zero outside `[nm[0], nm[n-1]]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Table {
+    nm: Vec<f64>,
+    values: Vec<f64>,
+}
+
+impl Table {
+    /// A table from its wavelengths (nm) and values.
+    ///
+    /// # Errors
+    /// If there are fewer than two points, the lengths differ, a number is not finite, a
+    /// value is negative, or the wavelengths do not strictly increase. The message names
+    /// the offending index.
+    pub fn new(nm: Vec<f64>, values: Vec<f64>) -> Result<Self, String> {
+        if nm.len() != values.len() {
+            return Err(format!(
+                "{} wavelengths but {} values",
+                nm.len(),
+                values.len()
+            ));
+        }
+        if nm.len() < 2 {
+            return Err(format!("{} points; a table needs at least 2", nm.len()));
+        }
+        for (i, (&l, &v)) in nm.iter().zip(&values).enumerate() {
+            if !l.is_finite() || !v.is_finite() {
+                return Err(format!("point {i}: ({l}, {v}) is not finite"));
+            }
+            if v < 0.0 {
+                return Err(format!("point {i}: value {v} at {l} nm is negative"));
+            }
+            if i > 0 && l <= nm[i - 1] {
+                return Err(format!(
+                    "point {i}: wavelength {l} nm is not greater than the previous {} nm",
+                    nm[i - 1]
+                ));
+            }
+        }
+        Ok(Table { nm, values })
+    }
+
+    /// The value at `nm`: linear interpolation, zero outside the table.
+    pub fn eval(&self, nm: f64) -> f64 {
+        let (first, last) = (self.nm[0], self.nm[self.nm.len() - 1]);
+        // NaN fails both comparisons and is mapped to 0 like any wavelength outside.
+        if !(nm >= first && nm <= last) {
+            return 0.0;
+        }
+        // The first knot strictly above nm; nm == last lands in the final segment.
+        let hi = self.nm.partition_point(|&x| x <= nm).min(self.nm.len() - 1);
+        let lo = hi - 1;
+        let t = (nm - self.nm[lo]) / (self.nm[hi] - self.nm[lo]);
+        self.values[lo] + t * (self.values[hi] - self.values[lo])
+    }
+    // ANCHOR_END: table
+
+    /// The wavelengths, nm.
+    pub fn wavelengths(&self) -> &[f64] {
+        &self.nm
+    }
+
+    /// The values.
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+
+    /// The same table with every value multiplied by `k ≥ 0`.
+    pub fn scaled(&self, k: f64) -> Table {
+        Table {
+            nm: self.nm.clone(),
+            values: self.values.iter().map(|v| v * k).collect(),
+        }
+    }
+
+    /// The exact integral of the piecewise-linear function over its range (trapezoids).
+    pub fn integral(&self) -> f64 {
+        self.nm
+            .windows(2)
+            .zip(self.values.windows(2))
+            .map(|(l, v)| 0.5 * (v[0] + v[1]) * (l[1] - l[0]))
+            .sum()
+    }
+}
+
+// ANCHOR: planck
+/// Planck's law: the spectral radiance of a blackbody at `kelvin`, at wavelength `nm`, in
+/// W sr⁻¹ m⁻² nm⁻¹. `exp_m1` keeps the denominator accurate far into the red, where
+/// `hc / (λ k T)` is small.
+pub fn planck(nm: f64, kelvin: f64) -> f64 {
+    let l = nm * 1e-9;
+    let x = PLANCK_H * LIGHT_C / (l * BOLTZMANN_K * kelvin);
+    2.0 * PLANCK_H * LIGHT_C * LIGHT_C / l.powi(5) / x.exp_m1() * 1e-9
+}
+// ANCHOR_END: planck
+
+/// Planck's law divided by its own maximum (at Wien's `λ = b / T`), so that the peak is 1.
+pub fn planck_normalised(nm: f64, kelvin: f64) -> f64 {
+    planck(nm, kelvin) / planck(WIEN_B / kelvin * 1e9, kelvin)
+}
+
+/// A spectrum of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Spectrum {
+    /// The same value at every wavelength.
+    Constant(f64),
+    /// A measured table.
+    Table(Table),
+    /// A blackbody at `kelvin`, scaled so that its peak value is `peak`.
+    Blackbody {
+        /// Temperature, K.
+        kelvin: f64,
+        /// The value at the peak wavelength.
+        peak: f64,
+    },
+}
+
+impl Spectrum {
+    /// The value at wavelength `nm`.
+    pub fn eval(&self, nm: f64) -> f64 {
+        match self {
+            Spectrum::Constant(c) => *c,
+            Spectrum::Table(t) => t.eval(nm),
+            Spectrum::Blackbody { kelvin, peak } => peak * planck_normalised(nm, *kelvin),
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// CSV tables.
+
+/// The name of the wavelength column every spectrum CSV starts with.
+pub const WAVELENGTH_COLUMN: &str = "wavelength_nm";
+
+/// Parses a spectrum CSV: a header `wavelength_nm,<name>,<name>...`, then one row per
+/// wavelength. Lines that are blank or start with `#` are skipped. Returns one named
+/// [`Table`] per value column, in file order. `file` names the file in errors.
+///
+/// # Errors
+/// With the line and reason: no header, a first column not called `wavelength_nm`, no
+/// value column, a repeated column name, a row with a missing or extra field, a field that
+/// is not a number, a NaN or infinite number, a negative value, wavelengths that do not
+/// strictly increase, fewer than two rows, or a range with no overlap with
+/// 360-830 nm (the colour-matching range).
+pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataError> {
+    let err = |line: usize, problem: String| DataError::new(file, line, problem);
+    let mut rows = text
+        .lines()
+        .enumerate()
+        .map(|(k, l)| (k + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let (header_line, header) = rows
+        .next()
+        .ok_or_else(|| err(0, "the file is empty: no header".into()))?;
+    let names: Vec<&str> = header.split(',').map(str::trim).collect();
+    if names[0] != WAVELENGTH_COLUMN {
+        return Err(err(
+            header_line,
+            format!(
+                "the first column is {:?}; it must be {WAVELENGTH_COLUMN:?}",
+                names[0]
+            ),
+        ));
+    }
+    if names.len() < 2 {
+        return Err(err(
+            header_line,
+            "no value column after wavelength_nm".into(),
+        ));
+    }
+    for (i, n) in names.iter().enumerate() {
+        if n.is_empty() {
+            return Err(err(header_line, format!("column {} has no name", i + 1)));
+        }
+        if names[..i].contains(n) {
+            return Err(err(header_line, format!("column {n:?} appears twice")));
+        }
+    }
+    let columns = names.len() - 1;
+    let mut nm: Vec<f64> = Vec::new();
+    let mut values: Vec<Vec<f64>> = vec![Vec::new(); columns];
+    let mut last_line = header_line;
+    for (line, row) in rows {
+        last_line = line;
+        let fields: Vec<&str> = row.split(',').map(str::trim).collect();
+        if fields.len() != names.len() {
+            return Err(err(
+                line,
+                format!(
+                    "{} fields; the header ({}) has {}",
+                    fields.len(),
+                    names.join(","),
+                    names.len()
+                ),
+            ));
+        }
+        for (c, field) in fields.iter().enumerate() {
+            let x: f64 = field
+                .parse()
+                .map_err(|_| err(line, format!("{}: {field:?} is not a number", names[c])))?;
+            if !x.is_finite() {
+                return Err(err(line, format!("{}: {x} is not finite", names[c])));
+            }
+            if c == 0 {
+                if let Some(&prev) = nm.last()
+                    && x <= prev
+                {
+                    return Err(err(
+                        line,
+                        format!("wavelength {x} nm is not greater than the previous {prev} nm"),
+                    ));
+                }
+                nm.push(x);
+            } else {
+                if x < 0.0 {
+                    return Err(err(line, format!("{}: {x} is negative", names[c])));
+                }
+                values[c - 1].push(x);
+            }
+        }
+    }
+    if nm.len() < 2 {
+        return Err(err(
+            last_line,
+            format!("{} data rows; a spectrum needs at least 2", nm.len()),
+        ));
+    }
+    let (lo, hi) = (nm[0], nm[nm.len() - 1]);
+    if lo.max(super::LAMBDA_MIN) >= hi.min(super::LAMBDA_MAX) {
+        return Err(err(
+            0,
+            format!(
+                "the wavelengths {lo}-{hi} nm do not overlap {}-{} nm",
+                super::LAMBDA_MIN,
+                super::LAMBDA_MAX
+            ),
+        ));
+    }
+    Ok(names[1..]
+        .iter()
+        .zip(values)
+        .map(|(n, v)| {
+            let t = Table::new(nm.clone(), v).expect("rows were checked one by one");
+            (n.to_string(), t)
+        })
+        .collect())
+}
+
+/// Reads and parses the spectrum CSV at `path` (see [`parse_csv`]).
+///
+/// # Errors
+/// If the file cannot be read (line 0), or as [`parse_csv`].
+pub fn load_csv(path: &Path) -> Result<Vec<(String, Table)>, DataError> {
+    let (text, name) = crate::data::read_text(path)?;
+    parse_csv(&text, &name)
+}
+
+/// The column `column` of a parsed file, or an error naming the columns there are.
+///
+/// # Errors
+/// If there is no such column.
+pub fn column(tables: &[(String, Table)], column: &str, file: &str) -> Result<Table, DataError> {
+    tables
+        .iter()
+        .find(|(n, _)| n == column)
+        .map(|(_, t)| t.clone())
+        .ok_or_else(|| {
+            let names: Vec<&str> = tables.iter().map(|(n, _)| n.as_str()).collect();
+            DataError::new(
+                file,
+                0,
+                format!("no column {column:?}; the file has {}", names.join(", ")),
+            )
+        })
+}
+
+// ANCHOR: builtin
+/// The spectrum tables shipped in `data/`, embedded in the binary so that tests and
+/// figures need no files at run time: `(file name, contents)`.
+pub const BUILTIN: &[(&str, &str)] = &[
+    (
+        "cie_illuminant_A.csv",
+        include_str!("../../data/cie_illuminant_A.csv"),
+    ),
+    (
+        "cie_illuminant_D65.csv",
+        include_str!("../../data/cie_illuminant_D65.csv"),
+    ),
+    (
+        "cie_illuminant_F2.csv",
+        include_str!("../../data/cie_illuminant_F2.csv"),
+    ),
+    (
+        "cie_illuminant_F11.csv",
+        include_str!("../../data/cie_illuminant_F11.csv"),
+    ),
+    (
+        "cie_illuminant_HP1_high_pressure_sodium.csv",
+        include_str!("../../data/cie_illuminant_HP1_high_pressure_sodium.csv"),
+    ),
+    (
+        "cie_illuminant_LED_B3.csv",
+        include_str!("../../data/cie_illuminant_LED_B3.csv"),
+    ),
+    (
+        "lamp_cool_white_fluorescent.csv",
+        include_str!("../../data/lamp_cool_white_fluorescent.csv"),
+    ),
+    (
+        "lamp_high_pressure_sodium.csv",
+        include_str!("../../data/lamp_high_pressure_sodium.csv"),
+    ),
+    (
+        "lamp_incandescent.csv",
+        include_str!("../../data/lamp_incandescent.csv"),
+    ),
+    (
+        "lamp_low_pressure_sodium.csv",
+        include_str!("../../data/lamp_low_pressure_sodium.csv"),
+    ),
+    (
+        "lamp_phosphor_led_yag.csv",
+        include_str!("../../data/lamp_phosphor_led_yag.csv"),
+    ),
+];
+// ANCHOR_END: builtin
+
+/// The first value column of the built-in table `file` (a name in [`BUILTIN`]).
+///
+/// # Panics
+/// If there is no such file, or it is malformed (a defect of the build, caught by the tests).
+pub fn builtin(file: &str) -> Table {
+    let (_, text) = BUILTIN
+        .iter()
+        .find(|(n, _)| *n == file)
+        .unwrap_or_else(|| panic!("no built-in spectrum {file:?}"));
+    let mut tables = parse_csv(text, file).unwrap_or_else(|e| panic!("{e}"));
+    tables.swap_remove(0).1
+}
