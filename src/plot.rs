@@ -109,16 +109,79 @@ pub fn line_chart_png(panels: &[Panel], width: u32, height: u32) -> Result<Vec<u
         root.fill(&WHITE)?;
         let areas = root.split_evenly((1, panels.len().max(1)));
         for (panel, area) in panels.iter().zip(areas.iter()) {
-            draw_panel(panel, area)?;
+            draw_panel(panel, area, &Style::default())?;
         }
         root.present()?;
     }
     encode_png(width, height, buffer)
 }
 
+/// Where a panel's legend goes, when it is not left to [`line_chart_png`]'s choice of the
+/// emptiest corner.
+#[derive(Clone, Copy, Debug)]
+pub enum Legend {
+    /// Top right.
+    UpperRight,
+    /// Bottom right.
+    LowerRight,
+    /// Top left.
+    UpperLeft,
+}
+
+/// A linear panel with its own x range, y range and legend position.
+pub type RangedPanel = (Panel, (f64, f64), (f64, f64), Legend);
+
+/// Linear panels side by side, each with the axis ranges given, curves as lines without
+/// markers. For curves whose interesting variation is a few percent of their value:
+/// [`line_chart_png`] starts every linear axis at 0, which would flatten them.
+pub fn ranged_chart_png(
+    panels: &[RangedPanel],
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, BoxError> {
+    register_embedded_font();
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let areas = root.split_evenly((1, panels.len().max(1)));
+        for ((panel, xr, yr, legend), area) in panels.iter().zip(areas.iter()) {
+            let linear = Panel {
+                x_scale: Scale::Linear,
+                y_scale: Scale::Linear,
+                ..panel.clone()
+            };
+            let style = Style {
+                ranges: Some((*xr, *yr)),
+                legend: Some(match legend {
+                    Legend::UpperRight => SeriesLabelPosition::UpperRight,
+                    Legend::LowerRight => SeriesLabelPosition::LowerRight,
+                    Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
+                }),
+                lines_only: true,
+            };
+            draw_panel(&linear, area, &style)?;
+        }
+        root.present()?;
+    }
+    encode_png(width, height, buffer)
+}
+
+/// How a panel departs from the automatic layout.
+#[derive(Default)]
+struct Style {
+    /// Fixed (x, y) ranges instead of ranges fitted to the data.
+    ranges: Option<((f64, f64), (f64, f64))>,
+    /// A fixed legend position instead of the emptiest corner.
+    legend: Option<SeriesLabelPosition>,
+    /// No circle at each point.
+    lines_only: bool,
+}
+
 fn draw_panel(
     panel: &Panel,
     area: &DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>,
+    style: &Style,
 ) -> Result<(), BoxError> {
     let pts = || {
         panel
@@ -127,9 +190,15 @@ fn draw_panel(
             .flat_map(|s| s.points.iter().copied())
             .filter(|&p| usable(p, panel.x_scale, panel.y_scale))
     };
-    let (x0, x1) = range(pts().map(|p| p.0), panel.x_scale);
-    let (y0, y1) = range(pts().map(|p| p.1), panel.y_scale);
-    let legend = emptiest_corner(pts(), (x0, x1, panel.x_scale), (y0, y1, panel.y_scale));
+    let ((x0, x1), (y0, y1)) = style.ranges.unwrap_or_else(|| {
+        (
+            range(pts().map(|p| p.0), panel.x_scale),
+            range(pts().map(|p| p.1), panel.y_scale),
+        )
+    });
+    let legend = style.legend.clone().unwrap_or_else(|| {
+        emptiest_corner(pts(), (x0, x1, panel.x_scale), (y0, y1, panel.y_scale))
+    });
     let mut builder = ChartBuilder::on(area);
     builder
         .caption(&panel.title, ("sans-serif", 18))
@@ -163,11 +232,13 @@ fn draw_panel(
                     .legend(move |(x, y)| {
                         PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
                     });
-                chart.draw_series(
-                    points
-                        .into_iter()
-                        .map(|p| Circle::new(p, 3, color.filled())),
-                )?;
+                if !style.lines_only {
+                    chart.draw_series(
+                        points
+                            .into_iter()
+                            .map(|p| Circle::new(p, 3, color.filled())),
+                    )?;
+                }
             }
             chart
                 .configure_series_labels()

@@ -2,14 +2,12 @@
 
 use std::fmt::Write as _;
 
-use plotters::prelude::*;
-
 use super::{Output, Settings};
 use crate::optics::dispersion::{
     self as disp, FUSED_SILICA, LINE_C_NM, LINE_D_NM, LINE_F_NM, N_BK7, PrismPath, RENDER_RANGE_NM,
     WATER,
 };
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{BoxError, Panel, Scale, Series};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -49,78 +47,7 @@ pub fn outputs() -> Vec<Output> {
 
 const MATERIALS: [&str; 3] = [N_BK7, FUSED_SILICA, WATER];
 
-/// Where a panel's legend goes.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Legend {
-    UpperRight,
-    LowerRight,
-    UpperLeft,
-}
-
-/// A panel with its x range, y range and legend position.
-pub(crate) type RangedPanel = (Panel, (f64, f64), (f64, f64), Legend);
-
-/// Linear panels side by side, each with its own axis ranges, curves drawn as lines only
-/// (`plot::line_chart_png` starts every linear axis at 0, which would flatten these
-/// curves: the effects of dispersion are a few percent of the quantities plotted).
-pub(crate) fn ranged_chart_png(
-    panels: &[RangedPanel],
-    width: u32,
-    height: u32,
-) -> Result<Vec<u8>, BoxError> {
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let areas = root.split_evenly((1, panels.len().max(1)));
-        for ((panel, xr, yr, legend), area) in panels.iter().zip(areas.iter()) {
-            let mut chart = ChartBuilder::on(area)
-                .caption(&panel.title, ("sans-serif", 18))
-                .margin(12)
-                .x_label_area_size(40)
-                .y_label_area_size(70)
-                .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)?;
-            chart
-                .configure_mesh()
-                .x_desc(&panel.x_label)
-                .y_desc(&panel.y_label)
-                .label_style(("sans-serif", 13))
-                .axis_desc_style(("sans-serif", 15))
-                .x_label_formatter(&|v| plot::format_tick(*v))
-                .y_label_formatter(&|v| plot::format_tick(*v))
-                .draw()?;
-            for (k, s) in panel.series.iter().enumerate() {
-                let color = plot::PALETTE[k % plot::PALETTE.len()];
-                let points: Vec<(f64, f64)> = s
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|p| p.0.is_finite() && p.1.is_finite())
-                    .collect();
-                chart
-                    .draw_series(LineSeries::new(points, color.stroke_width(2)))?
-                    .label(&s.label)
-                    .legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-                    });
-            }
-            chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .label_font(("sans-serif", 13))
-                .position(match legend {
-                    Legend::UpperRight => SeriesLabelPosition::UpperRight,
-                    Legend::LowerRight => SeriesLabelPosition::LowerRight,
-                    Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
-                })
-                .draw()?;
-        }
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
-}
+pub(crate) use crate::plot::{Legend, ranged_chart_png};
 
 /// The range of the points of `series`, padded by 5 % each side.
 fn y_range(series: &[Series]) -> (f64, f64) {

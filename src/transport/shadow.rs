@@ -77,6 +77,31 @@ pub struct LightSample {
     pub cos_light: f64,
 }
 
+// ANCHOR: seen_from
+impl LightSample {
+    /// The sample at `point` (unit normal `normal`, area density `pdf_area`) as seen from
+    /// `p`: its direction, distance and density per steradian. `None` when `p` lies on the
+    /// light or the density is zero (an edge-on point).
+    pub fn seen_from(p: DVec3, point: DVec3, normal: DVec3, pdf_area: f64) -> Option<Self> {
+        let v = point - p;
+        let dist = v.length();
+        if dist.is_nan() || dist <= 0.0 {
+            return None;
+        }
+        let dir = v / dist;
+        let cos_light = normal.dot(dir);
+        let pdf = area_to_solid_angle(pdf_area, dist, cos_light);
+        (pdf > 0.0).then_some(LightSample {
+            point,
+            dir,
+            dist,
+            pdf,
+            cos_light,
+        })
+    }
+}
+// ANCHOR_END: seen_from
+
 /// Where a ray from `p` first meets a light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
@@ -208,21 +233,7 @@ impl Light for QuadLight {
     /// Uniform in area (`p_A = 1 / area`), converted to solid angle.
     fn sample(&self, p: DVec3, u: DVec2) -> Option<LightSample> {
         let point = self.corner + u.x * self.e1 + u.y * self.e2;
-        let v = point - p;
-        let dist = v.length();
-        if dist.is_nan() || dist <= 0.0 {
-            return None; // p lies on the light
-        }
-        let dir = v / dist;
-        let cos_light = self.normal.dot(dir);
-        let pdf = area_to_solid_angle(1.0 / self.area, dist, cos_light);
-        (pdf > 0.0).then_some(LightSample {
-            point,
-            dir,
-            dist,
-            pdf,
-            cos_light,
-        })
+        LightSample::seen_from(p, point, self.normal, 1.0 / self.area)
     }
     // ANCHOR_END: quad_sample
 
@@ -343,19 +354,8 @@ impl Light for SphereLight {
         let local = DVec3::new(sin_a * phi.cos(), sin_a * phi.sin(), cos_a);
         let normal = Frame::from_normal(axis).to_world(local);
         let point = self.center + self.radius * normal;
-        let v = point - p;
-        let dist = v.length();
-        let dir = v / dist;
-        let cos_light = normal.dot(dir);
         let pdf_area = 1.0 / (TAU * self.radius * self.radius * h);
-        let pdf = area_to_solid_angle(pdf_area, dist, cos_light);
-        (pdf > 0.0).then_some(LightSample {
-            point,
-            dir,
-            dist,
-            pdf,
-            cos_light,
-        })
+        LightSample::seen_from(p, point, normal, pdf_area)
     }
     // ANCHOR_END: sphere_sample
 
