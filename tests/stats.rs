@@ -33,6 +33,8 @@ fn sidak_levels() {
     // 1 - 0.99^(1/100) = 1.004983e-4 (not the first-order -ln(0.99)/100 = 1.005034e-4).
     assert_rel(sidak(0.01, 100), 1.004_983_08e-4, 1e-8);
     assert_rel(-(-0.01f64).ln_1p() / 100.0, 1.005_03e-4, 1e-5);
+    // The suite's budget of 200: 1 - 0.99^(1/200) = 5.025042e-5 (40-digit decimal arithmetic).
+    assert_rel(sidak(0.01, 200), 5.025_041_667e-5, 1e-8);
     assert_eq!(test_alpha(), sidak(SUITE_ALPHA, SUITE_TESTS));
     // Šidák lies between Bonferroni's alpha/m and -ln(1 - alpha)/m, for every m.
     for m in [1, 2, 10, 100, 1000, 1_000_000] {
