@@ -171,6 +171,22 @@ pub fn xyz_estimate(spectrum: &Table, nm: f64, pdf: f64) -> DVec3 {
 }
 // ANCHOR_END: estimate
 
+// ANCHOR: product
+/// A proposal for the lamp's *colour* rather than its power: the table of
+/// `L(λ) (x̄ + ȳ + z̄)(λ)` at every whole nanometre of 380-830 nm, linear in between.
+/// It is positive wherever the integrands `L x̄`, `L ȳ`, `L z̄` are (between two knots
+/// where it is zero, all three integrands are zero too, as the lamp tables' knots fall on
+/// these), so [`xyz_estimate`] stays unbiased with it.
+pub fn colour_proposal(spectrum: &Table) -> Table {
+    let nm = image_wavelengths();
+    let values = nm
+        .iter()
+        .map(|&l| spectrum.eval(l) * cie::cmf(l).element_sum())
+        .collect();
+    Table::new(nm, values).unwrap_or_else(|e| panic!("products of valid tables: {e}"))
+}
+// ANCHOR_END: product
+
 /// The uniform proposal the gains are measured against: `λ = 380 + 450 u` nm, pdf
 /// `1/450` per nm, over the image range.
 pub fn uniform_wavelength(u: f64) -> WavelengthSample {
