@@ -1,3 +1,45 @@
-//! Benchmark of the emission chapter (issue 5): filled by that section.
+//! Criterion benchmark of the chapter *Importance-sampled emission spectra*: ns per
+//! wavelength sample (with its pdf) drawn from each lamp's spectrum, against the uniform
+//! proposal, on the same random numbers that `cargo run --release` times for the book
+//! (`figures/emission_speed.md`).
+//!
+//! Run with `cargo bench --bench emission`.
 
-fn main() {}
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use raylemma::figures::emission::timing_us;
+use raylemma::spectral::emission::{EmissionSampler, lamps, uniform_wavelength};
+
+fn emission(c: &mut Criterion) {
+    let us = timing_us(4096);
+    let mut group = c.benchmark_group("emission");
+    group.throughput(Throughput::Elements(us.len() as u64));
+    for lamp in lamps() {
+        let s = EmissionSampler::new(&lamp.spectrum).expect("every lamp emits");
+        group.bench_with_input(BenchmarkId::new("importance", lamp.stem), &us, |b, us| {
+            b.iter(|| {
+                let mut acc = 0.0;
+                for &u in us {
+                    let w = s.sample(black_box(u));
+                    acc += w.nm + w.pdf;
+                }
+                acc
+            });
+        });
+    }
+    group.bench_with_input(BenchmarkId::new("uniform", "any"), &us, |b, us| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for &u in us {
+                let w = uniform_wavelength(black_box(u));
+                acc += w.nm + w.pdf;
+            }
+            acc
+        });
+    });
+    group.finish();
+}
+
+criterion_group!(benches, emission);
+criterion_main!(benches);

@@ -1,8 +1,409 @@
-//! Figures of the chapter on emission (issue 5): filled by that section.
+//! Figures and tables of the chapter *Importance-sampled emission spectra*.
 
-use super::Output;
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use glam::DVec3;
+use rand::RngExt;
+
+use super::{Output, Settings, timing};
+use crate::plot::{self, BoxError};
+use crate::rng;
+use crate::spectral::cie;
+use crate::spectral::emission::*;
+use crate::spectral::spectrum::Table;
+use crate::stats::ttest::Summary;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
-    Vec::new()
+    vec![
+        Output {
+            file: "emission_histograms.png",
+            what: "each lamp's pdf and a histogram of its samples",
+            make: histograms_png,
+        },
+        Output {
+            file: "emission_swatches.png",
+            what: "the colour of each lamp",
+            make: swatches_png,
+        },
+        Output {
+            file: "emission_colour.md",
+            what: "chromaticity, CCT, Duv and linear sRGB per lamp",
+            make: colour_md,
+        },
+        Output {
+            file: "emission_gain.md",
+            what: "variance gain of importance sampling per lamp",
+            make: gain_md,
+        },
+        Output {
+            file: "emission_drawing.md",
+            what: "what drawing a spectrum as an image changes",
+            make: drawing_md,
+        },
+        Output {
+            file: "emission_speed.md",
+            what: "ns per wavelength sample per lamp",
+            make: speed_md,
+        },
+    ]
+}
+
+fn sampler(t: &Table) -> Result<EmissionSampler, BoxError> {
+    EmissionSampler::new(t).map_err(|e| e.to_string().into())
+}
+
+fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    use plotters::prelude::*;
+    let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
+    let lamps = lamps();
+    let (width, height) = (1500u32, 820u32);
+    plot::register_embedded_font();
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let areas = root.split_evenly((2, 3));
+        let (blue, orange) = (plot::PALETTE[0], plot::PALETTE[1]);
+        for (k, (lamp, area)) in lamps.iter().zip(&areas).enumerate() {
+            let s = sampler(&lamp.spectrum)?;
+            // 1 nm histogram bins over 380-830 nm: density = count / (n * 1 nm).
+            let mut counts = vec![0u64; 450];
+            let mut r = rng::seeded(0xE1 + k as u64);
+            for _ in 0..n {
+                let nm = s.sample(r.random::<f64>()).nm;
+                counts[((nm - IMAGE_FIRST_NM) as usize).min(449)] += 1;
+            }
+            let pdf: Vec<(f64, f64)> = (0..=4500)
+                .map(|i| {
+                    let nm = 380.0 + 0.1 * f64::from(i);
+                    (nm, s.pdf(nm))
+                })
+                .collect();
+            let ymax = pdf.iter().map(|p| p.1).fold(0.0, f64::max) * 1.1;
+            let mut chart = ChartBuilder::on(area)
+                .caption(lamp.name, ("sans-serif", 18))
+                .margin(10)
+                .x_label_area_size(36)
+                .y_label_area_size(60)
+                .build_cartesian_2d(380f64..830f64, 0f64..ymax)?;
+            chart
+                .configure_mesh()
+                .x_desc("wavelength (nm)")
+                .y_desc("density (1/nm)")
+                .label_style(("sans-serif", 12))
+                .axis_desc_style(("sans-serif", 14))
+                .x_label_formatter(&|v| plot::format_tick(*v))
+                .y_label_formatter(&|v| plot::format_tick(*v))
+                .draw()?;
+            chart.draw_series(counts.iter().enumerate().filter(|(_, c)| **c > 0).map(
+                |(i, &c)| {
+                    let x = 380.0 + i as f64;
+                    Rectangle::new(
+                        [(x, 0.0), (x + 1.0, c as f64 / n as f64)],
+                        orange.mix(0.6).filled(),
+                    )
+                },
+            ))?;
+            chart.draw_series(LineSeries::new(pdf, blue.stroke_width(2)))?;
+        }
+        areas[5].draw(&Text::new(
+            format!("{n} samples per lamp, 1 nm bins (orange);"),
+            (20, 150),
+            ("sans-serif", 18),
+        ))?;
+        areas[5].draw(&Text::new(
+            "the pdf L(λ)/∫L (blue)",
+            (20, 180),
+            ("sans-serif", 18),
+        ))?;
+        root.present()?;
+    }
+    plot::encode_png(width, height, buffer)
+}
+
+/// The XYZ of a lamp, normalised to `Y = 1`.
+fn xyz_unit(t: &Table) -> DVec3 {
+    let xyz = cie::xyz(|nm| t.eval(nm));
+    xyz / xyz.y
+}
+
+// ANCHOR: display
+/// A display colour for a swatch: linear sRGB of the lamp at `Y = 1`, negative
+/// components clipped to 0 (out of gamut), scaled so that the largest component is 1,
+/// then encoded with the sRGB transfer function of IEC 61966-2-1 (written out here;
+/// the chapter *From spectrum to display* treats display properly).
+pub fn swatch_rgb8(t: &Table) -> [u8; 3] {
+    let rgb = cie::xyz_to_linear_srgb(xyz_unit(t)).max(DVec3::ZERO);
+    let rgb = rgb / rgb.max_element();
+    let encode = |c: f64| {
+        let v = if c <= 0.003_130_8 {
+            12.92 * c
+        } else {
+            1.055 * c.powf(1.0 / 2.4) - 0.055
+        };
+        (255.0 * v.clamp(0.0, 1.0)).round() as u8
+    };
+    [encode(rgb.x), encode(rgb.y), encode(rgb.z)]
+}
+// ANCHOR_END: display
+
+fn swatches_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    use plotters::prelude::*;
+    let lamps = lamps();
+    let (side, gap, label) = (200i32, 24i32, 70i32);
+    let width = (lamps.len() as i32 * (side + gap) + gap) as u32;
+    let height = (side + 2 * gap + label) as u32;
+    plot::register_embedded_font();
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        for (k, lamp) in lamps.iter().enumerate() {
+            let x0 = gap + k as i32 * (side + gap);
+            let [r, g, b] = swatch_rgb8(&lamp.spectrum);
+            root.draw(&Rectangle::new(
+                [(x0, gap), (x0 + side, gap + side)],
+                RGBColor(r, g, b).filled(),
+            ))?;
+            let xy = cie::chromaticity(xyz_unit(&lamp.spectrum)).ok_or("black lamp")?;
+            root.draw(&Text::new(
+                lamp.name.to_string(),
+                (x0, gap + side + 12),
+                ("sans-serif", 17),
+            ))?;
+            root.draw(&Text::new(
+                format!("x = {:.4}, y = {:.4}", xy.x, xy.y),
+                (x0, gap + side + 36),
+                ("sans-serif", 15),
+            ))?;
+        }
+        root.present()?;
+    }
+    plot::encode_png(width, height, buffer)
+}
+
+/// Variance of the one-sample X, Y, Z estimators with `n` samples drawn by `draw`.
+fn variances(t: &Table, n: usize, seed: u64, draw: impl Fn(f64) -> WavelengthSample) -> DVec3 {
+    let mut r = rng::seeded(seed);
+    let (mut x, mut y, mut z) = (Summary::default(), Summary::default(), Summary::default());
+    for _ in 0..n {
+        let w = draw(r.random::<f64>());
+        let e = xyz_estimate(t, w.nm, w.pdf);
+        x.push(e.x);
+        y.push(e.y);
+        z.push(e.z);
+    }
+    DVec3::new(x.variance(), y.variance(), z.variance())
+}
+
+/// CIE 1960 (u, v) of a chromaticity.
+fn uv(xy: glam::DVec2) -> glam::DVec2 {
+    let d = -2.0 * xy.x + 12.0 * xy.y + 3.0;
+    glam::DVec2::new(4.0 * xy.x / d, 6.0 * xy.y / d)
+}
+
+/// The Planckian locus in CIE 1960 (u, v), from 1 to 1000 mired (1000 K to 10⁶ K) in
+/// steps of 1 mired, each point from Planck's law and the colour-matching functions.
+fn planckian_locus() -> Vec<(f64, glam::DVec2)> {
+    (1..=1000)
+        .rev()
+        .map(|mired| {
+            let kelvin = 1e6 / f64::from(mired);
+            let xyz = cie::xyz(|nm| crate::spectral::spectrum::planck(nm, kelvin));
+            (
+                kelvin,
+                uv(glam::DVec2::new(xyz.x, xyz.y) / xyz.element_sum()),
+            )
+        })
+        .collect()
+}
+
+/// Correlated colour temperature and `Duv` of a chromaticity: the nearest point of the
+/// Planckian locus in (u, v) (projected onto the polyline), and the signed distance to
+/// it, positive above the locus (towards green), negative below (towards magenta).
+fn cct_duv(xy: glam::DVec2, locus: &[(f64, glam::DVec2)]) -> (f64, f64) {
+    let p = uv(xy);
+    let mut best = (f64::INFINITY, 0.0, 0.0);
+    for w in locus.windows(2) {
+        let ((t0, a), (t1, b)) = (w[0], w[1]);
+        let s = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        let q = a + s * (b - a);
+        let d = (p - q).length();
+        if d < best.0 {
+            let side = (b - a).perp_dot(p - a).signum();
+            best = (d, t0 + s * (t1 - t0), side);
+        }
+    }
+    // The locus runs from high to low temperature (u increasing); above it is the left
+    // of that direction.
+    (best.1, best.2 * best.0)
+}
+
+fn colour_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let locus = planckian_locus();
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| lamp | x | y | CCT (K) | Duv | linear sRGB at Y = 1 | swatch (sRGB, 8 bit) |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---:|---|---|")?;
+    for lamp in lamps() {
+        let xyz = xyz_unit(&lamp.spectrum);
+        let xy = cie::chromaticity(xyz).ok_or("black lamp")?;
+        let (cct, duv) = cct_duv(xy, &locus);
+        let rgb = cie::xyz_to_linear_srgb(xyz);
+        let [r, g, b] = swatch_rgb8(&lamp.spectrum);
+        writeln!(
+            md,
+            "| {} | {:.4} | {:.4} | {cct:.0} | {duv:+.4} | ({:.3}, {:.3}, {:.3}) | ({r}, {g}, {b}) |",
+            lamp.name, xy.x, xy.y, rgb.x, rgb.y, rgb.z
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*Chromaticity, correlated colour temperature, Duv (distance from the Planckian \
+         locus in CIE 1960 (u, v), positive towards green) and linear sRGB from the exact XYZ \
+         of each table (CIE 1931 2°). A negative sRGB component is a colour outside the sRGB \
+         gamut; the swatch clips it to 0.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn gain_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| lamp | p ∝ L: gain X | gain Y | gain Z | p ∝ L (x̄+ȳ+z̄): gain X | gain Y | gain Z |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---:|---:|---:|")?;
+    let fmt = |g: DVec3| format!("{:.2} | {:.2} | {:.2}", g.x, g.y, g.z);
+    for (k, lamp) in lamps().iter().enumerate() {
+        let t = &lamp.spectrum;
+        let own = sampler(t)?;
+        let colour = sampler(&colour_proposal(t))?;
+        let un = variances(t, n, 0xE20 + k as u64, uniform_wavelength);
+        let by_own = un / variances(t, n, 0xE10 + k as u64, |u| own.sample(u));
+        let by_colour = un / variances(t, n, 0xE30 + k as u64, |u| colour.sample(u));
+        writeln!(
+            md,
+            "| {} | {} | {} |",
+            lamp.name,
+            fmt(by_own),
+            fmt(by_colour)
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*Gain: variance of the one-sample estimator of X, Y or Z with λ uniform on \
+         380–830 nm, divided by its variance with λ drawn from the proposal p; above 1, the \
+         proposal is better. {n} samples per estimator and lamp (fixed seeds).*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn drawing_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| lamp | height (px) | largest column error (of the peak) | columns with light lost | share of ∫L lost there | Δ(x, y) |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---:|---:|")?;
+    for lamp in lamps() {
+        let t = &lamp.spectrum;
+        let xy_table = cie::chromaticity(xyz_unit(t)).ok_or("black lamp")?;
+        let nm = image_wavelengths();
+        let max = nm.iter().map(|&l| t.eval(l)).fold(0.0, f64::max);
+        let total: f64 = nm.iter().map(|&l| t.eval(l)).sum();
+        for height in [32, IMAGE_HEIGHT] {
+            let png = write_image(t, height)?;
+            let drawn = parse_image(&png, lamp.stem)?;
+            let err = nm
+                .iter()
+                .map(|&l| (drawn.eval(l) - t.eval(l) / max).abs())
+                .fold(0.0, f64::max);
+            let lost: Vec<f64> = nm
+                .iter()
+                .filter(|&&l| t.eval(l) > 0.0 && drawn.eval(l) == 0.0)
+                .map(|&l| t.eval(l))
+                .collect();
+            let xy = cie::chromaticity(xyz_unit(&drawn)).ok_or("black drawing")?;
+            writeln!(
+                md,
+                "| {} | {height} | {err:.2e} | {} | {} | {:.1e} |",
+                lamp.name,
+                lost.len(),
+                if lost.is_empty() {
+                    "0".to_string()
+                } else {
+                    format!("{:.2e}", lost.iter().sum::<f64>() / total)
+                },
+                (xy - xy_table).length()
+            )?;
+        }
+    }
+    writeln!(
+        md,
+        "\n*Each lamp drawn with `write_image` and read back with `parse_image`; the error of \
+         a column is at most half a pixel, 1/(2 height) of the peak. \"Lost\": columns where \
+         the lamp emits but the drawing has no dark pixel. Δ(x, y): distance between the \
+         chromaticities of the drawing and of the table.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// `n` uniform numbers for timing (fixed seed).
+pub fn timing_us(n: usize) -> Vec<f64> {
+    let mut r = rng::seeded(0xE5);
+    (0..n).map(|_| r.random::<f64>()).collect()
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let reps = if settings.quick { 5 } else { 101 };
+    let us = timing_us(4096);
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| lamp | knots | importance (ns per sample) | uniform (ns per sample) |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|")?;
+    for lamp in lamps() {
+        let s = sampler(&lamp.spectrum)?;
+        let imp = timing::median_ns_per_item(us.len(), reps, || {
+            let mut acc = 0.0;
+            for &u in &us {
+                let w = s.sample(black_box(u));
+                acc += w.nm + w.pdf;
+            }
+            acc.to_bits()
+        });
+        let uni = timing::median_ns_per_item(us.len(), reps, || {
+            let mut acc = 0.0;
+            for &u in &us {
+                let w = uniform_wavelength(black_box(u));
+                acc += w.nm + w.pdf;
+            }
+            acc.to_bits()
+        });
+        writeln!(
+            md,
+            "| {} | {} | {imp:.1} | {uni:.1} |",
+            lamp.name,
+            lamp.spectrum.wavelengths().len()
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*{}; 4096 random u per batch, median of {reps} batches{}. Each sample includes \
+         its pdf.*",
+        timing::machine(),
+        if settings.quick {
+            " (quick mode: noisy)"
+        } else {
+            ""
+        }
+    )?;
+    Ok(md.into_bytes())
 }
