@@ -1,8 +1,321 @@
-//! Figures of the chapter on display (issue 5): filled by that section.
+//! Figures and tables of the chapter *From spectrum to display*.
 
-use super::Output;
+use std::fmt::Write as _;
+
+use glam::DVec3;
+use plotters::prelude::*;
+
+use super::dispersion::{Legend, ranged_chart_png};
+use super::{Output, Settings, timing};
+use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::spectral::display::*;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
-    Vec::new()
+    vec![
+        Output {
+            file: "display_curves.png",
+            what: "sRGB curve vs gamma 2.2, and their difference in 8-bit codes",
+            make: curves_png,
+        },
+        Output {
+            file: "display_codes.md",
+            what: "largest code difference of power laws vs the sRGB curve",
+            make: codes_md,
+        },
+        Output {
+            file: "display_ramps.png",
+            what: "over-exposure ramps: clipping, the seed's desaturation, equal-luminance grey",
+            make: ramps_png,
+        },
+        Output {
+            file: "display_hue.md",
+            what: "hue and luminance after clipping and the two desaturations",
+            make: hue_md,
+        },
+        Output {
+            file: "display_speed.md",
+            what: "time per pixel of to_display_rgb8",
+            make: speed_md,
+        },
+    ]
+}
+
+fn curves_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    // Linear inputs spaced evenly in log from 1e-4 to 1, so that the dark end shows.
+    let xs: Vec<f64> = (0..=120)
+        .map(|i| 10f64.powf(-4.0 + 4.0 * f64::from(i) / 120.0))
+        .collect();
+    let curve = |label: &str, f: &dyn Fn(f64) -> f64| Series {
+        label: label.into(),
+        points: xs.iter().map(|&x| (x, f(x))).collect(),
+    };
+    let encoded = Panel {
+        title: "encoded value V of linear light x".into(),
+        x_label: "linear x (log scale)".into(),
+        y_label: "V".into(),
+        x_scale: Scale::Log,
+        y_scale: Scale::Linear,
+        series: vec![
+            curve("sRGB (IEC 61966-2-1)", &srgb_encode),
+            curve("gamma 2.2: x^(1/2.2)", &|x| gamma_encode(x, 2.2)),
+            curve("sqrt: x^(1/2)", &|x| gamma_encode(x, 2.0)),
+        ],
+    };
+    let difference = |hi: f64, n: u32, rounded: bool| {
+        let exact = Series {
+            label: "255 (x^(1/2.2) − sRGB(x))".into(),
+            points: (0..=n)
+                .map(|i| {
+                    let x = hi * f64::from(i) / f64::from(n);
+                    (x, 255.0 * (gamma_encode(x, 2.2) - srgb_encode(x)))
+                })
+                .collect(),
+        };
+        let mut series = vec![exact];
+        if rounded {
+            series.push(Series {
+                label: "both rounded to 8 bits".into(),
+                points: (0..=n)
+                    .map(|i| {
+                        let x = hi * f64::from(i) / f64::from(n);
+                        (x, f64::from(gamma8(x, 2.2)) - f64::from(srgb8(x)))
+                    })
+                    .collect(),
+            });
+        }
+        series
+    };
+    let dark = Panel {
+        title: "gamma 2.2 minus sRGB, codes, dark end".into(),
+        x_label: "linear x".into(),
+        y_label: "codes".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: difference(0.02, 2000, true),
+    };
+    let whole = Panel {
+        title: "gamma 2.2 minus sRGB, codes, 0 ≤ x ≤ 1".into(),
+        x_label: "linear x".into(),
+        y_label: "codes".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: difference(1.0, 1000, false),
+    };
+    stack_png(&[
+        plot::line_chart_png(&[encoded], 1000, 400)?,
+        ranged_chart_png(
+            &[
+                (dark, (0.0, 0.02), (-2.0, 10.0), Legend::UpperRight),
+                (whole, (0.0, 1.0), (-2.0, 10.0), Legend::UpperRight),
+            ],
+            1000,
+            400,
+        )?,
+    ])
+}
+
+/// Stacks PNGs of equal width vertically.
+fn stack_png(pngs: &[Vec<u8>]) -> Result<Vec<u8>, BoxError> {
+    let images: Vec<image::RgbImage> = pngs
+        .iter()
+        .map(|p| image::load_from_memory(p).map(|i| i.to_rgb8()))
+        .collect::<Result<_, _>>()?;
+    let w = images.iter().map(|i| i.width()).max().unwrap_or(1);
+    let h: u32 = images.iter().map(|i| i.height()).sum();
+    let mut out = image::RgbImage::from_pixel(w, h, image::Rgb([255, 255, 255]));
+    let mut y = 0;
+    for i in &images {
+        image::imageops::replace(&mut out, i, 0, i64::from(y));
+        y += i.height();
+    }
+    plot::encode_png(w, h, out.into_raw())
+}
+
+/// An encoder of linear light to an 8-bit code.
+type Encoder = fn(f64) -> u8;
+
+/// One row of the codes table: the worst code difference of `f` against sRGB over every
+/// sRGB code (decoded to linear light, then encoded by `f`).
+fn worst_codes(f: impl Fn(f64) -> u8) -> (i32, Vec<u8>, i32) {
+    let d: Vec<i32> = (0..=255u8)
+        .map(|c| i32::from(f(srgb_decode(f64::from(c) / 255.0))) - i32::from(c))
+        .collect();
+    let worst = *d.iter().max_by_key(|x| x.abs()).unwrap_or(&0);
+    let at = (0..=255u8).filter(|&c| d[c as usize] == worst).collect();
+    let lowest = *d.iter().min().unwrap_or(&0);
+    (worst, at, lowest)
+}
+
+fn codes_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| encoder | largest difference from sRGB, codes | at sRGB codes | most negative difference | codes that differ |"
+    )?;
+    writeln!(md, "|---|---:|---|---:|---:|")?;
+    let rows: [(&str, Encoder); 3] = [
+        ("gamma 2.2, x^(1/2.2) (the seed)", |x| gamma8(x, 2.2)),
+        ("sqrt, x^(1/2) (the seed's approximation)", |x| {
+            gamma8(x, 2.0)
+        }),
+        ("x^2.2 (exponent the wrong way round)", |x| {
+            quantise(gamma_decode(x, 2.2))
+        }),
+    ];
+    for (name, f) in rows {
+        let (worst, at, lowest) = worst_codes(f);
+        let differ = (0..=255u8)
+            .filter(|&c| f(srgb_decode(f64::from(c) / 255.0)) != c)
+            .count();
+        let at: Vec<String> = at.iter().map(u8::to_string).collect();
+        writeln!(
+            md,
+            "| {name} | {worst:+} | {} | {lowest:+} | {differ} of 256 |",
+            at.join(", ")
+        )?;
+    }
+    let xs = (2.2f64 * 12.92).powf(-2.2 / 1.2);
+    let d = xs.powf(1.0 / 2.2) - 12.92 * xs;
+    writeln!(
+        md,
+        "\n*Every sRGB code c is decoded to linear light and re-encoded by each curve. The \
+         analytic peak of 255 (x^(1/2.2) − 12.92 x) is {:.2} codes at x* = {xs:.6} \
+         (sRGB code {:.1}).*",
+        255.0 * d,
+        255.0 * 12.92 * xs
+    )?;
+    Ok(md.into_bytes())
+}
+
+// ---------------------------------------------------------------------------------------
+// Over-exposure ramps.
+
+/// The colours of the ramps, in linear sRGB, peak 1 at exposure 1.
+const RAMP_COLOURS: [(&str, DVec3); 3] = [
+    ("orange", DVec3::new(1.0, 0.33, 0.05)),
+    ("blue", DVec3::new(0.05, 0.1, 1.0)),
+    ("green", DVec3::new(0.1, 1.0, 0.15)),
+];
+
+type Method = (&'static str, fn(DVec3) -> DVec3);
+
+const METHODS: [Method; 3] = [
+    ("clip", clip),
+    ("seed: mix with white by peak", desaturate_seed),
+    ("ours: toward equal-Y grey", fit_to_gamut),
+];
+
+fn ramps_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    plot::register_embedded_font();
+    let (label_w, cell_h, cols) = (250u32, 34u32, 600u32);
+    let rows = (RAMP_COLOURS.len() * METHODS.len()) as u32;
+    let (w, h) = (
+        label_w + cols + 10,
+        40 + rows * cell_h + 12 * RAMP_COLOURS.len() as u32,
+    );
+    let mut buffer = vec![255u8; (w * h * 3) as usize];
+    // Exposure k from 0.1 to 20, log-spaced across the strip.
+    let k_of = |i: u32| 0.1 * 200f64.powf(f64::from(i) / f64::from(cols - 1));
+    let mut y = 40u32;
+    let mut labels = Vec::new();
+    for (cname, colour) in RAMP_COLOURS {
+        for (mname, method) in METHODS {
+            let row: Vec<u8> = (0..cols)
+                .flat_map(|i| {
+                    let c = method(colour * k_of(i));
+                    [srgb8(c.x), srgb8(c.y), srgb8(c.z)]
+                })
+                .collect();
+            for dy in 2..cell_h - 2 {
+                let start = (((y + dy) * w + label_w) * 3) as usize;
+                buffer[start..start + row.len()].copy_from_slice(&row);
+            }
+            labels.push((format!("{cname}, {mname}"), y));
+            y += cell_h;
+        }
+        y += 12;
+    }
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
+        let style = ("sans-serif", 14).into_font().color(&BLACK);
+        for (text, y) in labels {
+            root.draw_text(&text, &style, (6, y as i32 + 9))?;
+        }
+        for k in [0.1, 0.3, 1.0, 3.0, 10.0, 20.0] {
+            let x = label_w as f64 + (k / 0.1f64).ln() / 200f64.ln() * f64::from(cols - 1);
+            root.draw_text(&format!("{k}x"), &style, (x as i32 - 10, 4))?;
+            root.draw(&PathElement::new(
+                vec![(x as i32, 22), (x as i32, 36)],
+                BLACK.stroke_width(1),
+            ))?;
+        }
+        root.present()?;
+    }
+    plot::encode_png(w, h, buffer)
+}
+
+fn hue_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| colour × exposure | luminance Y in | method | result (linear) | Y out | xy hue shift, ° | CIELAB hue shift, ° |"
+    )?;
+    writeln!(md, "|---|---:|---|---|---:|---:|---:|")?;
+    for (cname, colour) in RAMP_COLOURS {
+        for k in [2.0, 4.0] {
+            let c = colour * k;
+            for (mname, method) in METHODS {
+                let out = method(c);
+                let shift = |h: fn(DVec3) -> Option<f64>| match (h(c), h(out)) {
+                    (Some(a), Some(b)) => format!("{:+.2}", hue_difference(b, a)),
+                    _ => "— (grey)".into(),
+                };
+                writeln!(
+                    md,
+                    "| {cname} × {k} | {:.3} | {mname} | ({:.3}, {:.3}, {:.3}) | {:.3} | {} | {} |",
+                    luminance(c),
+                    out.x,
+                    out.y,
+                    out.z,
+                    luminance(out),
+                    shift(hue_xy_degrees),
+                    shift(hue_lab_degrees),
+                )?;
+            }
+        }
+    }
+    writeln!(
+        md,
+        "\n*Hue shifts are the result's hue minus the input's: the angle of the CIE xy \
+         chromaticity about D65, and the CIELAB hue angle h_ab (D65 white, Y = 1). Inputs with \
+         Y > 1 cannot be shown at their luminance; the equal-luminance rule then gives white.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let n = 1 << 16;
+    let pixels: Vec<DVec3> = (0..n)
+        .map(|i| {
+            let t = f64::from(i) / f64::from(n);
+            DVec3::new(3.0 * t, (7.0 * t).fract(), 1.0 - t)
+        })
+        .collect();
+    let reps = if settings.quick { 3 } else { 15 };
+    let ns = timing::median_ns_per_item(n as usize, reps, || {
+        to_display_rgb8(&pixels, 0.5)
+            .iter()
+            .map(|&b| u64::from(b))
+            .sum()
+    });
+    let mut md = String::new();
+    writeln!(md, "| step | ns per pixel |")?;
+    writeln!(md, "|---|---:|")?;
+    writeln!(
+        md,
+        "| to_display_rgb8 (exposure, gamut, sRGB curve, rounding) | {ns:.1} |"
+    )?;
+    writeln!(md, "\n*{}; {n} pixels per batch.*", timing::machine())?;
+    Ok(md.into_bytes())
 }

@@ -1,8 +1,268 @@
-//! Figures of the chapter on upsample (issue 5): filled by that section.
+//! Figures and tables of the chapter *From RGB to spectrum*.
 
-use super::Output;
+use std::fmt::Write as _;
+
+use glam::DVec3;
+
+use super::dispersion::{Legend, ranged_chart_png};
+use super::{Output, Settings, timing};
+use crate::plot::{BoxError, Panel, Scale, Series};
+use crate::rng;
+use crate::spectral::display::lab;
+use crate::spectral::spectrum;
+use crate::spectral::upsample::*;
+use crate::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
-    Vec::new()
+    vec![
+        Output {
+            file: "upsample_spectra.png",
+            what: "upsampled reflectances of primaries, everyday colours and greys",
+            make: spectra_png,
+        },
+        Output {
+            file: "upsample_roundtrip.md",
+            what: "round-trip errors sRGB -> spectrum -> sRGB under D65, and planted bugs",
+            make: roundtrip_md,
+        },
+        Output {
+            file: "upsample_speed.md",
+            what: "solve time per colour",
+            make: speed_md,
+        },
+    ]
+}
+
+fn curve(label: &str, rgb: DVec3) -> Result<Series, BoxError> {
+    let fit = upsample(rgb)?;
+    Ok(Series {
+        label: format!("{label} ({}, {}, {})", rgb.x, rgb.y, rgb.z),
+        points: (0..=94)
+            .map(|i| {
+                let nm = LAMBDA_MIN + 5.0 * f64::from(i);
+                (nm, fit.reflectance.eval(nm))
+            })
+            .collect(),
+    })
+}
+
+fn spectra_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let corners = Panel {
+        title: "gamut corners (linear sRGB)".into(),
+        x_label: "wavelength, nm".into(),
+        y_label: "reflectance".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: vec![
+            curve("red", DVec3::new(1.0, 0.0, 0.0))?,
+            curve("green", DVec3::new(0.0, 1.0, 0.0))?,
+            curve("blue", DVec3::new(0.0, 0.0, 1.0))?,
+            curve("yellow", DVec3::new(1.0, 1.0, 0.0))?,
+            curve("cyan", DVec3::new(0.0, 1.0, 1.0))?,
+            curve("magenta", DVec3::new(1.0, 0.0, 1.0))?,
+        ],
+    };
+    let everyday = Panel {
+        title: "everyday colours and greys (linear sRGB)".into(),
+        x_label: "wavelength, nm".into(),
+        y_label: "reflectance".into(),
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+        series: vec![
+            curve("brick", DVec3::new(0.4, 0.08, 0.05))?,
+            curve("leaf", DVec3::new(0.1, 0.3, 0.05))?,
+            curve("sky", DVec3::new(0.2, 0.3, 0.6))?,
+            curve("skin", DVec3::new(0.6, 0.35, 0.25))?,
+            curve("grey", DVec3::splat(0.18))?,
+            curve("grey", DVec3::splat(0.5))?,
+        ],
+    };
+    let range = (LAMBDA_MIN, LAMBDA_MAX);
+    ranged_chart_png(
+        &[
+            (corners, range, (-0.02, 1.02), Legend::UpperRight),
+            (everyday, range, (-0.02, 1.02), Legend::UpperRight),
+        ],
+        1200,
+        480,
+    )
+}
+
+fn grid() -> Vec<DVec3> {
+    let mut v = Vec::new();
+    for r in 0..=10 {
+        for g in 0..=10 {
+            for b in 0..=10 {
+                v.push(DVec3::new(f64::from(r), f64::from(g), f64::from(b)) / 10.0);
+            }
+        }
+    }
+    v
+}
+
+fn random(n: usize) -> Vec<DVec3> {
+    let mut r = rng::seeded(0x5EC7);
+    (0..n)
+        .map(|_| {
+            DVec3::new(
+                rng::uniform(&mut r, 0.0, 1.0),
+                rng::uniform(&mut r, 0.0, 1.0),
+                rng::uniform(&mut r, 0.0, 1.0),
+            )
+        })
+        .collect()
+}
+
+/// sRGB of `r` under D65 by the independent quadrature `cie::xyz` on the D65 table.
+fn srgb_under_d65(r: impl Fn(f64) -> f64) -> DVec3 {
+    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
+    let norm = cie::xyz(|nm| d65.eval(nm)).y;
+    cie::xyz_to_linear_srgb(cie::xyz(|nm| r(nm) * d65.eval(nm)) / norm)
+}
+
+fn delta_e(a: DVec3, b: DVec3) -> f64 {
+    let white = cie::linear_srgb_to_xyz(DVec3::ONE);
+    (lab(cie::linear_srgb_to_xyz(a), white) - lab(cie::linear_srgb_to_xyz(b), white)).length()
+}
+
+fn logistic(r: &Reflectance, nm: f64) -> f64 {
+    match *r {
+        Reflectance::Constant(v) => v,
+        Reflectance::Sigmoid(c) => {
+            let t = unit_wavelength(nm);
+            1.0 / (1.0 + (-((c[0] * t + c[1]) * t + c[2])).exp())
+        }
+    }
+}
+
+fn row(
+    md: &mut String,
+    name: &str,
+    colours: &[DVec3],
+    fitter: &Fitter,
+    eval: fn(&Reflectance, f64) -> f64,
+) -> Result<(), BoxError> {
+    let (mut lin, mut de_max, mut de_sum, mut at, mut its, mut lo, mut hi) =
+        (0.0f64, 0.0f64, 0.0, DVec3::ZERO, 0u32, 1.0f64, 0.0f64);
+    for &c in colours {
+        let fit = fitter.fit(c)?;
+        its = its.max(fit.iterations);
+        let back = srgb_under_d65(|nm| eval(&fit.reflectance, nm));
+        lin = lin.max((back - c).abs().max_element());
+        let de = delta_e(back, c);
+        de_sum += de;
+        if de > de_max {
+            (de_max, at) = (de, c);
+        }
+        for nm in (3600..=8300).map(|i| f64::from(i) / 10.0) {
+            let v = eval(&fit.reflectance, nm);
+            (lo, hi) = (lo.min(v), hi.max(v));
+        }
+    }
+    writeln!(
+        md,
+        "| {name} | {} | {lin:.2e} | {de_max:.2e} | ({:.2}, {:.2}, {:.2}) | {:.2e} | {its} | [{lo:.3}, {hi:.3}] |",
+        colours.len(),
+        at.x,
+        at.y,
+        at.z,
+        de_sum / colours.len() as f64,
+    )?;
+    Ok(())
+}
+
+fn roundtrip_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| fit, seen under D65 | colours | max error, linear sRGB | max ΔE | at | mean ΔE | max iterations | reflectance range |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---|---:|---:|---|")?;
+    let d65 = Fitter::d65();
+    let n_random = if settings.quick { 200 } else { 2000 };
+    row(
+        &mut md,
+        "D65, grid 0, 0.1, ..., 1",
+        &grid(),
+        d65,
+        Reflectance::eval,
+    )?;
+    row(
+        &mut md,
+        "D65, random (seeded)",
+        &random(n_random),
+        d65,
+        Reflectance::eval,
+    )?;
+    row(
+        &mut md,
+        "planted: fitted under illuminant E",
+        &grid(),
+        &Fitter::new(|_| 1.0),
+        Reflectance::eval,
+    )?;
+    row(&mut md, "planted: logistic sigmoid", &grid(), d65, logistic)?;
+    writeln!(
+        md,
+        "\n*Round trip: linear sRGB → reflectance (fit on a 1 nm trapezoid grid) → XYZ under \
+         D65 by 4-point Gauss-Legendre per nm (`cie::xyz`) → linear sRGB. ΔE is CIE 1976 \
+         (CIELAB, white = sRGB (1, 1, 1)). Reflectance range over 360-830 nm in 0.1 nm steps.*"
+    )?;
+    let white = srgb_under_d65(|_| 1.0);
+    let xy = cie::chromaticity(cie::linear_srgb_to_xyz(white)).ok_or("white is black")?;
+    writeln!(
+        md,
+        "\n*White, the constant reflectance 1, comes back as ({:.5}, {:.5}, {:.5}): the CIE D65 \
+         table's chromaticity is ({:.5}, {:.5}), sRGB's white is ({}, {}).*",
+        white.x,
+        white.y,
+        white.z,
+        xy.x,
+        xy.y,
+        cie::SRGB_WHITE.x,
+        cie::SRGB_WHITE.y
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let colours = if settings.quick { random(100) } else { grid() };
+    let reps = if settings.quick { 3 } else { 11 };
+    let d65 = Fitter::d65();
+    let ns_fit = timing::median_ns_per_item(colours.len(), reps, || {
+        colours
+            .iter()
+            .map(|&c| d65.fit(c).map_or(0, |f| u64::from(f.iterations)))
+            .sum()
+    });
+    let iterations: u64 = colours
+        .iter()
+        .map(|&c| d65.fit(c).map_or(0, |f| u64::from(f.iterations)))
+        .sum();
+    let fit = upsample(DVec3::new(0.7, 0.2, 0.1))?.reflectance;
+    let n = 100_000;
+    let ns_eval = timing::median_ns_per_item(n, reps, || {
+        (0..n)
+            .map(|i| fit.eval(LAMBDA_MIN + (LAMBDA_MAX - LAMBDA_MIN) * i as f64 / n as f64))
+            .sum::<f64>()
+            .to_bits()
+    });
+    let mut md = String::new();
+    writeln!(md, "| operation | time |")?;
+    writeln!(md, "|---|---:|")?;
+    writeln!(
+        md,
+        "| fit one colour (average over {} colours) | {:.1} µs |",
+        colours.len(),
+        ns_fit / 1000.0
+    )?;
+    writeln!(
+        md,
+        "| mean Levenberg-Marquardt iterations per colour | {:.1} |",
+        iterations as f64 / colours.len() as f64
+    )?;
+    writeln!(md, "| evaluate r(λ) once | {ns_eval:.1} ns |")?;
+    writeln!(md, "\n*{}.*", timing::machine())?;
+    Ok(md.into_bytes())
 }

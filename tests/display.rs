@@ -1,0 +1,403 @@
+//! Tests of the chapter *From spectrum to display* (`src/spectral/display.rs`).
+//! Deterministic (no statistical tests). Expected values come from the published sRGB
+//! anchors, closed forms derived by hand, or a different computation; every planted bug is
+//! the twin of a passing check and must be rejected by it.
+
+use glam::DVec3;
+use raylemma::spectral::cie;
+use raylemma::spectral::display::*;
+
+// ---------------------------------------------------------------------------------------
+// Checks of an encoder (linear → encoded), shared by the real curve and the planted bugs.
+
+/// The largest jump of `f` across `at`: `|f(at + h) − f(at − h)|` for a tiny `h`.
+fn jump(f: fn(f64) -> f64, at: f64) -> f64 {
+    let h = at * 1e-9;
+    (f(at + h) - f(at - h)).abs()
+}
+
+/// Continuity everywhere on a fine grid: no step between neighbours larger than the
+/// steepest part of the curve allows (the slope near 0 is 12.92, so 1e-6 apart gives at
+/// most 1.3e-5; the power segment is flatter).
+fn check_continuous(f: fn(f64) -> f64) -> Result<(), String> {
+    let n = 1_000_000;
+    for i in 0..n {
+        let (a, b) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+        let step = (f(b) - f(a)).abs();
+        if step > 13.0 * (b - a) + 1e-12 {
+            return Err(format!("step {step:e} between {a} and {b}"));
+        }
+    }
+    Ok(())
+}
+
+/// Published 8-bit sRGB anchors: linear 0.5 → 188 (#BCBCBC), linear 0.18 (18 % grey card)
+/// → 46.1 % = 118, 0 → 0, 1 → 255.
+fn check_anchors(f: fn(f64) -> f64) -> Result<(), String> {
+    for (x, code) in [(0.5, 188u8), (0.18, 118), (0.0, 0), (1.0, 255)] {
+        let got = quantise(f(x));
+        if got != code {
+            return Err(format!("linear {x} gives code {got}, published {code}"));
+        }
+    }
+    Ok(())
+}
+
+/// Planted bug: the seed's exponent the wrong way round (x^2.2 instead of x^(1/2.2)).
+fn planted_gamma_inverted(x: f64) -> f64 {
+    gamma_decode(x, 2.2)
+}
+
+/// Planted bug: the decoding breakpoint 0.04045 used on the linear side.
+fn planted_breakpoint_wrong_side(x: f64) -> f64 {
+    if x > SRGB_ENCODED_BREAK {
+        1.055 * x.powf(1.0 / 2.4) - 0.055
+    } else {
+        12.92 * x.max(0.0)
+    }
+}
+
+fn gamma22(x: f64) -> f64 {
+    gamma_encode(x, 2.2)
+}
+
+#[test]
+fn srgb_curve_is_continuous_and_nearly_smooth_at_the_breakpoint() {
+    // Value: the two pieces meet to 3e-8 (the standard rounds 0.0031308 and 0.04045).
+    let b = SRGB_LINEAR_BREAK;
+    let gap = (12.92 * b - (1.055 * b.powf(1.0 / 2.4) - 0.055)).abs();
+    assert!(gap <= 1e-7, "gap {gap:e} at the breakpoint");
+    assert!(
+        jump(srgb_encode, b) <= 1e-7,
+        "jump {:e}",
+        jump(srgb_encode, b)
+    );
+    // Slope: 12.92 below; 1.055/2.4 b^(1/2.4 − 1) ≈ 12.70 above: equal within 2 %, not exactly.
+    let h = 1e-9;
+    let below = (srgb_encode(b) - srgb_encode(b - h)) / h;
+    let above = (srgb_encode(b + 2.0 * h) - srgb_encode(b + h)) / h;
+    let ratio = above / below;
+    assert!(
+        (0.98..=0.99).contains(&ratio),
+        "slope ratio {ratio} (below {below}, above {above})"
+    );
+    check_continuous(srgb_encode).unwrap();
+    check_continuous(srgb_decode).unwrap_or_else(|e| panic!("decode: {e}"));
+}
+
+#[test]
+fn planted_breakpoint_on_the_wrong_side_is_rejected() {
+    let j = jump(planted_breakpoint_wrong_side, SRGB_ENCODED_BREAK);
+    assert!(
+        j >= 0.1,
+        "the planted curve should jump at 0.04045, jumped {j:e}"
+    );
+    assert!(check_continuous(planted_breakpoint_wrong_side).is_err());
+}
+
+#[test]
+fn published_anchor_values() {
+    check_anchors(srgb_encode).unwrap();
+    // Decoding: code 128 is 21.6 % of the light (the "#808080 is not half grey" value).
+    let mid = srgb_decode(128.0 / 255.0);
+    assert!((mid - 0.2158605).abs() <= 1e-6, "code 128 decodes to {mid}");
+    // 18 % grey encodes to 0.4614 (before rounding).
+    let v = srgb_encode(0.18);
+    assert!((v - 0.46135).abs() <= 1e-4, "0.18 encodes to {v}");
+    // The seed's curve: 0.5^(1/2.2) = 0.7297 → 186, two codes darker than sRGB.
+    assert_eq!(gamma8(0.5, 2.2), 186);
+}
+
+#[test]
+fn planted_gamma_applied_the_wrong_way_is_rejected() {
+    let e = check_anchors(planted_gamma_inverted).unwrap_err();
+    assert!(e.contains("0.5 gives code 55"), "{e}");
+    // The seed's own curve fails the sRGB anchors too, but only by 2 codes at 0.5.
+    assert!(check_anchors(gamma22).is_err());
+}
+
+#[test]
+fn encode_and_decode_are_inverse() {
+    for i in 0..=100_000 {
+        let x = i as f64 / 100_000.0;
+        for y in [x, x * x * x * 0.01] {
+            let back = srgb_decode(srgb_encode(y));
+            assert!((back - y).abs() <= 1e-14 + 1e-12 * y, "{y} -> {back}");
+            let g = gamma_decode(gamma_encode(y, 2.2), 2.2);
+            assert!((g - y).abs() <= 1e-14 + 1e-12 * y, "gamma {y} -> {g}");
+        }
+    }
+    for code in 0..=255u8 {
+        let v = f64::from(code) / 255.0;
+        assert_eq!(srgb8(srgb_decode(v)), code, "code {code}");
+    }
+    // Both sides of the breakpoint and the breakpoint itself.
+    for x in [
+        SRGB_LINEAR_BREAK * (1.0 - 1e-12),
+        SRGB_LINEAR_BREAK,
+        0.0031309,
+    ] {
+        let back = srgb_decode(srgb_encode(x));
+        assert!((back - x).abs() <= 1e-12 * x, "{x} -> {back}");
+    }
+}
+
+#[test]
+fn gamma_2_2_is_at_most_nine_codes_from_srgb() {
+    // Exhaustive: for every sRGB code c, the code a gamma-2.2 writer stores for the same light.
+    let diffs: Vec<i32> = (0..=255u8)
+        .map(|c| i32::from(gamma8(srgb_decode(f64::from(c) / 255.0), 2.2)) - i32::from(c))
+        .collect();
+    let worst = *diffs.iter().max_by_key(|d| d.abs()).unwrap();
+    let at: Vec<usize> = (0..256).filter(|&c| diffs[c] == worst).collect();
+    // Independent bound, by calculus: on the linear segment the difference of the encoded
+    // values x^(1/2.2) − 12.92 x peaks where (1/2.2) x^(1/2.2 − 1) = 12.92, i.e. at
+    // x* = (2.2 × 12.92)^(−2.2/1.2), with value d*. Above the breakpoint the two curves
+    // differ by less (both reach 1 at 1). Rounding moves each code by at most ½.
+    let xs = (2.2f64 * 12.92).powf(-2.2 / 1.2);
+    let d = xs.powf(1.0 / 2.2) - 12.92 * xs;
+    let bound = 255.0 * d;
+    assert!(
+        xs < SRGB_LINEAR_BREAK,
+        "x* = {xs} must be on the linear segment"
+    );
+    let w = f64::from(worst);
+    assert!(
+        w <= bound + 0.5 && w >= bound - 0.5,
+        "worst {worst} codes at codes {at:?}, analytic {bound:.3}"
+    );
+    // Where: the sRGB codes around 255 × 12.92 x* ≈ 7.1.
+    assert_eq!(at, vec![7, 8], "worst difference {worst}");
+    assert!(
+        diffs.iter().all(|&d| d >= -1),
+        "gamma 2.2 is never more than 1 code darker"
+    );
+}
+
+#[test]
+fn encoders_are_monotone() {
+    let n = 200_000;
+    let (mut s, mut g, mut s8) = (0.0, 0.0, 0u8);
+    for i in 0..=n {
+        let x = 1.2 * f64::from(i) / f64::from(n);
+        let (sn, gn, s8n) = (srgb_encode(x), gamma_encode(x, 2.2), srgb8(x));
+        assert!(sn >= s && gn >= g && s8n >= s8, "not monotone at {x}");
+        (s, g, s8) = (sn, gn, s8n);
+    }
+    assert_eq!(s8, 255);
+}
+
+#[test]
+fn bad_numbers_give_defined_outputs() {
+    for x in [f64::NAN, f64::NEG_INFINITY, -1.0, -0.0, -1e-300] {
+        assert_eq!(srgb_encode(x), 0.0, "{x}");
+        assert_eq!(srgb_decode(x), 0.0, "{x}");
+        assert_eq!(gamma_encode(x, 2.2), 0.0, "{x}");
+        assert_eq!(quantise(x), 0, "{x}");
+    }
+    assert_eq!(quantise(f64::INFINITY), 255);
+    assert_eq!(srgb8(f64::INFINITY), 255);
+    assert_eq!(quantise(1e300), 255);
+    let weird = [
+        DVec3::new(f64::NAN, 0.5, 0.5),
+        DVec3::splat(f64::INFINITY),
+        DVec3::new(f64::INFINITY, 0.0, 0.0),
+        DVec3::new(f64::NEG_INFINITY, 1.0, 1.0),
+        DVec3::splat(f64::NAN),
+        DVec3::new(-0.5, 0.2, 0.2),
+        DVec3::splat(-1.0),
+        DVec3::new(1e308, -1e308, 1e308),
+    ];
+    let bytes = to_display_rgb8(&weird, 0.0);
+    assert_eq!(bytes.len(), 3 * weird.len());
+    assert_eq!(&bytes[3..6], &[255, 255, 255], "+inf is white");
+    assert_eq!(&bytes[12..15], &[0, 0, 0], "NaN is black");
+    assert_eq!(&bytes[18..21], &[0, 0, 0], "negative luminance is black");
+    for p in weird {
+        for q in [fit_to_gamut(p), desaturate_seed(p), clip(p)] {
+            let ok = q.min_element() >= 0.0 && q.max_element() <= 1.0;
+            assert!(ok && q.is_finite(), "{p} -> {q}");
+        }
+    }
+    assert!(to_display_rgb8(&[], 3.0).is_empty());
+    // NaN exposure: defined (black), no panic.
+    assert_eq!(to_display_rgb8(&[DVec3::ONE], f64::NAN), vec![0, 0, 0]);
+}
+
+#[test]
+fn exposure_is_in_stops() {
+    let c = DVec3::new(0.1, 0.2, 0.3);
+    assert_eq!(exposure(c, 1.0), 2.0 * c);
+    assert_eq!(exposure(c, -2.0), 0.25 * c);
+    assert_eq!(exposure(c, 0.0), c);
+    // Middle grey at 0 stops is the published 118; one stop down is 0.09 → 84.
+    assert_eq!(to_display_rgb8(&[DVec3::splat(0.18)], 0.0), vec![118; 3]);
+    assert_eq!(
+        to_display_rgb8(&[DVec3::splat(0.36)], -1.0),
+        vec![118; 3],
+        "0.36 one stop down is 0.18"
+    );
+}
+
+#[test]
+fn luminance_weights_match_the_srgb_primaries() {
+    // BT.709's published Y row vs the one derived from the primaries and D65 in `cie`.
+    let derived = DVec3::new(
+        cie::linear_srgb_to_xyz(DVec3::X).y,
+        cie::linear_srgb_to_xyz(DVec3::Y).y,
+        cie::linear_srgb_to_xyz(DVec3::Z).y,
+    );
+    let err = (derived - LUMA).abs().max_element();
+    assert!(err <= 5e-5, "derived {derived} vs published {LUMA}");
+}
+
+// ---------------------------------------------------------------------------------------
+// Over-bright colours: the seed's claims about clipping and desaturation.
+
+/// A saturated orange, over-exposed by `k`.
+fn orange(k: f64) -> DVec3 {
+    k * DVec3::new(0.9, 0.3, 0.05)
+}
+
+fn xy_hue_shift(a: DVec3, b: DVec3) -> f64 {
+    hue_difference(hue_xy_degrees(a).unwrap(), hue_xy_degrees(b).unwrap()).abs()
+}
+
+#[test]
+fn clipping_shifts_hue_as_the_seed_says() {
+    // "once the largest value hits 255, the increase among all three values is no longer
+    // proportional": the clipped orange at 4x is (1, 1, 0.2), a yellow.
+    let shift = xy_hue_shift(orange(4.0), clip(orange(4.0)));
+    assert!(shift >= 10.0, "clipping moved the hue by only {shift}°");
+}
+
+#[test]
+fn seed_desaturation_keeps_the_xy_hue() {
+    for k in [1.2, 2.0, 4.0, 20.0] {
+        let out = desaturate_seed(orange(k));
+        assert!((out.max_element() - 1.0).abs() <= 1e-12, "peak {out}");
+        let shift = xy_hue_shift(orange(k), out);
+        assert!(shift <= 1e-9, "k = {k}: hue moved {shift}°");
+    }
+    // Below the peak of 1 nothing changes.
+    assert_eq!(desaturate_seed(orange(1.0)), orange(1.0));
+}
+
+#[test]
+fn seed_desaturation_does_not_keep_luminance() {
+    // Blue at twice full scale has luminance 2 × 0.0722 = 0.144, displayable without any
+    // clipping of luminance; the seed's mix with white shows it at Y = 1 − 0.9278/2 = 0.536
+    // (from the formula c/m² + 1 − 1/m with m = 2: (0.5, 0.5, 1)), 3.7 times too bright.
+    let blue = DVec3::new(0.0, 0.0, 2.0);
+    let seed = desaturate_seed(blue);
+    assert!((seed - DVec3::new(0.5, 0.5, 1.0)).abs().max_element() <= 1e-12);
+    let ratio = luminance(seed) / luminance(blue);
+    assert!(ratio >= 3.5, "seed brightens by {ratio}");
+    // The project's rule keeps Y and the xy hue, and lands in range.
+    let ours = fit_to_gamut(blue);
+    assert!((luminance(ours) - luminance(blue)).abs() <= 1e-12, "{ours}");
+    assert!(xy_hue_shift(blue, ours) <= 1e-9);
+    assert!(ours.max_element() <= 1.0 && ours.min_element() >= 0.0);
+}
+
+#[test]
+fn fit_to_gamut_keeps_luminance_and_hue() {
+    let cases = [
+        orange(1.5),
+        orange(1.8),
+        DVec3::new(-0.2, 0.6, 0.3),  // out of gamut: negative red
+        DVec3::new(1.4, -0.1, 0.05), // both at once
+        DVec3::new(0.3, 0.2, 0.1),   // already inside: unchanged
+    ];
+    for c in cases {
+        let out = fit_to_gamut(c);
+        assert!(
+            out.min_element() >= 0.0 && out.max_element() <= 1.0,
+            "{c} -> {out}"
+        );
+        assert!(
+            (luminance(out) - luminance(c)).abs() <= 1e-12,
+            "{c} -> {out}"
+        );
+        assert!(xy_hue_shift(c, out) <= 1e-9, "{c} -> {out}");
+        // As little desaturation as possible: one component touches the boundary.
+        let touches = out.max_element() >= 1.0 - 1e-12 || out.min_element() <= 1e-12;
+        assert!(touches || out == c, "{c} -> {out}");
+    }
+    assert_eq!(
+        fit_to_gamut(DVec3::new(0.3, 0.2, 0.1)),
+        DVec3::new(0.3, 0.2, 0.1)
+    );
+    assert_eq!(fit_to_gamut(DVec3::splat(5.0)), DVec3::ONE);
+    // Too bright to show at its luminance (Y = 1.23): white.
+    assert_eq!(fit_to_gamut(orange(3.0)), DVec3::ONE);
+}
+
+// ---------------------------------------------------------------------------------------
+// PNG files.
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("raylemma-display-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn png_round_trip() {
+    let dir = scratch("roundtrip");
+    let (w, h) = (7u32, 3u32);
+    let pixels: Vec<DVec3> = (0..w * h)
+        .map(|i| DVec3::new(f64::from(i) / 21.0, 0.18, 1.0 - f64::from(i) / 21.0))
+        .collect();
+    let bytes = to_display_rgb8(&pixels, 0.0);
+    let path = dir.join("out.png");
+    write_png(&path, w, h, &bytes).unwrap();
+    let back = image::open(&path).unwrap().to_rgb8();
+    assert_eq!(back.dimensions(), (w, h));
+    assert_eq!(back.as_raw(), &bytes);
+    // No temporary file left beside it.
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, vec![std::ffi::OsString::from("out.png")]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn failed_png_writes_name_the_path_and_leave_the_old_file() {
+    let dir = scratch("atomic");
+    let good = dir.join("good.png");
+    write_png(&good, 1, 1, &[10, 20, 30]).unwrap();
+    let before = std::fs::read(&good).unwrap();
+    // Wrong buffer size: refused before anything is written.
+    let e = write_png(&good, 2, 2, &[0; 5]).unwrap_err();
+    assert!(
+        e.to_string().contains("good.png") && e.to_string().contains("12"),
+        "{e}"
+    );
+    assert_eq!(std::fs::read(&good).unwrap(), before);
+    // A directory that does not exist.
+    let missing = dir.join("no/such/dir/x.png");
+    let e = write_png(&missing, 1, 1, &[0; 3]).unwrap_err();
+    assert!(e.to_string().contains("no/such/dir/x.png"), "{e}");
+    // The target is a (non-empty) directory: the rename fails; the directory and its
+    // contents are untouched, and the temporary file is removed.
+    let target = dir.join("taken.png");
+    std::fs::create_dir(&target).unwrap();
+    std::fs::write(target.join("keep"), b"keep").unwrap();
+    let e = write_png(&target, 1, 1, &[0; 3]).unwrap_err();
+    assert!(e.to_string().contains("taken.png"), "{e}");
+    assert_eq!(std::fs::read(target.join("keep")).unwrap(), b"keep");
+    let mut names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    assert_eq!(names, vec!["good.png", "taken.png"]);
+    assert_eq!(std::fs::read(&good).unwrap(), before);
+    // Zero size.
+    assert!(write_png(&dir.join("z.png"), 0, 1, &[]).is_err());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
