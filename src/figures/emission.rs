@@ -9,9 +9,9 @@ use rand::RngExt;
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError};
 use crate::rng;
-use crate::spectral::cie;
 use crate::spectral::emission::*;
 use crate::spectral::spectrum::Table;
+use crate::spectral::{cie, display};
 use crate::stats::ttest::Summary;
 
 /// The outputs of this chapter.
@@ -132,20 +132,16 @@ fn xyz_unit(t: &Table) -> DVec3 {
 // ANCHOR: display
 /// A display colour for a swatch: linear sRGB of the lamp at `Y = 1`, negative
 /// components clipped to 0 (out of gamut), scaled so that the largest component is 1,
-/// then encoded with the sRGB transfer function of IEC 61966-2-1 (written out here;
-/// the chapter *From spectrum to display* treats display properly).
+/// then encoded with the exact sRGB transfer function ([`display::srgb8`], chapter *From
+/// spectrum to display*).
 pub fn swatch_rgb8(t: &Table) -> [u8; 3] {
     let rgb = cie::xyz_to_linear_srgb(xyz_unit(t)).max(DVec3::ZERO);
     let rgb = rgb / rgb.max_element();
-    let encode = |c: f64| {
-        let v = if c <= 0.003_130_8 {
-            12.92 * c
-        } else {
-            1.055 * c.powf(1.0 / 2.4) - 0.055
-        };
-        (255.0 * v.clamp(0.0, 1.0)).round() as u8
-    };
-    [encode(rgb.x), encode(rgb.y), encode(rgb.z)]
+    [
+        display::srgb8(rgb.x),
+        display::srgb8(rgb.y),
+        display::srgb8(rgb.z),
+    ]
 }
 // ANCHOR_END: display
 

@@ -11,6 +11,7 @@ use crate::optics::thinfilm::{
     Film, airy_r, cos_theta, interface, phase, quarter_wave_reflectance, seed_reflectance,
 };
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::spectral::{cie, display, spectrum};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -24,6 +25,11 @@ pub fn outputs() -> Vec<Output> {
             file: "thinfilm_map.png",
             what: "reflectance against wavelength and thickness",
             make: map_png,
+        },
+        Output {
+            file: "thinfilm_colours.png",
+            what: "colours of a soap film and of oil on water against thickness",
+            make: colours_png,
         },
         Output {
             file: "thinfilm_angle.png",
@@ -314,4 +320,77 @@ fn precision_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
          transfer matrix to 1e-12 (`tests/thinfilm.rs`).*"
     )?;
     Ok(md.into_bytes())
+}
+
+// ANCHOR: film_colour
+/// The colour of the light a film reflects at normal incidence under daylight: the XYZ of
+/// `R(λ) D65(λ)`, relative to the XYZ of D65 itself (so a perfect mirror has `Y = 1`),
+/// in linear sRGB. Chapters *Thin-film interference* and *Spectra and CIE colour*.
+pub fn film_colour(film: &Film) -> glam::DVec3 {
+    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
+    let white = cie::xyz(|nm| d65.eval(nm)).y;
+    let xyz = cie::xyz(|nm| film.reflectance(nm, 0.0) * d65.eval(nm)) / white;
+    cie::xyz_to_linear_srgb(xyz)
+}
+// ANCHOR_END: film_colour
+
+/// Colour strips against thickness, one per film, each scaled so that its brightest
+/// thickness has `Y = 0.9`, brought into gamut and encoded by the display chapter's rules.
+fn colours_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let step = if settings.quick { 10.0 } else { 2.0 };
+    let max_d = 1500.0;
+    let films = [
+        ("soap film in air (n = 1.33), reflected daylight", SOAP),
+        ("oil (n = 1.5) on water, reflected daylight", OIL),
+    ];
+    let (width, height) = (1200u32, 360u32);
+    plot::register_embedded_font();
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let areas = root.split_evenly((films.len(), 1));
+        for ((title, n), area) in films.iter().zip(areas.iter()) {
+            let columns: Vec<(f64, glam::DVec3)> = (0..)
+                .map(|i| f64::from(i) * step)
+                .take_while(|&d| d <= max_d)
+                .map(|d| (d, film_colour(&film(*n, d))))
+                .collect();
+            let brightest = columns
+                .iter()
+                .map(|(_, c)| display::luminance(*c))
+                .fold(0.0, f64::max);
+            let scale = if brightest > 0.0 {
+                0.9 / brightest
+            } else {
+                1.0
+            };
+            let mut chart = ChartBuilder::on(area)
+                .caption(*title, ("sans-serif", 18))
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(20)
+                .build_cartesian_2d(0.0..max_d, 0.0..1.0)?;
+            chart
+                .configure_mesh()
+                .disable_mesh()
+                .y_labels(0)
+                .x_desc("film thickness (nm)")
+                .label_style(("sans-serif", 13))
+                .axis_desc_style(("sans-serif", 15))
+                .x_label_formatter(&|v| plot::format_linear_tick(*v))
+                .draw()?;
+            chart.draw_series(columns.iter().map(|(d, c)| {
+                let rgb = display::fit_to_gamut(*c * scale);
+                let colour = RGBColor(
+                    display::srgb8(rgb.x),
+                    display::srgb8(rgb.y),
+                    display::srgb8(rgb.z),
+                );
+                Rectangle::new([(*d, 0.0), (*d + step, 1.0)], colour.filled())
+            }))?;
+        }
+        root.present()?;
+    }
+    plot::encode_png(width, height, buffer)
 }
