@@ -103,7 +103,7 @@ fn visible_pdf_matches_pbrt_constants() {
 }
 
 /// ∫ p dλ = 1 over 360–830 nm by composite Simpson on 47 000 intervals (independent of the
-/// closed-form CDF), and `P(P⁻¹(u)) = u`.
+/// closed-form CDF), `P(P⁻¹(u)) = u`, and the sampler's `a (1 − t²) / (t₁ − t₀)` is `p(λ)`.
 #[test]
 fn visible_pdf_integrates_to_one_and_inverts() {
     let m = 47_000;
@@ -125,8 +125,14 @@ fn visible_pdf_integrates_to_one_and_inverts() {
     assert!((simpson - 1.0).abs() <= 1e-12, "∫ p = {simpson}");
     for i in 0..=1000 {
         let u = f64::from(i) / 1000.0 * (1.0 - f64::EPSILON);
-        let back = visible_cdf(sample_visible(u));
+        let (l, p) = sample_visible_pdf(u);
+        let back = visible_cdf(l);
         assert!((back - u).abs() <= 1e-12, "P(P⁻¹({u})) = {back}");
+        assert!(
+            (p / visible_pdf(l) - 1.0).abs() <= 1e-9,
+            "pdf at {l}: {p} vs {}",
+            visible_pdf(l)
+        );
     }
 }
 

@@ -11,6 +11,8 @@
 //! where `pdf_j` is the *weighting* density the strategy assigns to lane `j` (the lane's own
 //! density for per-lane estimators, the lanes' mean density for the balance heuristic).
 
+use std::sync::LazyLock;
+
 use glam::DVec3;
 
 use super::{LAMBDA_MAX, LAMBDA_MIN, cie};
@@ -133,17 +135,20 @@ pub const VISIBLE_A: f64 = 0.0072;
 pub const VISIBLE_C: f64 = 538.0;
 
 // ANCHOR: visible
-/// `tanh(a (λ − c))` at the ends of the range: the CDF's anchors.
+/// `(t₀, t₁) = (tanh(a (λ_min − c)), tanh(a (λ_max − c)))`: the CDF's anchors, computed once.
 fn visible_ends() -> (f64, f64) {
-    (
-        (VISIBLE_A * (LAMBDA_MIN - VISIBLE_C)).tanh(),
-        (VISIBLE_A * (LAMBDA_MAX - VISIBLE_C)).tanh(),
-    )
+    static ENDS: LazyLock<(f64, f64)> = LazyLock::new(|| {
+        (
+            (VISIBLE_A * (LAMBDA_MIN - VISIBLE_C)).tanh(),
+            (VISIBLE_A * (LAMBDA_MAX - VISIBLE_C)).tanh(),
+        )
+    });
+    *ENDS
 }
 
 /// The visible-range importance density `p(λ) = a / (t₁ − t₀) / cosh²(a (λ − c))` on
-/// 360–830 nm, with `t₀, t₁ = tanh(a (λ_min − c)), tanh(a (λ_max − c))`: normalised over
-/// this range because `∫ sech²(a x) dx = tanh(a x) / a`. 0 outside the range and for NaN.
+/// 360–830 nm: normalised over this range because `∫ sech²(a x) dx = tanh(a x) / a`.
+/// 0 outside the range and for NaN.
 pub fn visible_pdf(nm: f64) -> f64 {
     if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&nm) {
         return 0.0;
@@ -160,12 +165,23 @@ pub fn visible_cdf(nm: f64) -> f64 {
     (((VISIBLE_A * (l - VISIBLE_C)).tanh() - t0) / (t1 - t0)).clamp(0.0, 1.0)
 }
 
-/// The inverse CDF: `λ = c + atanh(t₀ + u (t₁ − t₀)) / a`, for `u` in `[0, 1)`, clamped to
-/// the range against rounding (u = 0 gives 360 nm, u → 1 gives 830 nm).
-pub fn sample_visible(u: f64) -> f64 {
+/// The inverse CDF and the density there, for `u` in `[0, 1)`: with
+/// `t = t₀ + u (t₁ − t₀) = tanh(a (λ − c))`, `λ = c + atanh(t) / a`, and since
+/// `1 / cosh² = 1 − tanh²`, `p(λ) = a (1 − t²) / (t₁ − t₀)`: one `atanh`, no `cosh`.
+/// `λ` is clamped to the range against rounding (u = 0 gives 360 nm, u → 1 gives 830 nm).
+pub fn sample_visible_pdf(u: f64) -> (f64, f64) {
     let (t0, t1) = visible_ends();
-    let l = VISIBLE_C + (t0 + u * (t1 - t0)).atanh() / VISIBLE_A;
-    l.clamp(LAMBDA_MIN, LAMBDA_MAX)
+    let t = t0 + u * (t1 - t0);
+    let l = VISIBLE_C + t.atanh() / VISIBLE_A;
+    (
+        l.clamp(LAMBDA_MIN, LAMBDA_MAX),
+        VISIBLE_A * (1.0 - t * t) / (t1 - t0),
+    )
+}
+
+/// The inverse CDF alone (see [`sample_visible_pdf`]).
+pub fn sample_visible(u: f64) -> f64 {
+    sample_visible_pdf(u).0
 }
 // ANCHOR_END: visible
 
@@ -190,11 +206,12 @@ pub fn hero_uniform(u: f64) -> Wavelengths {
 /// through the visible pdf's inverse CDF. Each `u_j` is uniform, so each `λ_j` alone has
 /// density `p`: every lane is weighted by its own `p(λ_j)`.
 pub fn hero_visible(u: f64) -> Wavelengths {
-    let lambda: [f64; N] = std::array::from_fn(|j| sample_visible(wrap01(u + j as f64 / N as f64)));
+    let lanes: [(f64, f64); N] =
+        std::array::from_fn(|j| sample_visible_pdf(wrap01(u + j as f64 / N as f64)));
     Wavelengths {
-        lambda,
-        pdf: lambda.map(visible_pdf),
-        hero_pdf: visible_pdf(lambda[0]),
+        lambda: lanes.map(|l| l.0),
+        pdf: lanes.map(|l| l.1),
+        hero_pdf: lanes[0].1,
     }
 }
 // ANCHOR_END: hero_visible
@@ -206,7 +223,7 @@ pub fn hero_visible(u: f64) -> Wavelengths {
 /// heuristic over the N rotations: `f(λ_j) / Σ_k p(λ_k)`, stored as the weighting density
 /// `pdf_j = (1/N) Σ_k p(λ_k)`.
 pub fn hero_balance(u: f64) -> Wavelengths {
-    let hero = sample_visible(u);
+    let (hero, hero_pdf) = sample_visible_pdf(u);
     let s = (hero - LAMBDA_MIN) / RANGE;
     let lambda: [f64; N] = std::array::from_fn(|j| {
         if j == 0 {
@@ -215,11 +232,11 @@ pub fn hero_balance(u: f64) -> Wavelengths {
             sample_uniform(wrap01(s + j as f64 / N as f64))
         }
     });
-    let mean = lambda.iter().map(|&l| visible_pdf(l)).sum::<f64>() / N as f64;
+    let mean = (hero_pdf + lambda[1..].iter().map(|&l| visible_pdf(l)).sum::<f64>()) / N as f64;
     Wavelengths {
         lambda,
         pdf: [mean; N],
-        hero_pdf: visible_pdf(hero),
+        hero_pdf,
     }
 }
 // ANCHOR_END: hero_balance
@@ -319,8 +336,8 @@ impl Strategy {
         match self {
             Strategy::Uniform => Wavelengths::single(sample_uniform(u), 1.0 / RANGE),
             Strategy::Visible => {
-                let l = sample_visible(u);
-                Wavelengths::single(l, visible_pdf(l))
+                let (l, p) = sample_visible_pdf(u);
+                Wavelengths::single(l, p)
             }
             Strategy::HeroUniform => hero_uniform(u),
             Strategy::HeroVisible => hero_visible(u),
