@@ -5,7 +5,7 @@
 //! seeds. The exact values come from `cie::xyz` (Gauss-Legendre quadrature, a different
 //! method from Monte Carlo), the visible pdf's constants from pbrt-v4's source. Every
 //! estimator test has planted-bug twins, run on the same samples, that must be rejected.
-//! Statistical tests in this file (correct code that must pass): 10.
+//! Statistical tests in this file (correct code that must pass): 11.
 
 use glam::DVec3;
 use raylemma::check::warp::{self, Domain, Options, SquareWarp};
