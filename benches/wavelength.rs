@@ -1,3 +1,33 @@
-//! Benchmark of the wavelength chapter (issue 5): filled by that section.
+//! Criterion benchmark of the chapter *Wavelength sampling and hero wavelengths*: ns to
+//! generate the lanes of one path per strategy, on the same uniform numbers that
+//! `cargo run --release -- figures` times for the book (`figures/wavelength_speed.md`).
+//!
+//! Run with `cargo bench --bench wavelength`.
 
-fn main() {}
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use raylemma::figures::wavelength::timing_us;
+use raylemma::spectral::wavelength::Strategy;
+
+fn lanes(c: &mut Criterion) {
+    let us = timing_us(4096);
+    let mut group = c.benchmark_group("wavelength_lanes");
+    group.throughput(Throughput::Elements(us.len() as u64));
+    for s in Strategy::ALL {
+        group.bench_with_input(BenchmarkId::from_parameter(s.name()), &us, |b, us| {
+            b.iter(|| {
+                let mut acc = 0.0;
+                for &u in us {
+                    let w = s.sample(black_box(u));
+                    acc += w.lambda[3] + w.pdf[0];
+                }
+                acc
+            });
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, lanes);
+criterion_main!(benches);

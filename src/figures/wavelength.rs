@@ -1,8 +1,341 @@
-//! Figures of the chapter on wavelength (issue 5): filled by that section.
+//! Figures and tables of the chapter *Wavelength sampling and hero wavelengths*
+//! (`chapters/spectral/wavelength.md`).
 
-use super::Output;
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use glam::DVec3;
+
+use super::{Output, Settings, timing};
+use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::rng;
+use crate::spectral::cie;
+use crate::spectral::spectrum::{Spectrum, builtin};
+use crate::spectral::wavelength::{N, SEED_BAND, SeedBand, Strategy, seed_band, seed_band_weight};
+use crate::stats::ttest::Summary;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
-    Vec::new()
+    vec![
+        Output {
+            file: "wavelength_error.png",
+            what: "RMS relative error of XYZ against time per wavelength strategy",
+            make: error_png,
+        },
+        Output {
+            file: "wavelength_efficiency.md",
+            what: "variance per path, ns per path and efficiency per strategy and spectrum",
+            make: efficiency_md,
+        },
+        Output {
+            file: "wavelength_seed_bias.md",
+            what: "bias of the seed's band, predicted and measured",
+            make: seed_bias_md,
+        },
+        Output {
+            file: "wavelength_speed.md",
+            what: "ns to generate the lanes per strategy",
+            make: speed_md,
+        },
+    ]
+}
+
+/// The spectra of the chapter's tables: the five measured lamps, D65, A and a blackbody.
+pub fn spectra() -> Vec<(&'static str, Spectrum)> {
+    let t = |f: &str| Spectrum::Table(builtin(f));
+    vec![
+        ("incandescent", t("lamp_incandescent.csv")),
+        ("cool white fl.", t("lamp_cool_white_fluorescent.csv")),
+        ("LED (YAG)", t("lamp_phosphor_led_yag.csv")),
+        ("high-pr. sodium", t("lamp_high_pressure_sodium.csv")),
+        ("low-pr. sodium", t("lamp_low_pressure_sodium.csv")),
+        ("D65", t("cie_illuminant_D65.csv")),
+        ("A", t("cie_illuminant_A.csv")),
+        (
+            "blackbody 5000 K",
+            Spectrum::Blackbody {
+                kelvin: 5000.0,
+                peak: 1.0,
+            },
+        ),
+    ]
+}
+
+/// The XYZ estimate of one path.
+fn path_xyz(s: Strategy, u: f64, spectrum: &Spectrum) -> DVec3 {
+    s.sample(u).xyz(|l| spectrum.eval(l))
+}
+
+/// The mean over X, Y, Z of the squared relative error of `est`.
+fn relative_sq(est: DVec3, exact: DVec3) -> f64 {
+    ((est / exact - DVec3::ONE).powf(2.0)).element_sum() / 3.0
+}
+
+/// ns per path (lanes and XYZ estimate) of strategy `s` on `spectrum`.
+fn ns_per_path(s: Strategy, spectrum: &Spectrum, reps: usize) -> f64 {
+    let batch = 2000;
+    let mut r = rng::seeded(0x7173);
+    let us: Vec<f64> = (0..batch).map(|_| rng::uniform(&mut r, 0.0, 1.0)).collect();
+    timing::median_ns_per_item(batch, reps, || {
+        let mut acc = 0.0;
+        for &u in &us {
+            acc += path_xyz(s, black_box(u), spectrum).y;
+        }
+        acc.to_bits()
+    })
+}
+
+/// Relative variance per path: the mean over X, Y, Z of `Var[est] / exact²`.
+fn relative_variance(s: Strategy, spectrum: &Spectrum, exact: DVec3, n: usize) -> f64 {
+    let mut r = rng::seeded(0x5EED);
+    let mut sums = [Summary::default(), Summary::default(), Summary::default()];
+    for _ in 0..n {
+        let e = path_xyz(s, rng::uniform(&mut r, 0.0, 1.0), spectrum) / exact;
+        for (k, sum) in sums.iter_mut().enumerate() {
+            sum.push(e[k]);
+        }
+    }
+    sums.iter().map(Summary::variance).sum::<f64>() / 3.0
+}
+
+fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let (repeats, max_pow, reps) = if settings.quick {
+        (60, 8, 3)
+    } else {
+        (200, 11, 11)
+    };
+    let chosen = ["incandescent", "cool white fl.", "low-pr. sodium"];
+    let mut panels = Vec::new();
+    for (name, spectrum) in spectra().into_iter().filter(|(n, _)| chosen.contains(n)) {
+        let exact = cie::xyz(|l| spectrum.eval(l));
+        let mut series = Vec::new();
+        for s in Strategy::ALL {
+            let ns = ns_per_path(s, &spectrum, reps);
+            let mut r = rng::seeded(0xE44);
+            let points = (2..=max_pow)
+                .map(|k| {
+                    let n = 1usize << k;
+                    let mse = (0..repeats)
+                        .map(|_| {
+                            let mut sum = DVec3::ZERO;
+                            for _ in 0..n {
+                                sum += path_xyz(s, rng::uniform(&mut r, 0.0, 1.0), &spectrum);
+                            }
+                            relative_sq(sum / n as f64, exact)
+                        })
+                        .sum::<f64>()
+                        / repeats as f64;
+                    (n as f64 * ns, mse.sqrt())
+                })
+                .collect();
+            series.push(Series {
+                label: s.name().into(),
+                points,
+            });
+        }
+        panels.push(Panel {
+            title: format!("{name}: XYZ of the lamp"),
+            x_label: "time per estimate, ns".into(),
+            y_label: "RMS relative error".into(),
+            x_scale: Scale::Log,
+            y_scale: Scale::Log,
+            series,
+        });
+    }
+    plot::line_chart_png(&panels, 1500, 520)
+}
+
+fn efficiency_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let (n, reps) = if settings.quick {
+        (20_000, 3)
+    } else {
+        (200_000, 11)
+    };
+    let spectra = spectra();
+    let mut variance = Vec::new();
+    let mut times = Vec::new();
+    for (_, spectrum) in &spectra {
+        let exact = cie::xyz(|l| spectrum.eval(l));
+        variance.push(
+            Strategy::ALL
+                .map(|s| relative_variance(s, spectrum, exact, n))
+                .to_vec(),
+        );
+        times.push(
+            Strategy::ALL
+                .map(|s| ns_per_path(s, spectrum, reps))
+                .to_vec(),
+        );
+    }
+    let header = |md: &mut String, first: &str| -> std::fmt::Result {
+        write!(md, "| {first} |")?;
+        for (name, _) in &spectra {
+            write!(md, " {name} |")?;
+        }
+        writeln!(md)?;
+        writeln!(md, "|---|{}", "---:|".repeat(spectra.len()))
+    };
+    let mut md = String::new();
+    writeln!(
+        md,
+        "**Relative variance per path** (mean over X, Y, Z of Var / exact²; smaller is better)\n"
+    )?;
+    header(&mut md, "strategy")?;
+    for (i, s) in Strategy::ALL.iter().enumerate() {
+        write!(md, "| {} |", s.name())?;
+        for v in &variance {
+            write!(md, " {:.4} |", v[i])?;
+        }
+        writeln!(md)?;
+    }
+    writeln!(md, "\n**ns per path** (lanes and the XYZ estimate)\n")?;
+    header(&mut md, "strategy")?;
+    for (i, s) in Strategy::ALL.iter().enumerate() {
+        write!(md, "| {} |", s.name())?;
+        for t in &times {
+            write!(md, " {:.0} |", t[i])?;
+        }
+        writeln!(md)?;
+    }
+    writeln!(
+        md,
+        "\n**Efficiency relative to one uniform wavelength**, `(Var × ns)` of uniform over \
+         `(Var × ns)` of the strategy (larger is better)\n"
+    )?;
+    header(&mut md, "strategy")?;
+    for (i, s) in Strategy::ALL.iter().enumerate() {
+        write!(md, "| {} |", s.name())?;
+        for (v, t) in variance.iter().zip(&times) {
+            write!(md, " {:.2} |", v[0] * t[0] / (v[i] * t[i]))?;
+        }
+        writeln!(md)?;
+    }
+    writeln!(
+        md,
+        "\n*{n} paths per cell (seeded); {}; median of {reps} batches of 2000 paths{}. \
+         The seed's band uses 380–780 nm and 5 nm steps.*",
+        timing::machine(),
+        if settings.quick {
+            " (quick mode: noisy)"
+        } else {
+            ""
+        }
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// The readings of the seed's unspecified range and band spacing that the bias table shows.
+pub fn seed_readings() -> Vec<(&'static str, SeedBand)> {
+    let b = |lo, hi, spacing| SeedBand { lo, hi, spacing };
+    vec![
+        ("380–780, 5 nm (chapter)", SEED_BAND),
+        ("380–780, 10 nm", b(380.0, 780.0, 10.0)),
+        ("380–700, 5 nm", b(380.0, 700.0, 5.0)),
+        ("400–700, 5 nm", b(400.0, 700.0, 5.0)),
+        ("360–830, 5 nm", b(360.0, 830.0, 5.0)),
+    ]
+}
+
+fn seed_bias_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let spectra = spectra();
+    let readings = seed_readings();
+    let mut md = String::new();
+    writeln!(
+        md,
+        "**Predicted relative bias** `∫ w f / ∫ f − 1` of X / Y / Z (quadrature with the \
+         seed's weight `w`, `seed_band_weight`)\n"
+    )?;
+    write!(md, "| spectrum |")?;
+    for (name, _) in &readings {
+        write!(md, " {name} |")?;
+    }
+    writeln!(md)?;
+    writeln!(md, "|---|{}", "---:|".repeat(readings.len()))?;
+    for (name, spectrum) in &spectra {
+        let exact = cie::xyz(|l| spectrum.eval(l));
+        write!(md, "| {name} |")?;
+        for (_, band) in &readings {
+            let biased = cie::xyz(|l| spectrum.eval(l) * seed_band_weight(l, band));
+            let rel = biased / exact - DVec3::ONE;
+            write!(md, " {:.1e} / {:.1e} / {:.1e} |", rel.x, rel.y, rel.z)?;
+        }
+        writeln!(md)?;
+    }
+    let n = if settings.quick { 200_000 } else { 4_000_000 };
+    let band = readings[3].1;
+    writeln!(
+        md,
+        "\n**Measured** with the reading 400–700 nm, 5 nm: relative error of the mean of {n} \
+         paths ± its standard error, against the predicted bias\n"
+    )?;
+    writeln!(
+        md,
+        "| spectrum | X measured | X predicted | Z measured | Z predicted |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---:|")?;
+    for (name, spectrum) in spectra
+        .iter()
+        .filter(|(n, _)| ["D65", "A", "blackbody 5000 K"].contains(n))
+    {
+        let exact = cie::xyz(|l| spectrum.eval(l));
+        let biased = cie::xyz(|l| spectrum.eval(l) * seed_band_weight(l, &band));
+        let mut r = rng::seeded(0xB1A5);
+        let (mut x, mut z) = (Summary::default(), Summary::default());
+        for _ in 0..n {
+            let e = seed_band(rng::uniform(&mut r, 0.0, 1.0), &band).xyz(|l| spectrum.eval(l));
+            x.push(e.x / exact.x - 1.0);
+            z.push(e.z / exact.z - 1.0);
+        }
+        writeln!(
+            md,
+            "| {name} | {:.2e} ± {:.1e} | {:.2e} | {:.2e} ± {:.1e} | {:.2e} |",
+            x.mean,
+            x.std_error(),
+            biased.x / exact.x - 1.0,
+            z.mean,
+            z.std_error(),
+            biased.z / exact.z - 1.0
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*The band has {N} wavelengths `λ₀ + j · spacing`; `λ₀` uniform on the range.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// The uniform numbers the speed table and the criterion bench use.
+pub fn timing_us(n: usize) -> Vec<f64> {
+    let mut r = rng::seeded(0x1A4B);
+    (0..n).map(|_| rng::uniform(&mut r, 0.0, 1.0)).collect()
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let reps = if settings.quick { 5 } else { 101 };
+    let us = timing_us(4096);
+    let mut md = String::new();
+    writeln!(md, "| strategy | ns to generate the {N} lanes |")?;
+    writeln!(md, "|---|---:|")?;
+    for s in Strategy::ALL {
+        let ns = timing::median_ns_per_item(us.len(), reps, || {
+            let mut acc = 0.0;
+            for &u in &us {
+                let w = s.sample(black_box(u));
+                acc += w.lambda[3] + w.pdf[0];
+            }
+            acc.to_bits()
+        });
+        writeln!(md, "| {} | {ns:.1} |", s.name())?;
+    }
+    writeln!(
+        md,
+        "\n*{}; 4096 random u per batch, median of {reps} batches{}.*",
+        timing::machine(),
+        if settings.quick {
+            " (quick mode: noisy)"
+        } else {
+            ""
+        }
+    )?;
+    Ok(md.into_bytes())
 }
