@@ -8,11 +8,11 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::figures::emission::timing_us;
+use raylemma::figures::timing::uniform_inputs;
 use raylemma::spectral::emission::{EmissionSampler, lamps, uniform_wavelength};
 
 fn emission(c: &mut Criterion) {
-    let us = timing_us(4096);
+    let us = uniform_inputs(4096);
     let mut group = c.benchmark_group("emission");
     group.throughput(Throughput::Elements(us.len() as u64));
     for lamp in lamps() {

@@ -10,11 +10,12 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use raylemma::figures::frame::timing_normals;
-use raylemma::figures::tabulated::{TIMING_BINS, timing_tables, timing_us};
+use raylemma::figures::tabulated::{TIMING_BINS, timing_tables};
+use raylemma::figures::timing::uniform_inputs;
 use raylemma::sampling::frame::{Frame, frisvad};
 
 fn tabulated(c: &mut Criterion) {
-    let us = timing_us(4096);
+    let us = uniform_inputs(4096);
     let mut group = c.benchmark_group("tabulated");
     group.throughput(Throughput::Elements(us.len() as u64));
     for bins in TIMING_BINS {

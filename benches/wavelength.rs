@@ -7,11 +7,11 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::figures::wavelength::timing_us;
+use raylemma::figures::timing::uniform_inputs;
 use raylemma::spectral::wavelength::Strategy;
 
 fn lanes(c: &mut Criterion) {
-    let us = timing_us(4096);
+    let us = uniform_inputs(4096);
     let mut group = c.benchmark_group("wavelength_lanes");
     group.throughput(Throughput::Elements(us.len() as u64));
     for s in Strategy::ALL {

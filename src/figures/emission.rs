@@ -1,7 +1,6 @@
 //! Figures and tables of the chapter *Importance-sampled emission spectra*.
 
 use std::fmt::Write as _;
-use std::hint::black_box;
 
 use glam::DVec3;
 use rand::RngExt;
@@ -350,15 +349,9 @@ fn drawing_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-/// `n` uniform numbers for timing (fixed seed).
-pub fn timing_us(n: usize) -> Vec<f64> {
-    let mut r = rng::seeded(0xE5);
-    (0..n).map(|_| r.random::<f64>()).collect()
-}
-
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
-    let us = timing_us(4096);
+    let us = timing::uniform_inputs(4096);
     let mut md = String::new();
     writeln!(
         md,
@@ -367,21 +360,13 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     writeln!(md, "|---|---:|---:|---:|")?;
     for lamp in lamps() {
         let s = sampler(&lamp.spectrum)?;
-        let imp = timing::median_ns_per_item(us.len(), reps, || {
-            let mut acc = 0.0;
-            for &u in &us {
-                let w = s.sample(black_box(u));
-                acc += w.nm + w.pdf;
-            }
-            acc.to_bits()
+        let imp = timing::median_ns_per_input(&us, reps, |u| {
+            let w = s.sample(u);
+            w.nm + w.pdf
         });
-        let uni = timing::median_ns_per_item(us.len(), reps, || {
-            let mut acc = 0.0;
-            for &u in &us {
-                let w = uniform_wavelength(black_box(u));
-                acc += w.nm + w.pdf;
-            }
-            acc.to_bits()
+        let uni = timing::median_ns_per_input(&us, reps, |u| {
+            let w = uniform_wavelength(u);
+            w.nm + w.pdf
         });
         writeln!(
             md,
@@ -395,11 +380,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         "\n*{}; 4096 random u per batch, median of {reps} batches{}. Each sample includes \
          its pdf.*",
         timing::machine(),
-        if settings.quick {
-            " (quick mode: noisy)"
-        } else {
-            ""
-        }
+        timing::quick_note(settings.quick)
     )?;
     Ok(md.into_bytes())
 }

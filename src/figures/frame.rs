@@ -235,11 +235,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         md,
         "\n*{}; 4096 random normals per batch, median of {reps} batches{}.*",
         timing::machine(),
-        if settings.quick {
-            " (quick mode: noisy)"
-        } else {
-            ""
-        }
+        timing::quick_note(settings.quick)
     )?;
     Ok(md.into_bytes())
 }

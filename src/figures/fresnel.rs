@@ -392,11 +392,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
          Building one `FresnelFit` costs {:.0} ns.*",
         timing::machine(),
         100.0 * tir_share,
-        if settings.quick {
-            " (quick mode: noisy)"
-        } else {
-            ""
-        },
+        timing::quick_note(settings.quick),
         fit_construction_ns(settings),
     )?;
     Ok(md.into_bytes())

@@ -1,7 +1,6 @@
 //! Figures and tables of the chapter *Tabulated distributions*.
 
 use std::fmt::Write as _;
-use std::hint::black_box;
 
 use rand::RngExt;
 
@@ -346,15 +345,9 @@ pub fn timing_tables(bins: usize) -> (Piecewise1D, PiecewiseLinear1D) {
     }
 }
 
-/// `n` uniform numbers for timing (fixed seed).
-pub fn timing_us(n: usize) -> Vec<f64> {
-    let mut rng = rng::seeded(0x7157);
-    (0..n).map(|_| rng.random::<f64>()).collect()
-}
-
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 201 };
-    let us = timing_us(4096);
+    let us = timing::uniform_inputs(4096);
     let mut md = String::new();
     writeln!(
         md,
@@ -363,31 +356,15 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     writeln!(md, "|---:|---:|---:|")?;
     for bins in TIMING_BINS {
         let (constant, linear) = timing_tables(bins);
-        let c = timing::median_ns_per_item(us.len(), reps, || {
-            let mut acc = 0.0;
-            for &u in &us {
-                acc += constant.sample(black_box(u)).x;
-            }
-            acc.to_bits()
-        });
-        let l = timing::median_ns_per_item(us.len(), reps, || {
-            let mut acc = 0.0;
-            for &u in &us {
-                acc += linear.sample(black_box(u)).x;
-            }
-            acc.to_bits()
-        });
+        let c = timing::median_ns_per_input(&us, reps, |u| constant.sample(u).x);
+        let l = timing::median_ns_per_input(&us, reps, |u| linear.sample(u).x);
         writeln!(md, "| {bins} | {c:.1} | {l:.1} |")?;
     }
     writeln!(
         md,
         "\n*{}; 4096 random u per batch, median of {reps} batches{}. Each sample includes its pdf.*",
         timing::machine(),
-        if settings.quick {
-            " (quick mode: noisy)"
-        } else {
-            ""
-        }
+        timing::quick_note(settings.quick)
     )?;
     Ok(md.into_bytes())
 }

@@ -215,11 +215,7 @@ fn efficiency_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         "\n*{n} paths per cell (seeded); {}; median of {reps} batches of 2000 paths{}. \
          The seed's band uses 380–780 nm and 5 nm steps.*",
         timing::machine(),
-        if settings.quick {
-            " (quick mode: noisy)"
-        } else {
-            ""
-        }
+        timing::quick_note(settings.quick)
     )?;
     Ok(md.into_bytes())
 }
@@ -304,26 +300,16 @@ fn seed_bias_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-/// The uniform numbers the speed table and the criterion bench use.
-pub fn timing_us(n: usize) -> Vec<f64> {
-    let mut r = rng::seeded(0x1A4B);
-    (0..n).map(|_| rng::uniform(&mut r, 0.0, 1.0)).collect()
-}
-
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
-    let us = timing_us(4096);
+    let us = timing::uniform_inputs(4096);
     let mut md = String::new();
     writeln!(md, "| strategy | ns to generate the {N} lanes |")?;
     writeln!(md, "|---|---:|")?;
     for s in Strategy::ALL {
-        let ns = timing::median_ns_per_item(us.len(), reps, || {
-            let mut acc = 0.0;
-            for &u in &us {
-                let w = s.sample(black_box(u));
-                acc += w.lambda[3] + w.pdf[0];
-            }
-            acc.to_bits()
+        let ns = timing::median_ns_per_input(&us, reps, |u| {
+            let w = s.sample(u);
+            w.lambda[3] + w.pdf[0]
         });
         writeln!(md, "| {} | {ns:.1} |", s.name())?;
     }
@@ -331,11 +317,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         md,
         "\n*{}; 4096 random u per batch, median of {reps} batches{}.*",
         timing::machine(),
-        if settings.quick {
-            " (quick mode: noisy)"
-        } else {
-            ""
-        }
+        timing::quick_note(settings.quick)
     )?;
     Ok(md.into_bytes())
 }
