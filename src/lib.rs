@@ -12,7 +12,8 @@
 //! * [`stats`]: chi-squared, Kolmogorov-Smirnov and t-tests, with Šidák correction.
 //! * [`sampling`]: warps and tabulated distributions (*Sampling*).
 //! * [`optics`]: reflection, refraction, Fresnel, specular deltas, dispersion, thin films.
-//! * [`spectral`]: spectra, CIE colour, wavelength sampling, emission spectra, display.
+//! * [`spectral`]: spectra, CIE colour, wavelength sampling, emission spectra, display,
+//!   RGB-to-spectrum upsampling.
 //! * [`transport`]: Lambertian reflectance, Russian roulette, shadow-ray pdfs.
 //! * [`figures`]: the code that draws the book's figures and tables.
 

@@ -242,6 +242,62 @@ const GAUSS8: [(f64, f64); 8] = [
     (0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
 ];
 
+// ANCHOR: adaptive
+/// Integral of `f` over `[a0, a1] x [b0, b1]`, adaptively: the 8x8 Gauss rule on the
+/// rectangle is compared with the sum of the rule on its four quarters; where they differ
+/// by more than [`CELL_TOLERANCE`] (a jump of the pdf, such as a light's silhouette or a
+/// cone's rim, crosses the rectangle) each quarter is integrated the same way, down to
+/// [`CELL_DEPTH`] levels. A smooth pdf stops at the first level. Returns `Err` with the
+/// point if `f` is negative or not finite at a node.
+fn integrate2(
+    f: &impl Fn(f64, f64) -> f64,
+    a: (f64, f64),
+    b: (f64, f64),
+) -> Result<f64, (f64, f64, f64)> {
+    refine(f, a, b, gauss2(f, a, b)?, CELL_DEPTH)
+}
+
+/// Largest difference, relative to the cell's probability scale, between one Gauss rule
+/// and the sum over its quarters that counts as converged. Expected counts are then right
+/// to about `1e-9 N`, far below their Poisson noise `sqrt(N p)`.
+const CELL_TOLERANCE: f64 = 1e-10;
+/// Deepest subdivision of a cell: `4^6` quarters in the limit, though only the quarters
+/// that a jump crosses are refined (about `2^k` of them at level `k`).
+const CELL_DEPTH: u32 = 6;
+
+fn refine(
+    f: &impl Fn(f64, f64) -> f64,
+    a: (f64, f64),
+    b: (f64, f64),
+    whole: f64,
+    depth: u32,
+) -> Result<f64, (f64, f64, f64)> {
+    let (am, bm) = (0.5 * (a.0 + a.1), 0.5 * (b.0 + b.1));
+    let quarters = [
+        ((a.0, am), (b.0, bm)),
+        ((am, a.1), (b.0, bm)),
+        ((a.0, am), (bm, b.1)),
+        ((am, a.1), (bm, b.1)),
+    ];
+    let mut parts = [0.0; 4];
+    for (part, &(qa, qb)) in parts.iter_mut().zip(&quarters) {
+        *part = gauss2(f, qa, qb)?;
+    }
+    let sum: f64 = parts.iter().sum();
+    // The scale is the rectangle's area: the pdf is O(1) on the unit domains checked here.
+    let area = (a.1 - a.0) * (b.1 - b.0);
+    if depth == 0 || (sum - whole).abs() <= CELL_TOLERANCE * area.max(f64::MIN_POSITIVE) {
+        return Ok(sum);
+    }
+    let mut total = 0.0;
+    for (part, &(qa, qb)) in parts.iter().zip(&quarters) {
+        total += refine(f, qa, qb, *part, depth - 1)?;
+    }
+    Ok(total)
+}
+
+// ANCHOR_END: adaptive
+
 /// Integral of `f` over `[a0, a1] x [b0, b1]` by a tensor 8x8 Gauss-Legendre rule.
 /// Returns `Err` with the point if `f` is negative or not finite at a node.
 fn gauss2(
@@ -282,17 +338,17 @@ fn cell_probabilities(warp: &dyn Warp, rows: usize, cols: usize) -> Result<Vec<f
                 Domain::Interval { lo, hi } => {
                     let f =
                         |s: f64, _| warp.pdf(DVec3::new(lo + s * (hi - lo), 0.0, 0.0)) * (hi - lo);
-                    gauss2(&f, (a0, a1), (0.0, 1.0))
+                    integrate2(&f, (a0, a1), (0.0, 1.0))
                 }
                 Domain::Square => {
-                    gauss2(&|s, t| warp.pdf(DVec3::new(t, s, 0.0)), (a0, a1), (b0, b1))
+                    integrate2(&|s, t| warp.pdf(DVec3::new(t, s, 0.0)), (a0, a1), (b0, b1))
                 }
                 Domain::Disc => {
                     let f = |s: f64, t: f64| {
                         let (r, phi) = (s.sqrt(), t * TAU);
                         warp.pdf(DVec3::new(r * phi.cos(), r * phi.sin(), 0.0)) * 0.5 * TAU
                     };
-                    gauss2(&f, (a0, a1), (b0, b1))
+                    integrate2(&f, (a0, a1), (b0, b1))
                 }
                 Domain::Sphere => {
                     let f = |s: f64, t: f64| {
@@ -301,10 +357,10 @@ fn cell_probabilities(warp: &dyn Warp, rows: usize, cols: usize) -> Result<Vec<f
                         warp.pdf(DVec3::new(r * phi.cos(), r * phi.sin(), z)) * 2.0 * TAU
                     };
                     if a0 < 0.5 && a1 > 0.5 {
-                        gauss2(&f, (a0, 0.5), (b0, b1))
-                            .and_then(|x| Ok(x + gauss2(&f, (0.5, a1), (b0, b1))?))
+                        integrate2(&f, (a0, 0.5), (b0, b1))
+                            .and_then(|x| Ok(x + integrate2(&f, (0.5, a1), (b0, b1))?))
                     } else {
-                        gauss2(&f, (a0, a1), (b0, b1))
+                        integrate2(&f, (a0, a1), (b0, b1))
                     }
                 }
             };
