@@ -275,9 +275,9 @@ fn srgb_matrix_derived_from_primaries_matches_iec_61966_2_1() {
     let inv = xyz_to_linear_srgb_matrix();
     let abs = DMat3::from_cols(inv.x_axis.abs(), inv.y_axis.abs(), inv.z_axis.abs());
     let bound = abs * DMat3::from_cols_array(&[5e-5; 9]) * abs;
-    for c in 0..3 {
-        for r in 0..3 {
-            let d = (inv.col(c)[r] - IEC_XYZ_TO_RGB[r][c]).abs();
+    for (r, row) in IEC_XYZ_TO_RGB.iter().enumerate() {
+        for (c, published) in row.iter().enumerate() {
+            let d = (inv.col(c)[r] - published).abs();
             let tol = bound.col(c)[r] + 5e-5;
             assert!(d <= tol, "XYZ->RGB [{r}][{c}]: {d:.2e} > {tol:.2e}");
         }

@@ -176,7 +176,7 @@ pub const FIT_Z: [Lobe; 2] = [
 /// 360-830 nm and for NaN, so that both describe the same observer on the same range.
 /// Its error against the table is measured in the chapter (`figures/colour_fit.md`).
 pub fn cmf_fit(nm: f64) -> DVec3 {
-    if !(nm >= LAMBDA_MIN && nm <= LAMBDA_MAX) {
+    if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&nm) {
         return DVec3::ZERO;
     }
     let sum = |lobes: &[Lobe]| lobes.iter().map(|l| l.eval(nm)).sum::<f64>();
