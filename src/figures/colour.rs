@@ -252,7 +252,7 @@ fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         });
         errors.push(Series {
             label: format!("{name} fit − table"),
-            points: nms
+            points: fine
                 .iter()
                 .map(|&l| (l, cmf_fit(l)[k] - cmf(l)[k]))
                 .collect(),
