@@ -352,6 +352,21 @@ fn out_of_gamut_rejects_clamping() {
     assert!(in_srgb_triangle(p), "the clamped colour is in gamut: {p}");
 }
 
+/// The seed converts to colour at every surface (in the BSDF) and multiplies colours
+/// along the path. Colour matching is a linear functional of the *final* spectrum: the
+/// colour of a product of spectra is not the product of their colours. Two green filters
+/// with disjoint pass bands (500-520 nm and 540-560 nm) in series pass nothing; the product
+/// of their linear sRGB colours is a bright green.
+#[test]
+fn colour_of_a_product_is_not_the_product_of_colours() {
+    let band = |lo: f64, hi: f64| move |nm: f64| if (lo..=hi).contains(&nm) { 1.0 } else { 0.0 };
+    let (f1, f2) = (band(500.0, 520.0), band(540.0, 560.0));
+    let through_both = xyz(|nm| f1(nm) * f2(nm));
+    assert!(through_both == DVec3::ZERO, "{through_both}");
+    let seed = xyz_to_linear_srgb(xyz(f1)) * xyz_to_linear_srgb(xyz(f2));
+    assert!(seed.y > 0.01, "per-bounce colours multiplied: {seed}");
+}
+
 // ---------------------------------------------------------------------------------------
 // Planck's law.
 

@@ -247,11 +247,13 @@ pub fn linear_srgb_to_xyz(rgb: DVec3) -> DVec3 {
     srgb_matrices().0 * rgb
 }
 
+// ANCHOR: to_srgb
 /// XYZ to linear sRGB. Colours outside the sRGB gamut get negative components; they stay
 /// negative here and are only dealt with at display time (*From spectrum to display*).
 pub fn xyz_to_linear_srgb(xyz: DVec3) -> DVec3 {
     srgb_matrices().1 * xyz
 }
+// ANCHOR_END: to_srgb
 
 /// The XYZ → linear sRGB matrix itself (for figures and for comparison with IEC 61966-2-1).
 pub fn xyz_to_linear_srgb_matrix() -> DMat3 {
