@@ -1,8 +1,430 @@
-//! Figures of the chapter on colour (issue 5): filled by that section.
+//! Figures and tables of the chapter *Spectra and CIE colour*
+//! (`chapters/spectral/colour.md`).
 
-use super::Output;
+use std::fmt::Write as _;
+use std::hint::black_box;
+
+use glam::{DVec2, DVec3};
+use plotters::prelude::*;
+
+use super::{Output, Settings, timing};
+use crate::plot::{self, BoxError, PALETTE, Panel, Scale, Series};
+use crate::spectral::cie::{self, chromaticity, cmf, cmf_fit, xyz, xyz_to_linear_srgb, xyz_with};
+use crate::spectral::spectrum::{self, planck};
+use crate::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
-    Vec::new()
+    vec![
+        Output {
+            file: "colour_chromaticity.png",
+            what: "CIE 1931 chromaticity diagram: locus, sRGB, Planckian locus, illuminants",
+            make: chromaticity_png,
+        },
+        Output {
+            file: "colour_illuminants.md",
+            what: "illuminant chromaticities: published, CIE sum, quadrature, fit; linear sRGB",
+            make: illuminants_md,
+        },
+        Output {
+            file: "colour_fit.png",
+            what: "colour-matching functions: table against the Wyman-Sloan-Shirley fit",
+            make: fit_png,
+        },
+        Output {
+            file: "colour_fit.md",
+            what: "error of the Wyman-Sloan-Shirley fit",
+            make: fit_md,
+        },
+        Output {
+            file: "colour_speed.md",
+            what: "colour matching by table against by fit: ns per evaluation",
+            make: speed_md,
+        },
+        Output {
+            file: "colour_planck.md",
+            what: "Planckian locus against Krystek's approximation; illuminant A's temperature",
+            make: planck_md,
+        },
+    ]
+}
+
+/// The illuminants of `data/` with their published chromaticities (CIE 015:2018, 2°):
+/// `(name, file, x, y)`. The same values are asserted in `tests/colour.rs`.
+pub const ILLUMINANTS: [(&str, &str, f64, f64); 6] = [
+    ("A", "cie_illuminant_A.csv", 0.44758, 0.40745),
+    ("D65", "cie_illuminant_D65.csv", 0.31272, 0.32903),
+    ("FL2", "cie_illuminant_F2.csv", 0.3721, 0.3751),
+    ("FL11", "cie_illuminant_F11.csv", 0.3805, 0.3769),
+    (
+        "HP1",
+        "cie_illuminant_HP1_high_pressure_sodium.csv",
+        0.5330,
+        0.4150,
+    ),
+    ("LED-B3", "cie_illuminant_LED_B3.csv", 0.3756, 0.3723),
+];
+
+/// The CIE's rule: the sum over the 5 nm samples in 360-780 nm of S x̄ȳz̄ (unnormalised).
+fn cie_sum(t: &spectrum::Table) -> DVec3 {
+    t.wavelengths()
+        .iter()
+        .zip(t.values())
+        .filter(|(nm, _)| (LAMBDA_MIN..=780.0).contains(*nm))
+        .map(|(&nm, &v)| v * cmf(nm))
+        .sum()
+}
+
+fn xy_of(c: DVec3) -> DVec2 {
+    chromaticity(c).unwrap_or(DVec2::NAN)
+}
+
+fn planck_xy(kelvin: f64) -> DVec2 {
+    xy_of(xyz(|nm| planck(nm, kelvin)))
+}
+
+fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    plot::register_embedded_font();
+    let (width, height) = (820u32, 860u32);
+    let mut buffer = vec![255u8; (width * height * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "CIE 1931 chromaticity: spectral locus, sRGB, Planckian locus",
+                ("sans-serif", 18),
+            )
+            .margin(14)
+            .x_label_area_size(40)
+            .y_label_area_size(50)
+            .build_cartesian_2d(0.0..0.8, 0.0..0.9)?;
+        chart
+            .configure_mesh()
+            .x_desc("x")
+            .y_desc("y")
+            .label_style(("sans-serif", 13))
+            .axis_desc_style(("sans-serif", 15))
+            .draw()?;
+        // The spectral locus, 380-700 nm (beyond 700 nm it stays at the red end), closed by
+        // the line of purples.
+        let mut locus: Vec<(f64, f64)> = (380..=700)
+            .map(|nm| xy_of(cmf(f64::from(nm))))
+            .map(|p| (p.x, p.y))
+            .collect();
+        locus.push(locus[0]);
+        chart
+            .draw_series(LineSeries::new(locus, BLACK.stroke_width(2)))?
+            .label("spectral locus (monochromatic light, nm)")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        for nm in [460, 480, 500, 520, 540, 560, 580, 600, 620, 700] {
+            let p = xy_of(cmf(f64::from(nm)));
+            chart.draw_series(std::iter::once(Circle::new((p.x, p.y), 3, BLACK.filled())))?;
+            let offset = if p.x < 0.2 { (-38, -6) } else { (6, -6) };
+            chart.draw_series(std::iter::once(
+                EmptyElement::at((p.x, p.y))
+                    + Text::new(format!("{nm}"), offset, ("sans-serif", 13)),
+            ))?;
+        }
+        // The sRGB gamut.
+        let mut tri: Vec<(f64, f64)> = cie::SRGB_PRIMARIES.iter().map(|p| (p.x, p.y)).collect();
+        tri.push(tri[0]);
+        let blue = PALETTE[0];
+        chart
+            .draw_series(LineSeries::new(tri, blue.stroke_width(2)))?
+            .label("sRGB primaries (IEC 61966-2-1)")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], blue.stroke_width(2))
+            });
+        // The Planckian locus, 1000-20000 K.
+        let orange = PALETTE[1];
+        let temps: Vec<f64> = (0..=60)
+            .map(|i| 1000.0 * 20f64.powf(f64::from(i) / 60.0))
+            .collect();
+        let planckian: Vec<(f64, f64)> = temps
+            .iter()
+            .map(|&t| planck_xy(t))
+            .map(|p| (p.x, p.y))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(planckian, orange.stroke_width(2)))?
+            .label("Planckian locus, 1000-20000 K")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], orange.stroke_width(2))
+            });
+        for t in [1000.0, 2000.0, 10000.0] {
+            let p = planck_xy(t);
+            chart.draw_series(std::iter::once(
+                EmptyElement::at((p.x, p.y))
+                    + Circle::new((0, 0), 3, orange.filled())
+                    + Text::new(format!("{t} K"), (4, 6), ("sans-serif", 12)),
+            ))?;
+        }
+        // The illuminants, computed from their spectra.
+        let green = PALETTE[2];
+        for (k, (name, file, _, _)) in ILLUMINANTS.iter().enumerate() {
+            let t = spectrum::builtin(file);
+            let p = xy_of(xyz(|nm| t.eval(nm)));
+            // Label offsets (pixels) that keep the close ones (FL2, FL11, LED-B3) apart.
+            let offset = [(6, -16), (6, 4), (-34, -20), (10, -16), (8, -18), (-52, 4)][k];
+            let series = chart.draw_series(std::iter::once(
+                EmptyElement::at((p.x, p.y))
+                    + Cross::new((0, 0), 5, green.stroke_width(2))
+                    + Text::new((*name).to_string(), offset, ("sans-serif", 12)),
+            ))?;
+            if k == 0 {
+                series
+                    .label("CIE illuminants (from their spectra)")
+                    .legend(move |(x, y)| Cross::new((x + 10, y), 5, green.stroke_width(2)));
+            }
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 13))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()?;
+        root.present()?;
+    }
+    plot::encode_png(width, height, buffer)
+}
+
+fn illuminants_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| illuminant | published (x, y) | CIE 5 nm sum | renderer (exact integral) | error | by the fit | error | linear sRGB at Y = 1 |"
+    )?;
+    writeln!(md, "|---|---|---|---|---:|---|---:|---|")?;
+    for (name, file, x, y) in ILLUMINANTS {
+        let t = spectrum::builtin(file);
+        let published = DVec2::new(x, y);
+        let sum = xy_of(cie_sum(&t));
+        let exact = xyz(|nm| t.eval(nm));
+        let quad = xy_of(exact);
+        let fit = xy_of(xyz_with(cmf_fit, |nm| t.eval(nm)));
+        let rgb = xyz_to_linear_srgb(exact / exact.y);
+        let err = |p: DVec2| (p - published).abs().max_element();
+        writeln!(
+            md,
+            "| {name} | ({x}, {y}) | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {:.1e} | ({:.5}, {:.5}) | {:.1e} | ({:.4}, {:.4}, {:.4}) |",
+            sum.x,
+            sum.y,
+            quad.x,
+            quad.y,
+            err(quad),
+            fit.x,
+            fit.y,
+            err(fit),
+            rgb.x,
+            rgb.y,
+            rgb.z
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*Published: CIE 015:2018 (A and D65 to five decimals, the others to four). CIE 5 nm \
+         sum: the CIE's rule, Σ S(λ) x̄ȳz̄(λ) over the 5 nm samples. Renderer: the exact integral \
+         of the piecewise-linear spectrum against the 1 nm table (`cie::xyz`). Fit: the same \
+         integral with the Wyman-Sloan-Shirley functions (`cie::xyz_with(cmf_fit, ..)`). Errors \
+         are the larger of |Δx| and |Δy| against the published value. Generated by \
+         `cargo run --release -- figures --only colour_`.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let nms: Vec<f64> = (0..=94).map(|i| 360.0 + 5.0 * f64::from(i)).collect();
+    // The error oscillates with a period of about 10 nm: 5 nm steps would alias it.
+    let fine: Vec<f64> = (0..=470).map(|i| 360.0 + f64::from(i)).collect();
+    let names = ["x-bar", "y-bar", "z-bar"];
+    let mut curves = Vec::new();
+    let mut errors = Vec::new();
+    for (k, name) in names.iter().enumerate() {
+        curves.push(Series {
+            label: format!("{name} (table)"),
+            points: nms.iter().map(|&l| (l, cmf(l)[k])).collect(),
+        });
+        curves.push(Series {
+            label: format!("{name} fit"),
+            points: nms.iter().map(|&l| (l, cmf_fit(l)[k])).collect(),
+        });
+        errors.push(Series {
+            label: format!("{name} fit − table"),
+            points: fine
+                .iter()
+                .map(|&l| (l, cmf_fit(l)[k] - cmf(l)[k]))
+                .collect(),
+        });
+    }
+    plot::line_chart_png(
+        &[
+            Panel {
+                title: "CIE 1931 table and the Wyman-Sloan-Shirley fit".into(),
+                x_label: "wavelength (nm)".into(),
+                y_label: "value".into(),
+                x_scale: Scale::Linear,
+                y_scale: Scale::Linear,
+                series: curves,
+            },
+            Panel {
+                title: "fit − table".into(),
+                x_label: "wavelength (nm)".into(),
+                y_label: "difference".into(),
+                x_scale: Scale::Linear,
+                y_scale: Scale::Linear,
+                series: errors,
+            },
+        ],
+        1300,
+        520,
+    )
+}
+
+/// The largest |fit − table| of each function over 360-830 nm at 0.1 nm, with where it is,
+/// and the mean |fit − table|.
+pub fn fit_errors() -> [(f64, f64, f64); 3] {
+    let mut out = [(0.0, 0.0, 0.0); 3];
+    let n = 4701;
+    for i in 0..n {
+        let nm = LAMBDA_MIN + 0.1 * f64::from(i);
+        let d = (cmf_fit(nm) - cmf(nm)).abs();
+        for (k, o) in out.iter_mut().enumerate() {
+            if d[k] > o.0 {
+                o.0 = d[k];
+                o.1 = nm;
+            }
+            o.2 += d[k] / f64::from(n);
+        }
+    }
+    out
+}
+
+fn fit_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let errors = fit_errors();
+    let mut peak = DVec3::ZERO;
+    for i in 0..cie::CMF_ROWS {
+        peak = peak.max(cie::cmf_row(i));
+    }
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| function | peak of the table | max abs(fit − table) | at | relative to the peak | mean abs(fit − table) |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|---:|---:|")?;
+    for (k, name) in ["x̄", "ȳ", "z̄"].iter().enumerate() {
+        let (max, at, mean) = errors[k];
+        writeln!(
+            md,
+            "| {name} | {:.4} | {max:.4} | {at:.1} nm | {:.2} % | {mean:.5} |",
+            peak[k],
+            100.0 * max / peak[k]
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*Over 360-830 nm at 0.1 nm steps. The fit: Wyman, Sloan and Shirley, JCGT 2(2), \
+         2013, Listing 2 (`cie::cmf_fit`). Its effect on colours is in the illuminant table.*"
+    )?;
+    Ok(md.into_bytes())
+}
+
+fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let reps = if settings.quick { 5 } else { 41 };
+    // Wavelengths as a renderer draws them: uniform over the range, not on the knots.
+    let mut r = crate::rng::seeded(0xC0);
+    let nms: Vec<f64> = (0..4096)
+        .map(|_| crate::rng::uniform(&mut r, LAMBDA_MIN, LAMBDA_MAX))
+        .collect();
+    let batch = |f: fn(f64) -> DVec3| {
+        let nms = &nms;
+        move || {
+            let mut s = DVec3::ZERO;
+            for &nm in nms {
+                s += f(black_box(nm));
+            }
+            (s.x + s.y + s.z).to_bits()
+        }
+    };
+    let table_ns = timing::median_ns_per_item(nms.len(), reps, batch(cmf));
+    let fit_ns = timing::median_ns_per_item(nms.len(), reps, batch(cmf_fit));
+    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
+    let xyz_reps = if settings.quick { 5 } else { 21 };
+    let xyz_table = timing::median_ns_per_item(1, xyz_reps, || {
+        xyz(|nm| d65.eval(black_box(nm))).x.to_bits()
+    });
+    let xyz_fit = timing::median_ns_per_item(1, xyz_reps, || {
+        xyz_with(cmf_fit, |nm| d65.eval(black_box(nm))).x.to_bits()
+    });
+    let errors = fit_errors();
+    let worst = errors.iter().map(|e| e.0).fold(0.0, f64::max);
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| colour matching | ns per (x̄, ȳ, z̄) | max abs error | µs per XYZ of D65 (1880 points) |"
+    )?;
+    writeln!(md, "|---|---:|---:|---:|")?;
+    writeln!(
+        md,
+        "| 1 nm table, linear interpolation (`cmf`) | {table_ns:.2} | 0 (the definition) | {:.1} |",
+        xyz_table / 1e3
+    )?;
+    writeln!(
+        md,
+        "| Wyman-Sloan-Shirley fit (`cmf_fit`) | {fit_ns:.2} | {worst:.4} | {:.1} |",
+        xyz_fit / 1e3
+    )?;
+    writeln!(
+        md,
+        "\n*Median of {reps} batches of 4096 uniform wavelengths; {}. Measured by \
+         `cargo run --release -- figures`; `cargo bench --bench colour` measures the same with \
+         criterion.*",
+        timing::machine()
+    )?;
+    Ok(md.into_bytes())
+}
+
+/// Krystek's rational approximation of the Planckian locus (Color Res. Appl. 10, 38, 1985),
+/// CIE 1960 (u, v), converted to (x, y).
+pub fn krystek(t: f64) -> DVec2 {
+    let u = (0.860_117_757 + 1.541_182_54e-4 * t + 1.286_412_12e-7 * t * t)
+        / (1.0 + 8.424_202_35e-4 * t + 7.081_451_63e-7 * t * t);
+    let v = (0.317_398_726 + 4.228_062_45e-5 * t + 4.204_816_91e-8 * t * t)
+        / (1.0 - 2.897_418_16e-5 * t + 1.614_560_53e-7 * t * t);
+    let d = 2.0 * u - 8.0 * v + 4.0;
+    DVec2::new(3.0 * u / d, 2.0 * v / d)
+}
+
+fn planck_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| T (K) | Planck, exact integral (x, y) | Krystek 1985 (x, y) | max(abs Δx, abs Δy) |"
+    )?;
+    writeln!(md, "|---:|---|---|---:|")?;
+    for t in [
+        1000.0, 1500.0, 2000.0, 2856.0, 4000.0, 5000.0, 6504.0, 8000.0, 10000.0, 15000.0,
+    ] {
+        let p = planck_xy(t);
+        let k = krystek(t);
+        writeln!(
+            md,
+            "| {t} | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {:.1e} |",
+            p.x,
+            p.y,
+            k.x,
+            k.y,
+            (p - k).abs().max_element()
+        )?;
+    }
+    let c2 = spectrum::PLANCK_H * spectrum::LIGHT_C / spectrum::BOLTZMANN_K;
+    writeln!(
+        md,
+        "\n*Illuminant A is defined with the old second radiation constant c₂ = 1.435 × 10⁻² m K \
+         at 2848 K; with today's c₂ = hc/k = {c2:.6e} m K the same curve is a Planckian at \
+         {:.2} K.*",
+        2848.0 * c2 / 1.435e-2
+    )?;
+    Ok(md.into_bytes())
 }

@@ -107,6 +107,100 @@ pub fn xyz(s: impl Fn(f64) -> f64) -> DVec3 {
 }
 // ANCHOR_END: xyz
 
+// ---------------------------------------------------------------------------------------
+// The analytic fit of Wyman, Sloan and Shirley (2013).
+
+/// One lobe of the multi-lobe fit: `weight · exp(−½ ((λ − mu) · s)²)` with
+/// `s = inv_sigma_below` for `λ < mu` and `inv_sigma_above` otherwise (a Gaussian with a
+/// different width on each side of its peak).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lobe {
+    /// The lobe's height.
+    pub weight: f64,
+    /// The wavelength of its peak, nm.
+    pub mu: f64,
+    /// 1/σ below the peak, 1/nm.
+    pub inv_sigma_below: f64,
+    /// 1/σ above the peak, 1/nm.
+    pub inv_sigma_above: f64,
+}
+
+impl Lobe {
+    const fn new(weight: f64, mu: f64, inv_sigma_below: f64, inv_sigma_above: f64) -> Self {
+        Lobe {
+            weight,
+            mu,
+            inv_sigma_below,
+            inv_sigma_above,
+        }
+    }
+
+    /// The lobe at `nm`.
+    #[inline]
+    pub fn eval(&self, nm: f64) -> f64 {
+        let d = nm - self.mu;
+        let t = d * if d < 0.0 {
+            self.inv_sigma_below
+        } else {
+            self.inv_sigma_above
+        };
+        self.weight * (-0.5 * t * t).exp()
+    }
+}
+
+// ANCHOR: fit_lobes
+/// The lobes of the multi-lobe fit of x̄, ȳ, z̄: C. Wyman, P.-P. Sloan and P. Shirley,
+/// *Simple Analytic Approximations to the CIE XYZ Color Matching Functions*, Journal of
+/// Computer Graphics Techniques 2(2), 1-11, 2013, Listing 2 (the widths are the listing's
+/// reciprocals 1/σ, e.g. 0.0264 = 1/37.9 nm).
+pub const FIT_X: [Lobe; 3] = [
+    Lobe::new(1.056, 599.8, 0.0264, 0.0323),
+    Lobe::new(0.362, 442.0, 0.0624, 0.0374),
+    Lobe::new(-0.065, 501.1, 0.0490, 0.0382),
+];
+/// The lobes of ȳ (see [`FIT_X`]).
+pub const FIT_Y: [Lobe; 2] = [
+    Lobe::new(0.821, 568.8, 0.0213, 0.0247),
+    Lobe::new(0.286, 530.9, 0.0613, 0.0322),
+];
+/// The lobes of z̄ (see [`FIT_X`]).
+pub const FIT_Z: [Lobe; 2] = [
+    Lobe::new(1.217, 437.0, 0.0845, 0.0278),
+    Lobe::new(0.681, 459.0, 0.0385, 0.0725),
+];
+// ANCHOR_END: fit_lobes
+
+// ANCHOR: cmf_fit
+/// (x̄, ȳ, z̄) at `nm` by the Wyman-Sloan-Shirley fit ([`FIT_X`], [`FIT_Y`], [`FIT_Z`]):
+/// seven exponentials instead of a table look-up. Like [`cmf`] it is zero outside
+/// 360-830 nm and for NaN, so that both describe the same observer on the same range.
+/// Its error against the table is measured in the chapter (`figures/colour_fit.md`).
+pub fn cmf_fit(nm: f64) -> DVec3 {
+    if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&nm) {
+        return DVec3::ZERO;
+    }
+    let sum = |lobes: &[Lobe]| lobes.iter().map(|l| l.eval(nm)).sum::<f64>();
+    DVec3::new(sum(&FIT_X), sum(&FIT_Y), sum(&FIT_Z))
+}
+// ANCHOR_END: cmf_fit
+
+/// The XYZ of the spectrum `s` with any colour-matching functions `cmf` (for instance
+/// [`cmf_fit`]): the same 4-point Gauss-Legendre rule on each 1 nm interval of 360-830 nm
+/// as [`xyz`], normalised by the same rule's `∫ ȳ dλ` of `cmf` itself, so that `s = 1`
+/// has `Y = 1` for every `cmf`.
+pub fn xyz_with(cmf: impl Fn(f64) -> DVec3, s: impl Fn(f64) -> f64) -> DVec3 {
+    let (mut sum, mut y) = (DVec3::ZERO, 0.0);
+    for i in 0..CMF_ROWS - 1 {
+        let lo = LAMBDA_MIN + i as f64;
+        for (t, w) in GAUSS4 {
+            let c = cmf(lo + t);
+            sum += w * s(lo + t) * c;
+            y += w * c.y;
+        }
+    }
+    sum / y
+}
+
 /// The chromaticity `(x, y) = (X, Y) / (X + Y + Z)`, or `None` when `X + Y + Z` is not
 /// positive (black has no chromaticity).
 pub fn chromaticity(xyz: DVec3) -> Option<DVec2> {
@@ -153,11 +247,13 @@ pub fn linear_srgb_to_xyz(rgb: DVec3) -> DVec3 {
     srgb_matrices().0 * rgb
 }
 
+// ANCHOR: to_srgb
 /// XYZ to linear sRGB. Colours outside the sRGB gamut get negative components; they stay
 /// negative here and are only dealt with at display time (*From spectrum to display*).
 pub fn xyz_to_linear_srgb(xyz: DVec3) -> DVec3 {
     srgb_matrices().1 * xyz
 }
+// ANCHOR_END: to_srgb
 
 /// The XYZ → linear sRGB matrix itself (for figures and for comparison with IEC 61966-2-1).
 pub fn xyz_to_linear_srgb_matrix() -> DMat3 {

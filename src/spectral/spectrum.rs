@@ -77,7 +77,8 @@ impl Table {
         let hi = self.nm.partition_point(|&x| x <= nm).min(self.nm.len() - 1);
         let lo = hi - 1;
         let t = (nm - self.nm[lo]) / (self.nm[hi] - self.nm[lo]);
-        self.values[lo] + t * (self.values[hi] - self.values[lo])
+        // This form returns the knot values exactly at t = 0 and t = 1 (the last knot).
+        (1.0 - t) * self.values[lo] + t * self.values[hi]
     }
     // ANCHOR_END: table
 
@@ -113,7 +114,12 @@ impl Table {
 /// Planck's law: the spectral radiance of a blackbody at `kelvin`, at wavelength `nm`, in
 /// W sr⁻¹ m⁻² nm⁻¹. `exp_m1` keeps the denominator accurate far into the red, where
 /// `hc / (λ k T)` is small.
+/// A blackbody at `kelvin ≤ 0` emits nothing, and so does any wavelength `nm ≤ 0`; both
+/// (and NaN) give 0.
 pub fn planck(nm: f64, kelvin: f64) -> f64 {
+    if !(nm > 0.0 && kelvin > 0.0) {
+        return 0.0;
+    }
     let l = nm * 1e-9;
     let x = PLANCK_H * LIGHT_C / (l * BOLTZMANN_K * kelvin);
     2.0 * PLANCK_H * LIGHT_C * LIGHT_C / l.powi(5) / x.exp_m1() * 1e-9
@@ -121,8 +127,14 @@ pub fn planck(nm: f64, kelvin: f64) -> f64 {
 // ANCHOR_END: planck
 
 /// Planck's law divided by its own maximum (at Wien's `λ = b / T`), so that the peak is 1.
+/// Zero when there is no peak (`kelvin ≤ 0` or NaN).
 pub fn planck_normalised(nm: f64, kelvin: f64) -> f64 {
-    planck(nm, kelvin) / planck(WIEN_B / kelvin * 1e9, kelvin)
+    let peak = planck(WIEN_B / kelvin * 1e9, kelvin);
+    if peak > 0.0 {
+        planck(nm, kelvin) / peak
+    } else {
+        0.0
+    }
 }
 
 /// A spectrum of a scene.
@@ -164,10 +176,11 @@ pub const WAVELENGTH_COLUMN: &str = "wavelength_nm";
 ///
 /// # Errors
 /// With the line and reason: no header, a first column not called `wavelength_nm`, no
-/// value column, a repeated column name, a row with a missing or extra field, a field that
-/// is not a number, a NaN or infinite number, a negative value, wavelengths that do not
-/// strictly increase, fewer than two rows, or a range with no overlap with
-/// 360-830 nm (the colour-matching range).
+/// value column, a repeated column name, a row with a missing or extra field, an empty
+/// field, a field that is not a number, a NaN or infinite number, a negative value, a
+/// wavelength that is not positive, wavelengths that repeat or decrease, fewer than two
+/// rows, or a range with no overlap with 360-830 nm (the colour-matching range; the
+/// error points at the row nearest to it). Every case is a test in `tests/colour.rs`.
 pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataError> {
     let err = |line: usize, problem: String| DataError::new(file, line, problem);
     let mut rows = text
@@ -178,12 +191,19 @@ pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataErr
     let (header_line, header) = rows
         .next()
         .ok_or_else(|| err(0, "the file is empty: no header".into()))?;
+    // A byte-order mark (left by some spreadsheet exports) is not part of the first name.
+    let header = header.strip_prefix('\u{feff}').unwrap_or(header);
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
     if names[0] != WAVELENGTH_COLUMN {
+        let hint = if names[0].parse::<f64>().is_ok() {
+            " (the header line is missing)"
+        } else {
+            ""
+        };
         return Err(err(
             header_line,
             format!(
-                "the first column is {:?}; it must be {WAVELENGTH_COLUMN:?}",
+                "the first column is {:?}; it must be {WAVELENGTH_COLUMN:?}{hint}",
                 names[0]
             ),
         ));
@@ -205,15 +225,23 @@ pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataErr
     let columns = names.len() - 1;
     let mut nm: Vec<f64> = Vec::new();
     let mut values: Vec<Vec<f64>> = vec![Vec::new(); columns];
-    let mut last_line = header_line;
+    let (mut first_line, mut last_line) = (0, header_line);
     for (line, row) in rows {
+        if first_line == 0 {
+            first_line = line;
+        }
         last_line = line;
         let fields: Vec<&str> = row.split(',').map(str::trim).collect();
         if fields.len() != names.len() {
+            let what = if fields.len() < names.len() {
+                "missing field"
+            } else {
+                "extra field"
+            };
             return Err(err(
                 line,
                 format!(
-                    "{} fields; the header ({}) has {}",
+                    "{what}: {} fields; the header ({}) has {}",
                     fields.len(),
                     names.join(","),
                     names.len()
@@ -221,19 +249,34 @@ pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataErr
             ));
         }
         for (c, field) in fields.iter().enumerate() {
+            if field.is_empty() {
+                return Err(err(
+                    line,
+                    format!("{}: missing value (empty field)", names[c]),
+                ));
+            }
             let x: f64 = field
                 .parse()
                 .map_err(|_| err(line, format!("{}: {field:?} is not a number", names[c])))?;
-            if !x.is_finite() {
-                return Err(err(line, format!("{}: {x} is not finite", names[c])));
+            if x.is_nan() {
+                return Err(err(line, format!("{}: NaN is not a value", names[c])));
+            }
+            if x.is_infinite() {
+                return Err(err(line, format!("{}: {x} is infinite", names[c])));
             }
             if c == 0 {
+                if x <= 0.0 {
+                    return Err(err(line, format!("wavelength {x} nm is not positive")));
+                }
                 if let Some(&prev) = nm.last()
                     && x <= prev
                 {
+                    let how = if x == prev { "repeats" } else { "is below" };
                     return Err(err(
                         line,
-                        format!("wavelength {x} nm is not greater than the previous {prev} nm"),
+                        format!(
+                            "wavelength {x} nm {how} the previous {prev} nm; wavelengths must increase"
+                        ),
                     ));
                 }
                 nm.push(x);
@@ -253,8 +296,14 @@ pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataErr
     }
     let (lo, hi) = (nm[0], nm[nm.len() - 1]);
     if lo.max(super::LAMBDA_MIN) >= hi.min(super::LAMBDA_MAX) {
+        // Point at the row nearest to the colour-matching range.
+        let line = if hi <= super::LAMBDA_MIN {
+            last_line
+        } else {
+            first_line
+        };
         return Err(err(
-            0,
+            line,
             format!(
                 "the wavelengths {lo}-{hi} nm do not overlap {}-{} nm",
                 super::LAMBDA_MIN,
