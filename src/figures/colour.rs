@@ -258,24 +258,39 @@ fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                 .collect(),
         });
     }
-    plot::line_chart_png(
+    let worst = errors
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1.abs()))
+        .fold(0.0, f64::max);
+    let range = (LAMBDA_MIN, LAMBDA_MAX);
+    plot::ranged_chart_png(
         &[
-            Panel {
-                title: "CIE 1931 table and the Wyman-Sloan-Shirley fit".into(),
-                x_label: "wavelength (nm)".into(),
-                y_label: "value".into(),
-                x_scale: Scale::Linear,
-                y_scale: Scale::Linear,
-                series: curves,
-            },
-            Panel {
-                title: "fit − table".into(),
-                x_label: "wavelength (nm)".into(),
-                y_label: "difference".into(),
-                x_scale: Scale::Linear,
-                y_scale: Scale::Linear,
-                series: errors,
-            },
+            (
+                Panel {
+                    title: "CIE 1931 table and the Wyman-Sloan-Shirley fit".into(),
+                    x_label: "wavelength (nm)".into(),
+                    y_label: "value".into(),
+                    x_scale: Scale::Linear,
+                    y_scale: Scale::Linear,
+                    series: curves,
+                },
+                range,
+                (-0.05, 1.9),
+                plot::Legend::UpperRight,
+            ),
+            (
+                Panel {
+                    title: "fit − table".into(),
+                    x_label: "wavelength (nm)".into(),
+                    y_label: "difference".into(),
+                    x_scale: Scale::Linear,
+                    y_scale: Scale::Linear,
+                    series: errors,
+                },
+                range,
+                (-1.1 * worst, 1.1 * worst),
+                plot::Legend::UpperRight,
+            ),
         ],
         1300,
         520,
