@@ -78,11 +78,36 @@ fn mat(rows: [[f64; 3]; 3]) -> DMat3 {
     DMat3::from_cols_array_2d(&rows).transpose()
 }
 
+/// The largest of `|x|` over `xs`, and NaN if any `x` is NaN. `f64::max` and glam's
+/// `max_element` drop a NaN (all but glam's last component), so `max <= tol` would pass on
+/// a NaN; this one makes every `err <= tol` below fail on it.
+fn nan_max_abs(xs: impl IntoIterator<Item = f64>) -> f64 {
+    xs.into_iter().fold(0.0, |m: f64, x| {
+        if m.is_nan() || x.is_nan() {
+            f64::NAN
+        } else {
+            m.max(x.abs())
+        }
+    })
+}
+
+/// `nan_max_abs` of the components of a vector.
+trait MaxAbs {
+    fn max_abs(self) -> f64;
+}
+impl MaxAbs for DVec2 {
+    fn max_abs(self) -> f64 {
+        nan_max_abs(self.to_array())
+    }
+}
+impl MaxAbs for DVec3 {
+    fn max_abs(self) -> f64 {
+        nan_max_abs(self.to_array())
+    }
+}
+
 fn max_abs_diff(a: DMat3, b: DMat3) -> f64 {
-    (0..3)
-        .flat_map(|c| (0..3).map(move |r| (c, r)))
-        .map(|(c, r)| (a.col(c)[r] - b.col(c)[r]).abs())
-        .fold(0.0, f64::max)
+    nan_max_abs((a - b).to_cols_array())
 }
 
 fn xy(s: impl Fn(f64) -> f64) -> DVec2 {
@@ -96,7 +121,7 @@ fn xy(s: impl Fn(f64) -> f64) -> DVec2 {
 fn cmf_table_reproduces_the_published_spectral_locus() {
     for (nm, x, y) in LOCUS {
         let c = chromaticity(cmf(nm)).unwrap();
-        let err = (c - DVec2::new(x, y)).abs().max_element();
+        let err = (c - DVec2::new(x, y)).max_abs();
         // Four printed decimals: a half unit of the last place.
         assert!(err <= 5e-5, "{nm} nm: {c} vs published ({x}, {y})");
     }
@@ -114,7 +139,7 @@ fn spectral_locus_rejects_swapped_columns() {
     let (nm, x, y) = LOCUS[3];
     let c = cmf(nm);
     let swapped = chromaticity(DVec3::new(c.z, c.y, c.x)).unwrap();
-    let err = (swapped - DVec2::new(x, y)).abs().max_element();
+    let err = (swapped - DVec2::new(x, y)).max_abs();
     assert!(err > 0.1, "the swapped table went unnoticed: {swapped}");
 }
 
@@ -136,7 +161,7 @@ fn the_three_integrals_are_equal_and_y_matches_the_published_value() {
         "∫ȳ = {iy} vs {Y_INTEGRAL_PUBLISHED}"
     );
     // The CIE designed x̄, ȳ, z̄ with equal areas (the equal-energy spectrum E is
-    // white, x = y = 1/3); the published 1 nm table keeps that to 3e-4 (its 7-digit
+    // white, x = y = 1/3); the published 1 nm table keeps that to 3.3e-4 (its 7-digit
     // values were re-interpolated from the 1931 5 nm table).
     for (name, i) in [("x̄", ix), ("z̄", iz)] {
         assert!(
@@ -146,10 +171,7 @@ fn the_three_integrals_are_equal_and_y_matches_the_published_value() {
         );
     }
     let e = xy(|_| 1.0);
-    assert!(
-        (e - DVec2::splat(1.0 / 3.0)).abs().max_element() <= 1e-4,
-        "E at {e}"
-    );
+    assert!((e - DVec2::splat(1.0 / 3.0)).max_abs() <= 1e-4, "E at {e}");
 }
 
 #[test]
@@ -160,14 +182,21 @@ fn constant_one_has_luminance_one() {
     assert!((y - 1.0).abs() <= 1e-12, "Y(1) with the fit = {y}");
 }
 
-/// Planted bug: normalising by ∫x̄ instead of ∫ȳ. The areas differ by only 8e-5, so only
-/// a tight test sees it; `constant_one_has_luminance_one` asks for 1e-12.
+/// Planted bug: normalising by ∫x̄ instead of ∫ȳ. The areas differ by only 8e-5 (asserted
+/// here, from the table's rows), so only a tight test sees it;
+/// `constant_one_has_luminance_one` asks for 1e-12.
 #[test]
 fn luminance_rejects_the_x_normaliser() {
-    let mut ix = 0.0;
+    let (mut ix, mut iy) = (0.0, 0.0);
     for i in 0..CMF_ROWS - 1 {
         ix += 0.5 * (cmf_row(i).x + cmf_row(i + 1).x);
+        iy += 0.5 * (cmf_row(i).y + cmf_row(i + 1).y);
     }
+    let apart = ix / iy - 1.0;
+    assert!(
+        (apart - 8e-5).abs() <= 0.5e-5,
+        "∫x̄ / ∫ȳ − 1 = {apart:.2e}, not the chapter's 8 parts in 1e5"
+    );
     let wrong = xyz(|_| 1.0).y * y_integral() / ix;
     assert!(
         (wrong - 1.0).abs() > 1e-12,
@@ -197,7 +226,7 @@ fn illuminant_chromaticities_by_the_cie_rule_match_published_values() {
         // Half a unit of the last printed decimal, plus 2.5e-5 for the CIE computing A and
         // D65 from their 1 nm tables where `data/` has the 5 nm ones.
         let tol = 0.5 * 10f64.powi(-decimals) + 2.5e-5;
-        let err = (c - DVec2::new(x, y)).abs().max_element();
+        let err = (c - DVec2::new(x, y)).max_abs();
         assert!(
             err <= tol,
             "{name}: ({:.6}, {:.6}) vs published ({x}, {y}), error {err:.2e} > {tol:.1e}",
@@ -218,7 +247,7 @@ fn illuminant_chromaticities_by_quadrature_match_published_values() {
         let t = builtin(file);
         let c = xy(|nm| t.eval(nm));
         let tol = if decimals == 5 { 3e-5 } else { 3e-4 };
-        let err = (c - DVec2::new(x, y)).abs().max_element();
+        let err = (c - DVec2::new(x, y)).max_abs();
         assert!(
             err <= tol,
             "{name}: ({:.6}, {:.6}) vs published ({x}, {y}), error {err:.2e} > {tol:.0e}",
@@ -241,10 +270,10 @@ fn d65_maps_to_equal_linear_srgb() {
         for dy in [-5e-5, 5e-5] {
             let p = SRGB_WHITE + DVec2::new(dx, dy);
             let moved = xyz_to_linear_srgb(DVec3::new(p.x / p.y, 1.0, (1.0 - p.x - p.y) / p.y));
-            tol = tol.max((moved - DVec3::ONE).abs().max_element());
+            tol = nan_max_abs([tol, (moved - DVec3::ONE).max_abs()]);
         }
     }
-    let err = (rgb - DVec3::ONE).abs().max_element();
+    let err = (rgb - DVec3::ONE).max_abs();
     assert!(err <= tol, "D65 -> {rgb}, error {err:.2e} > {tol:.2e}");
     assert!(tol < 1e-3, "the tolerance itself is small: {tol}");
 }
@@ -257,7 +286,7 @@ fn srgb_rejects_the_transposed_matrix() {
     let w = xyz(|nm| t.eval(nm));
     let rgb = xyz_to_linear_srgb_matrix().transpose() * (w / w.y);
     assert!(
-        (rgb - DVec3::ONE).abs().max_element() > 0.01,
+        (rgb - DVec3::ONE).max_abs() > 0.01,
         "transposed matrix still maps D65 to white: {rgb}"
     );
     let err = max_abs_diff(xyz_to_linear_srgb_matrix().transpose(), mat(IEC_XYZ_TO_RGB));
@@ -282,6 +311,18 @@ fn srgb_matrix_derived_from_primaries_matches_iec_61966_2_1() {
             assert!(d <= tol, "XYZ->RGB [{r}][{c}]: {d:.2e} > {tol:.2e}");
         }
     }
+    // The exact derivation's corner is 3.24097, not the printed 3.2406: computed independently
+    // of the crate (Cramer's rule on the primaries and the white, in double precision, outside
+    // the crate): 3.2409699419045226.
+    let corner = inv.col(0)[0];
+    assert!(
+        (corner - 3.240_969_941_904_522_6).abs() <= 1e-12,
+        "XYZ->RGB [0][0] = {corner}"
+    );
+    assert!(
+        (corner - 3.2406).abs() > 3e-4,
+        "the corner is the printed one"
+    );
     // And the inverse really inverts.
     let id = max_abs_diff(inv * forward, DMat3::IDENTITY);
     assert!(id <= 1e-14, "M⁻¹ M differs from I by {id:.1e}");
@@ -325,7 +366,7 @@ fn monochromatic_lines_land_on_the_spectral_locus_outside_the_gamut() {
             assert!(!in_srgb_triangle(p), "{what} at {l0} nm inside sRGB: {p}");
             assert!(rgb.min_element() < 0.0, "{what} at {l0} nm: {rgb}");
             let back = linear_srgb_to_xyz(rgb);
-            let err = ((back - c) / c.max_element()).abs().max_element();
+            let err = ((back - c) / c.max_element()).max_abs();
             assert!(
                 err <= 1e-13,
                 "{what} at {l0} nm: round trip error {err:.1e}"
@@ -346,7 +387,7 @@ fn out_of_gamut_rejects_clamping() {
     let c = cmf(520.0);
     let clamped = xyz_to_linear_srgb(c).max(DVec3::ZERO);
     let back = linear_srgb_to_xyz(clamped);
-    let err = ((back - c) / c.max_element()).abs().max_element();
+    let err = ((back - c) / c.max_element()).max_abs();
     assert!(err > 0.01, "clamping went unnoticed: {err:.1e}");
     let p = chromaticity(back).unwrap();
     assert!(in_srgb_triangle(p), "the clamped colour is in gamut: {p}");
@@ -443,7 +484,7 @@ fn planck_integrates_to_stefan_boltzmann() {
 /// CIE 015:2018 defines illuminant A by a formula with the old second radiation constant
 /// c₂ = 1.435e7 nm K and T = 2848 K: S_A(λ) = 100 (560/λ)⁵ (e^{c₂/(2848·560)} − 1) /
 /// (e^{c₂/(2848 λ)} − 1). With today's c₂ = hc/k the same curve is a Planckian at
-/// T = 2848 · (hc/k) / 1.435e7 = 2855.54 K: the "2856 K" of the standard.
+/// T = 2848 · (hc/k) / 1.435e7 = 2855.50 K: the "2856 K" of the standard.
 fn illuminant_a_formula(nm: f64) -> f64 {
     let c2: f64 = 1.435e7;
     100.0 * (560.0 / nm).powi(5) * (c2 / (2848.0 * 560.0)).exp_m1() / (c2 / (2848.0 * nm)).exp_m1()
@@ -468,8 +509,16 @@ fn illuminant_a_is_a_2856_k_planckian() {
     }
     // The Planckian's chromaticity is A's published one.
     let p = xy(|nm| planck(nm, 2856.0));
-    let err = (p - DVec2::new(0.44758, 0.40745)).abs().max_element();
+    let err = (p - DVec2::new(0.44758, 0.40745)).max_abs();
     assert!(err <= 1e-4, "2856 K at {p}");
+    // Planted bug: the λ⁴ Planck is not A's shape (the ratio to the formula drifts with λ)
+    // and misses A's published chromaticity.
+    let wrong_scale = illuminant_a_formula(560.0) / planck_without_lambda5(560.0, t_a);
+    let r = planck_without_lambda5(400.0, t_a) * wrong_scale / illuminant_a_formula(400.0);
+    assert!((r - 1.0).abs() > 0.1, "the λ⁴ Planck has A's shape: {r}");
+    let wrong = xy(|nm| planck_without_lambda5(nm, 2856.0));
+    let err = (wrong - DVec2::new(0.44758, 0.40745)).max_abs();
+    assert!(err > 4e-3, "the λ⁴ Planck lands on A: {wrong}");
 }
 
 /// M. Krystek, *An algorithm to calculate correlated colour temperature*, Color Research
@@ -491,11 +540,11 @@ fn planckian_locus_matches_krystek() {
     // the exact locus is below 4e-4 in xy over this range (`figures/colour_planck.md`).
     for t in [2000.0, 2856.0, 4000.0, 5000.0, 6504.0, 8000.0, 10000.0] {
         let p = xy(|nm| planck(nm, t));
-        let err = (p - krystek(t)).abs().max_element();
+        let err = (p - krystek(t)).max_abs();
         assert!(err <= 4e-4, "{t} K: {p} vs Krystek {}", krystek(t));
         let wrong = xy(|nm| planck_without_lambda5(nm, t));
         assert!(
-            (wrong - krystek(t)).abs().max_element() > 4e-3,
+            (wrong - krystek(t)).max_abs() > 4e-3,
             "{t} K: the λ⁴ Planck lands on the locus"
         );
     }
@@ -589,12 +638,7 @@ fn cmf_edge_cases() {
     assert!(cmf(LAMBDA_MAX) == cmf_row(CMF_ROWS - 1));
     assert!(cmf(555.0) == cmf_row(195));
     let mid = cmf(555.5);
-    assert!(
-        (mid - 0.5 * (cmf_row(195) + cmf_row(196)))
-            .abs()
-            .max_element()
-            <= 1e-15
-    );
+    assert!((mid - 0.5 * (cmf_row(195) + cmf_row(196))).max_abs() <= 1e-15);
     for nm in [
         f64::from_bits(LAMBDA_MIN.to_bits() - 1),
         f64::from_bits(LAMBDA_MAX.to_bits() + 1),
@@ -624,7 +668,7 @@ fn wyman_fit_is_close_to_the_table() {
     let mut worst: f64 = 0.0;
     for i in 0..=4700 {
         let nm = LAMBDA_MIN + 0.1 * f64::from(i);
-        worst = worst.max((cmf_fit(nm) - cmf(nm)).abs().max_element());
+        worst = nan_max_abs([worst, (cmf_fit(nm) - cmf(nm)).max_abs()]);
     }
     // z̄ peaks at 1.78: 0.03 is under 2 % of it.
     assert!(worst <= 0.03, "max |fit − table| = {worst}");
@@ -636,7 +680,7 @@ fn wyman_fit_is_close_to_the_table() {
     for (file, name, x, y, _) in PUBLISHED {
         let t = builtin(file);
         let c = chromaticity(xyz_with(cmf_fit, |nm| t.eval(nm))).unwrap();
-        let err = (c - DVec2::new(x, y)).abs().max_element();
+        let err = (c - DVec2::new(x, y)).max_abs();
         assert!(err <= 3e-3, "{name} by the fit: {c}, error {err:.1e}");
     }
 }
@@ -651,7 +695,7 @@ fn wyman_fit_rejects_swapped_widths() {
     for i in 0..=470 {
         let nm = LAMBDA_MIN + f64::from(i);
         let y = lobe.eval(nm) + cie::FIT_Y[1].eval(nm);
-        worst = worst.max((y - cmf(nm).y).abs());
+        worst = nan_max_abs([worst, y - cmf(nm).y]);
     }
     assert!(worst > 0.03, "swapped widths went unnoticed: {worst}");
 }
