@@ -123,7 +123,7 @@ fn fluorescent_and_amber_fit_their_segments_chi2() {
 
 /// Planted bug: the table read as piecewise constant, knot `i`'s value held over
 /// `[λ_i, λ_{i+1})` (a drawing's columns read as bins). Every segment gets the wrong mass
-/// and shape; KS rejects it on the fluorescent lamp.
+/// and shape; KS and the per-segment chi-squared both reject it on the fluorescent lamp.
 #[test]
 fn planted_piecewise_constant_reading_is_rejected() {
     let t = lamp("fluorescent").spectrum;
@@ -135,6 +135,8 @@ fn planted_piecewise_constant_reading_is_rejected() {
         .collect();
     let p = ks_p(&t, &xs);
     assert!(p < test_alpha(), "not rejected: KS p = {p:.3e}");
+    let p = chi2_p(&t, &xs);
+    assert!(p < test_alpha(), "not rejected: chi-squared p = {p:.3e}");
 }
 
 /// Planted bug: the seed's 450-pixel-wide drawing, its columns (380..=829 nm) spread
@@ -189,7 +191,14 @@ fn every_sample_is_sound_with_a_constant_weight() {
 fn hard_u_values_give_sound_samples() {
     for l in lamps() {
         let s = sampler(&l.spectrum);
-        let mut us = vec![0.0, f64::MIN_POSITIVE, ONE_MINUS_EPSILON, 1.0];
+        // 0, the smallest positive (subnormal) and normal doubles, the largest below 1, 1.
+        let mut us = vec![
+            0.0,
+            f64::from_bits(1),
+            f64::MIN_POSITIVE,
+            ONE_MINUS_EPSILON,
+            1.0,
+        ];
         for &k in l.spectrum.wavelengths() {
             let c = s.cdf(k);
             us.extend([c, c.next_down().max(0.0), c.next_up().min(1.0)]);
@@ -340,12 +349,11 @@ fn y_estimates(seed: u64, n: usize, draw: impl Fn(f64) -> (f64, f64), t: &Table)
     }))
 }
 
-fn accepts(s: &Summary, mu: f64) -> (bool, String) {
+/// The t-test's p-value for `mean = mu`, and a message. Callers assert `p >= test_alpha()`
+/// to accept and `p < test_alpha()` to reject, so a NaN p-value fails either way.
+fn t_p(s: &Summary, mu: f64) -> (f64, String) {
     let p = ttest::one_sample(s, mu).unwrap().p_value;
-    (
-        p >= test_alpha(),
-        format!("mean {} vs {mu}, p = {p:.3e}", s.mean),
-    )
+    (p, format!("mean {} vs {mu}, p = {p:.3e}", s.mean))
 }
 
 #[test]
@@ -361,8 +369,8 @@ fn luminance_estimator_is_unbiased_for_every_lamp() {
             },
             &l.spectrum,
         );
-        let (ok, msg) = accepts(&est, y_of(&l.spectrum));
-        assert!(ok, "{}: {msg}", l.name);
+        let (p, msg) = t_p(&est, y_of(&l.spectrum));
+        assert!(p >= test_alpha(), "{}: {msg}", l.name);
     }
 }
 
@@ -374,14 +382,17 @@ fn planted_weights_are_rejected() {
     let s = sampler(&t);
     let y = y_of(&t);
     let unnormalised = y_estimates(160, N, |u| (s.sample(u).nm, t.eval(s.sample(u).nm)), &t);
-    let (ok, msg) = accepts(&unnormalised, y);
-    assert!(!ok, "unnormalised pdf not rejected: {msg}");
+    let (p, msg) = t_p(&unnormalised, y);
+    assert!(p < test_alpha(), "unnormalised pdf not rejected: {msg}");
     let twice = Summary::of(uniforms(161, N).into_iter().map(|u| {
         let w = s.sample(u);
         t.eval(w.nm) * xyz_estimate(&t, w.nm, w.pdf).y
     }));
-    let (ok, msg) = accepts(&twice, y);
-    assert!(!ok, "spectrum counted twice not rejected: {msg}");
+    let (p, msg) = t_p(&twice, y);
+    assert!(
+        p < test_alpha(),
+        "spectrum counted twice not rejected: {msg}"
+    );
 }
 
 /// Var of the one-sample estimator of each of X, Y, Z, by quadrature (0.01 nm midpoint
@@ -503,7 +514,10 @@ fn cct_duv(xyz: DVec3) -> (f64, f64) {
 /// The colour computation against published values (CIE 015:2018): illuminant A at
 /// x = 0.44758, y = 0.40745, CCT 2856 K; FL2 (cool white) at x = 0.3721, y = 0.3751,
 /// CCT 4230 K. Then the chapter's claim: the measured cool white fluorescent lamp is
-/// white, |Duv| < 0.006 (the ANSI C78.377 tolerance for white lamps), not green.
+/// white, |Duv| < 0.006 (the ANSI C78.377 tolerance for white lamps). Its Duv is positive,
+/// just above the Planckian locus (the green side), but well inside that tolerance.
+/// Planted twin: the same lamp with its green (500-570 nm) doubled, a lamp that *is*
+/// green, fails the check.
 #[test]
 fn lamp_colours_against_published_values() {
     let xy = |t: &Table| cie::chromaticity(cie::xyz(|nm| t.eval(nm))).unwrap();
@@ -524,6 +538,20 @@ fn lamp_colours_against_published_values() {
     let t = lamp("fluorescent").spectrum;
     let (k, duv) = cct_duv(cie::xyz(|nm| t.eval(nm)));
     assert!(duv.abs() < 0.006, "fluorescent: CCT {k}, Duv {duv}");
+    assert!(duv > 0.0, "fluorescent: Duv {duv} is on the magenta side");
+    let green = |nm: f64| {
+        t.eval(nm)
+            * if (500.0..=570.0).contains(&nm) {
+                2.0
+            } else {
+                1.0
+            }
+    };
+    let (k, duv) = cct_duv(cie::xyz(green));
+    assert!(
+        duv >= 0.006,
+        "a greened fluorescent passed as white: CCT {k}, Duv {duv}"
+    );
 }
 
 // ---------------------------------------------------------------------------------------

@@ -227,12 +227,11 @@ fn cct_duv(xy: glam::DVec2, locus: &[(f64, glam::DVec2)]) -> (f64, f64) {
         let q = a + s * (b - a);
         let d = (p - q).length();
         if d < best.0 {
-            let side = (b - a).perp_dot(p - a).signum();
+            // Above the locus is larger v (the locus is a graph over u here).
+            let side = (p.y - q.y).signum();
             best = (d, t0 + s * (t1 - t0), side);
         }
     }
-    // The locus runs from high to low temperature (u increasing); above it is the left
-    // of that direction.
     (best.1, best.2 * best.0)
 }
 
