@@ -378,15 +378,34 @@ fn hero_balance_is_unbiased() {
 /// Single wavelengths: uniform on D65 and visible on the blackbody (statistical tests 6, 7);
 /// hero lanes on the low-pressure sodium lamp, whose light is one line at 589 nm
 /// (statistical test 8: the hardest case, relative standard deviation ≈ 3 per path).
+/// Planted bugs, one per estimator, on the same samples: the uniform density of the seed's
+/// 380–780 nm (`1/400`) claimed for wavelengths uniform on 360–830 nm; the uniform weight
+/// `1/470` on a wavelength drawn from the visible pdf; and the same uniform weight on the
+/// hero lanes that meet the sodium line.
 #[test]
 fn single_wavelengths_and_a_line_spectrum_are_unbiased() {
     let d = d65();
     let exact = sum(cie::xyz(|l| d.eval(l)));
     let single = |s: Strategy| move |u| s.sample(u);
+    let reweighted = |s: fn(f64) -> Wavelengths, pdf: f64| {
+        move |u| {
+            let mut w = s(u);
+            for p in w.pdf.iter_mut().filter(|p| **p > 0.0) {
+                *p = pdf;
+            }
+            w
+        }
+    };
     let n = 100_000;
     assert_unbiased(
         "uniform single",
         &estimates(n, 4, single(Strategy::Uniform), |l| d.eval(l)),
+        exact,
+    );
+    let uniform = |u| Strategy::Uniform.sample(u);
+    assert_rejected(
+        "uniform single, density of 380-780 nm",
+        &estimates(n, 4, reweighted(uniform, 1.0 / 400.0), |l| d.eval(l)),
         exact,
     );
     let exact = sum(cie::xyz(blackbody));
@@ -395,10 +414,20 @@ fn single_wavelengths_and_a_line_spectrum_are_unbiased() {
         &estimates(n, 5, single(Strategy::Visible), blackbody),
         exact,
     );
+    let visible = |u| Strategy::Visible.sample(u);
+    assert_rejected(
+        "visible single, uniform weight",
+        &estimates(n, 5, reweighted(visible, 1.0 / RANGE), blackbody),
+        exact,
+    );
     let lps = builtin("lamp_low_pressure_sodium.csv");
     let exact = sum(cie::xyz(|l| lps.eval(l)));
     let s = estimates(400_000, 6, hero_visible, |l| lps.eval(l));
     assert_unbiased("hero visible, sodium line", &s, exact);
+    let s = estimates(400_000, 6, reweighted(hero_visible, 1.0 / RANGE), |l| {
+        lps.eval(l)
+    });
+    assert_rejected("hero visible on the sodium line, uniform weight", &s, exact);
 }
 
 // ---------------------------------------------------------------------------------------
