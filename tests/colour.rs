@@ -78,18 +78,8 @@ fn mat(rows: [[f64; 3]; 3]) -> DMat3 {
     DMat3::from_cols_array_2d(&rows).transpose()
 }
 
-/// The largest of `|x|` over `xs`, and NaN if any `x` is NaN. `f64::max` and glam's
-/// `max_element` drop a NaN (all but glam's last component), so `max <= tol` would pass on
-/// a NaN; this one makes every `err <= tol` below fail on it.
-fn nan_max_abs(xs: impl IntoIterator<Item = f64>) -> f64 {
-    xs.into_iter().fold(0.0, |m: f64, x| {
-        if m.is_nan() || x.is_nan() {
-            f64::NAN
-        } else {
-            m.max(x.abs())
-        }
-    })
-}
+/// The largest `|x|`, NaN if any `x` is NaN (see [`raylemma::check::max_abs`]).
+use raylemma::check::max_abs as nan_max_abs;
 
 /// `nan_max_abs` of the components of a vector.
 trait MaxAbs {

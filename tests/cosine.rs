@@ -1,6 +1,7 @@
 //! Tests of the chapter *Cosine-weighted hemisphere* (`src/sampling/cosine.rs`).
 //! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
 
+use raylemma::check::max_abs;
 use std::f64::consts::{FRAC_1_PI, TAU};
 
 use glam::{DVec2, DVec3};
@@ -37,9 +38,7 @@ fn seed_angles_and_cartesian_agree_pointwise() {
     let mut rng = raylemma::rng::seeded(3);
     for _ in 0..10_000 {
         let u = warp::square_point(&mut rng);
-        let d = (cosine_seed_angles(u) - cosine_seed_cartesian(u))
-            .abs()
-            .max_element();
+        let d = max_abs((cosine_seed_angles(u) - cosine_seed_cartesian(u)).to_array());
         assert!(d <= 1e-7, "u = {u:?}: differ by {d}");
     }
 }

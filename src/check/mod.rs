@@ -144,9 +144,38 @@ impl fmt::Display for Verdict {
     }
 }
 
+/// The largest `|x|` of `xs` (0 when there are none), or NaN if any `x` is NaN.
+///
+/// For error checks of the form `assert!(max_abs(errors) <= tol)`: `f64::max` and glam's
+/// `max_element` silently drop a NaN (glam's in all but the last component), so an error
+/// computed with them can pass on a NaN; this one makes the comparison fail.
+pub fn max_abs(xs: impl IntoIterator<Item = f64>) -> f64 {
+    xs.into_iter().fold(0.0, |m: f64, x| {
+        if m.is_nan() || x.is_nan() {
+            f64::NAN
+        } else {
+            m.max(x.abs())
+        }
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn max_abs_keeps_a_nan_wherever_it_is() {
+        assert_eq!(max_abs([]), 0.0);
+        assert_eq!(max_abs([1.0, -3.0, 2.0]), 3.0);
+        for i in 0..3 {
+            let mut xs = [1.0, 2.0, 3.0];
+            xs[i] = f64::NAN;
+            assert!(max_abs(xs).is_nan(), "NaN at {i} dropped");
+            // What it replaces: glam drops a NaN in all but the last component.
+            let dropped = glam::DVec3::from_array(xs).max_element();
+            assert_eq!(dropped.is_nan(), i == 2);
+        }
+    }
 
     #[test]
     fn nan_errors_fail_and_stay_visible() {
