@@ -6,23 +6,10 @@
 
 use glam::DVec3;
 use raylemma::rng;
-use raylemma::spectral::display::lab;
-use raylemma::spectral::spectrum::{self, Spectrum};
+use raylemma::spectral::display::delta_e;
+use raylemma::spectral::spectrum::Spectrum;
 use raylemma::spectral::upsample::*;
 use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
-
-/// Linear sRGB of the reflectance `r` under D65 by an independent route: XYZ of `r · D65` by
-/// `cie::xyz`, divided by the Y of D65 itself.
-fn srgb_under_d65(r: impl Fn(f64) -> f64) -> DVec3 {
-    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
-    let norm = cie::xyz(|nm| d65.eval(nm)).y;
-    cie::xyz_to_linear_srgb(cie::xyz(|nm| r(nm) * d65.eval(nm)) / norm)
-}
-
-fn delta_e(a: DVec3, b: DVec3) -> f64 {
-    let white = cie::linear_srgb_to_xyz(DVec3::ONE);
-    (lab(cie::linear_srgb_to_xyz(a), white) - lab(cie::linear_srgb_to_xyz(b), white)).length()
-}
 
 /// The 11³ = 1331 colours with components 0, 0.1, ..., 1.
 fn grid() -> Vec<DVec3> {

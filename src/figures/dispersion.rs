@@ -47,7 +47,7 @@ pub fn outputs() -> Vec<Output> {
 
 const MATERIALS: [&str; 3] = [N_BK7, FUSED_SILICA, WATER];
 
-pub(crate) use crate::plot::{Legend, ranged_chart_png};
+use crate::plot::{Legend, ranged_chart_png};
 
 /// The range of the points of `series`, padded by 5 % each side.
 fn y_range(series: &[Series]) -> (f64, f64) {

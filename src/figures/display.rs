@@ -5,9 +5,9 @@ use std::fmt::Write as _;
 use glam::DVec3;
 use plotters::prelude::*;
 
-use super::dispersion::{Legend, ranged_chart_png};
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{Legend, ranged_chart_png};
 use crate::spectral::display::*;
 
 /// The outputs of this chapter.

@@ -5,12 +5,12 @@ use std::fmt::Write as _;
 use num_complex::Complex64;
 use plotters::prelude::*;
 
-use super::dispersion::{Legend, ranged_chart_png};
 use super::{Output, Settings};
 use crate::optics::thinfilm::{
     Film, airy_r, cos_theta, interface, phase, quarter_wave_reflectance, seed_reflectance,
 };
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{Legend, ranged_chart_png};
 use crate::spectral::{cie, display, spectrum};
 
 /// The outputs of this chapter.

@@ -4,12 +4,11 @@ use std::fmt::Write as _;
 
 use glam::DVec3;
 
-use super::dispersion::{Legend, ranged_chart_png};
 use super::{Output, Settings, timing};
 use crate::plot::{BoxError, Panel, Scale, Series};
+use crate::plot::{Legend, ranged_chart_png};
 use crate::rng;
-use crate::spectral::display::lab;
-use crate::spectral::spectrum;
+use crate::spectral::display::delta_e;
 use crate::spectral::upsample::*;
 use crate::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
@@ -112,18 +111,6 @@ fn random(n: usize) -> Vec<DVec3> {
             )
         })
         .collect()
-}
-
-/// sRGB of `r` under D65 by the independent quadrature `cie::xyz` on the D65 table.
-fn srgb_under_d65(r: impl Fn(f64) -> f64) -> DVec3 {
-    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
-    let norm = cie::xyz(|nm| d65.eval(nm)).y;
-    cie::xyz_to_linear_srgb(cie::xyz(|nm| r(nm) * d65.eval(nm)) / norm)
-}
-
-fn delta_e(a: DVec3, b: DVec3) -> f64 {
-    let white = cie::linear_srgb_to_xyz(DVec3::ONE);
-    (lab(cie::linear_srgb_to_xyz(a), white) - lab(cie::linear_srgb_to_xyz(b), white)).length()
 }
 
 fn logistic(r: &Reflectance, nm: f64) -> f64 {

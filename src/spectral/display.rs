@@ -133,6 +133,13 @@ pub fn lab(xyz: DVec3, white: DVec3) -> DVec3 {
     DVec3::new(116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz))
 }
 
+/// The CIE 1976 colour difference ΔE*ab between two linear sRGB colours: the distance of
+/// their CIELAB coordinates, white = sRGB (1, 1, 1).
+pub fn delta_e(a: DVec3, b: DVec3) -> f64 {
+    let white = cie::linear_srgb_to_xyz(DVec3::ONE);
+    (lab(cie::linear_srgb_to_xyz(a), white) - lab(cie::linear_srgb_to_xyz(b), white)).length()
+}
+
 /// The signed difference of two hue angles in degrees, in (−180, 180].
 pub fn hue_difference(a: f64, b: f64) -> f64 {
     let d = (a - b).rem_euclid(360.0);

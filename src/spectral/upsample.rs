@@ -301,6 +301,15 @@ pub fn upsample(rgb: DVec3) -> Result<Fit, UpsampleError> {
 
 /// The linear sRGB of the reflectance `r` lit by D65, as the renderer would see it: the XYZ
 /// of [`Fitter::d65`] through the sRGB matrix.
+/// Linear sRGB of the reflectance `r` under D65 by [`cie::xyz`]'s quadrature (4 Gauss
+/// points per nm): the XYZ of `r · D65` divided by the Y of D65. Independent of the
+/// fitter's own 1 nm trapezoid grid, so the round-trip tests and table use it as the check.
+pub fn srgb_under_d65(r: impl Fn(f64) -> f64) -> DVec3 {
+    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
+    let norm = super::cie::xyz(|nm| d65.eval(nm)).y;
+    super::cie::xyz_to_linear_srgb(super::cie::xyz(|nm| r(nm) * d65.eval(nm)) / norm)
+}
+
 pub fn reflectance_to_srgb(r: &Reflectance) -> DVec3 {
     cie::xyz_to_linear_srgb(Fitter::d65().xyz(r))
 }
