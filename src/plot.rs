@@ -100,20 +100,33 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
     }
 }
 
-/// Draws `panels` side by side into a `width x height` PNG and returns its bytes.
-pub fn line_chart_png(panels: &[Panel], width: u32, height: u32) -> Result<Vec<u8>, BoxError> {
+/// A white `width x height` bitmap, handed to `draw` and then encoded as a PNG: the frame
+/// of every figure (the embedded font is registered first).
+pub fn draw_png(
+    width: u32,
+    height: u32,
+    draw: impl FnOnce(&DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>) -> Result<(), BoxError>,
+) -> Result<Vec<u8>, BoxError> {
     register_embedded_font();
     let mut buffer = vec![255u8; (width * height * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
         root.fill(&WHITE)?;
+        draw(&root)?;
+        root.present()?;
+    }
+    encode_png(width, height, buffer)
+}
+
+/// Draws `panels` side by side into a `width x height` PNG and returns its bytes.
+pub fn line_chart_png(panels: &[Panel], width: u32, height: u32) -> Result<Vec<u8>, BoxError> {
+    draw_png(width, height, |root| {
         let areas = root.split_evenly((1, panels.len().max(1)));
         for (panel, area) in panels.iter().zip(areas.iter()) {
             draw_panel(panel, area, &Style::default())?;
         }
-        root.present()?;
-    }
-    encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 /// Where a panel's legend goes, when it is not left to [`line_chart_png`]'s choice of the
@@ -139,11 +152,7 @@ pub fn ranged_chart_png(
     width: u32,
     height: u32,
 ) -> Result<Vec<u8>, BoxError> {
-    register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    draw_png(width, height, |root| {
         let areas = root.split_evenly((1, panels.len().max(1)));
         for ((panel, xr, yr, legend), area) in panels.iter().zip(areas.iter()) {
             let linear = Panel {
@@ -162,9 +171,8 @@ pub fn ranged_chart_png(
             };
             draw_panel(&linear, area, &style)?;
         }
-        root.present()?;
-    }
-    encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 /// How a panel departs from the automatic layout.
@@ -353,11 +361,7 @@ pub fn scatter_png(
     width: u32,
     height: u32,
 ) -> Result<Vec<u8>, BoxError> {
-    register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    draw_png(width, height, |root| {
         let rows = panels.len().div_ceil(columns.max(1));
         let areas = root.split_evenly((rows, columns.max(1)));
         for (panel, area) in panels.iter().zip(areas.iter()) {
@@ -387,7 +391,6 @@ pub fn scatter_png(
                     .map(|&p| Circle::new(p, 1, PALETTE[0].filled())),
             )?;
         }
-        root.present()?;
-    }
-    encode_png(width, height, buffer)
+        Ok(())
+    })
 }

@@ -84,13 +84,9 @@ fn planck_xy(kelvin: f64) -> DVec2 {
 }
 
 fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    plot::register_embedded_font();
     let (width, height) = (820u32, 860u32);
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
+    plot::draw_png(width, height, |root| {
+        let mut chart = ChartBuilder::on(root)
             .caption(
                 "CIE 1931 chromaticity: spectral locus, sRGB, Planckian locus",
                 ("sans-serif", 18),
@@ -185,9 +181,8 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             .label_font(("sans-serif", 13))
             .position(SeriesLabelPosition::UpperRight)
             .draw()?;
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 fn illuminants_md(_: &Settings) -> Result<Vec<u8>, BoxError> {

@@ -58,11 +58,7 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
     let lamps = lamps();
     let (width, height) = (1500u32, 820u32);
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    plot::draw_png(width, height, |root| {
         let areas = root.split_evenly((2, 3));
         let (blue, orange) = (plot::PALETTE[0], plot::PALETTE[1]);
         for (k, (lamp, area)) in lamps.iter().zip(&areas).enumerate() {
@@ -117,9 +113,8 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             (20, 180),
             ("sans-serif", 18),
         ))?;
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 /// The XYZ of a lamp, normalised to `Y = 1`.
@@ -150,11 +145,7 @@ fn swatches_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let (side, gap, label) = (200i32, 24i32, 70i32);
     let width = (lamps.len() as i32 * (side + gap) + gap) as u32;
     let height = (side + 2 * gap + label) as u32;
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    plot::draw_png(width, height, |root| {
         for (k, lamp) in lamps.iter().enumerate() {
             let x0 = gap + k as i32 * (side + gap);
             let [r, g, b] = swatch_rgb8(&lamp.spectrum);
@@ -174,9 +165,8 @@ fn swatches_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                 ("sans-serif", 15),
             ))?;
         }
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 /// Variance of the one-sample X, Y, Z estimators with `n` samples drawn by `draw`.

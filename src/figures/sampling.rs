@@ -394,12 +394,8 @@ fn distortion_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
 
 fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
-    plot::register_embedded_font();
     let (w, h) = (900u32, 470u32);
-    let mut buffer = vec![255u8; (w * h * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
-        root.fill(&WHITE)?;
+    plot::draw_png(w, h, |root| {
         type Map = fn(DVec2) -> DVec3;
         let maps: [(&str, Map); 2] = [
             ("polar map", disc_polar),
@@ -425,9 +421,8 @@ fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                 chart.draw_series(LineSeries::new(u2, plot::PALETTE[1].stroke_width(1)))?;
             }
         }
-        root.present()?;
-    }
-    plot::encode_png(w, h, buffer)
+        Ok(())
+    })
 }
 
 /// Azimuth in `[0, 2 pi)` and `cos(theta)`: the sphere's equal-area coordinates, in which a

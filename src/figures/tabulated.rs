@@ -89,11 +89,7 @@ fn histogram_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             .collect()
     };
     let (width, height) = (1200u32, 480u32);
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    plot::draw_png(width, height, |root| {
         let areas = root.split_evenly((1, 2));
         let ymax = pdf.iter().copied().fold(0.0, f64::max) * 1.1;
         let (blue, orange) = (plot::PALETTE[0], plot::PALETTE[1]);
@@ -131,9 +127,8 @@ fn histogram_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             1e-5,
             "the same, logarithmic (zero bins at the floor)"
         );
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 /// KS and chi-squared (one cell per bin) of `xs` against `table`: the KS p-value, and

@@ -124,11 +124,7 @@ fn map_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     };
     let r_max = 0.08;
     let (width, height) = (1300u32, 520u32);
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    plot::draw_png(width, height, |root| {
         let (maps, bar) = root.split_horizontally(width - 130);
         let areas = maps.split_evenly((1, 2));
         for (area, (title, n)) in areas.iter().zip([
@@ -183,9 +179,8 @@ fn map_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             );
             Rectangle::new([(0.0, a), (1.0, b)], viridis(a / r_max).filled())
         }))?;
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+        Ok(())
+    })
 }
 
 fn angle_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
@@ -344,11 +339,7 @@ fn colours_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         ("oil (n = 1.5) on water, reflected daylight", OIL),
     ];
     let (width, height) = (1200u32, 360u32);
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
+    plot::draw_png(width, height, |root| {
         let areas = root.split_evenly((films.len(), 1));
         for ((title, n), area) in films.iter().zip(areas.iter()) {
             let columns: Vec<(f64, glam::DVec3)> = (0..)
@@ -390,7 +381,6 @@ fn colours_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
                 Rectangle::new([(*d, 0.0), (*d + step, 1.0)], colour.filled())
             }))?;
         }
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+        Ok(())
+    })
 }
