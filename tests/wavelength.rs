@@ -648,3 +648,27 @@ fn uniform_pdf_is_normalised_and_termination_is_reported() {
     assert!(w.is_terminated());
     assert!(Wavelengths::single(500.0, 1.0 / RANGE).is_terminated());
 }
+
+/// The seed band's weight has the shape its derivation gives: lane `j` covers
+/// `[lo + 5j, hi + 5j]`, so `w` steps up by `1/N` at 380, 385, 390, 395 nm, is 1 up to
+/// 780 nm, and steps down by `1/N` after 780, 785, 790, 795 nm (found by mutation
+/// testing: the bias t-test alone cannot tell lanes 5 nm apart from lanes 1 nm apart).
+#[test]
+fn seed_band_weight_ramps_by_quarters() {
+    let w = |nm: f64| seed_band_weight(nm, &SEED_BAND);
+    let expected = [
+        (379.5, 0.0),
+        (382.5, 0.25),
+        (387.5, 0.5),
+        (392.5, 0.75),
+        (397.5, 1.0),
+        (600.0, 1.0),
+        (782.5, 0.75),
+        (787.5, 0.5),
+        (792.5, 0.25),
+        (795.5, 0.0),
+    ];
+    for (nm, want) in expected {
+        assert_eq!(w(nm), want, "w({nm})");
+    }
+}
