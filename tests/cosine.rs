@@ -119,3 +119,48 @@ fn naive_malley_loses_the_rim() {
     assert!(bad > 0, "the naive lift never failed");
     assert!((1..1000).all(|k| cosine_malley(DVec2::new(1e-17, k as f64 / 1000.0)).z > 0.0));
 }
+
+// ---------------------------------------------------------------------------------------
+// Single precision.
+
+/// In f32 every construction gives unit vectors to within an ε. The seed's Cartesian form
+/// and Malley's method also keep `cos θ` (hence the pdf) accurate to an ε, up to u → 1
+/// at the horizon; the seed's angle form does not: `θ = acos(1 − 2u₁)/2` near π/2 leaves
+/// `cos θ` with an absolute error of about ε, hundreds of ε relative to a small `cos θ`.
+/// The planted twin, Malley's lift written `z = sqrt(1 − x² − y²)`, cancels at the rim.
+#[test]
+fn single_precision_directions_are_unit_and_keep_cos_theta() {
+    use raylemma::check::single::{norm_error, square_points, z_error};
+    use raylemma::sampling::cosine::single;
+    type F32 = fn(glam::Vec2) -> glam::Vec3;
+    type F64 = fn(glam::DVec2) -> DVec3;
+    let points = square_points(200_000, 0xF32);
+    let forms = [
+        (
+            "seed angles",
+            single::cosine_seed_angles as F32,
+            cosine_seed_angles as F64,
+        ),
+        (
+            "seed Cartesian",
+            single::cosine_seed_cartesian,
+            cosine_seed_cartesian,
+        ),
+        ("Malley", single::cosine_malley, cosine_malley),
+    ];
+    for (name, f, exact) in forms {
+        let (n, z) = (norm_error(f, &points), z_error(f, exact, &points));
+        assert!(n <= 2.0, "{name}: worst norm error {n} ε");
+        if name == "seed angles" {
+            assert!(z >= 100.0, "{name}: cos θ error only {z} ε");
+        } else {
+            assert!(z <= 2.0, "{name}: worst cos θ error {z} ε");
+        }
+    }
+    let naive = |u: glam::Vec2| {
+        let p = raylemma::sampling::disc::single::disc_concentric(u);
+        glam::Vec3::new(p.x, p.y, (1.0 - p.x * p.x - p.y * p.y).max(0.0).sqrt())
+    };
+    let z = z_error(naive, cosine_malley, &points);
+    assert!(z.is_nan() || z >= 1000.0, "the naive lift passed: {z} ε");
+}

@@ -176,3 +176,26 @@ fn inverse_at_the_azimuth_seam() {
     let back = sphere_inverse_cdf_invert(sphere_inverse_cdf(u));
     assert!(max_abs((back - u).to_array()) <= 1e-15, "{back:?}");
 }
+
+/// In f32 the inverse CDF gives unit vectors to within an ε and `z = 1 − 2u₁` exactly
+/// rounded, up to u → 1 (the hard cases of `check::single::square_points`); the robust
+/// normalisation of the Gaussian and rejection methods leaves at most an ε too.
+#[test]
+fn single_precision_directions_are_unit() {
+    use raylemma::check::single::{norm_error, square_points, z_error};
+    use raylemma::sampling::sphere::single;
+    let points = square_points(200_000, 0x5F32);
+    let n = norm_error(single::sphere_inverse_cdf, &points);
+    assert!(n <= 2.0, "inverse CDF: worst norm error {n} ε");
+    let z = z_error(single::sphere_inverse_cdf, sphere_inverse_cdf, &points);
+    assert!(z <= 1.0, "inverse CDF: worst z error {z} ε");
+    // Normalising f32 vectors of every length from 1e-30 to 1e30.
+    let mut r = raylemma::rng::seeded(0x5F33);
+    let worst = max_abs((0..100_000).map(|_| {
+        let v = raylemma::rng::unit_vector(&mut r).as_vec3()
+            * 10f32.powf(raylemma::rng::uniform(&mut r, -30.0, 30.0) as f32);
+        let w = single::normalize_robust(v).expect("non-zero finite vector");
+        (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
+    }));
+    assert!(worst <= 2.0, "normalize_robust: worst norm error {worst} ε");
+}

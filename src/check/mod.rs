@@ -9,6 +9,7 @@
 //! and on planted bugs (which must fail), so a student's implementation is held to exactly
 //! the standard the book's code is.
 
+pub mod single;
 pub mod sphere;
 pub mod warp;
 

@@ -194,9 +194,9 @@ fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
-        "| sampler | ns per sample | chi-squared p ({samples} samples) | worst Jacobian error | worst \\| \\|w\\| − 1 \\| |"
+        "| sampler | ns per sample | chi-squared p ({samples} samples) | worst Jacobian error | worst \\| \\|w\\| − 1 \\| | f32: worst \\| \\|w\\| − 1 \\| (ε₃₂) | f32: worst relative error of z (ε₃₂) |"
     )?;
-    writeln!(md, "|---|---:|---:|---:|---:|")?;
+    writeln!(md, "|---|---:|---:|---:|---:|---:|---:|")?;
     for w in correct_samplers() {
         let mut rng = rng::seeded(9);
         let n = 4096;
@@ -234,14 +234,63 @@ fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         } else {
             "—".into()
         };
-        writeln!(md, "| {} | {ns:.1} | {p:.3} | {jac} | {norm} |", w.name())?;
+        let (norm32, z32) = single_precision(&w.name());
+        writeln!(
+            md,
+            "| {} | {ns:.1} | {p:.3} | {jac} | {norm} | {norm32} | {z32} |",
+            w.name()
+        )?;
     }
     writeln!(
         md,
-        "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples.*",
+        "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples. f32 columns: the same formulas in single precision (`single` modules) at 200 000 random f32 points of the square plus its corners and edges at 0, 1/2 and the largest f32 below 1; z is compared with the f64 formula at the same point (for the Gaussian and rejection methods, the f32 normalisation of 200 000 vectors of lengths 1e-30 to 1e30).*",
         timing::machine()
     )?;
     Ok(md.into_bytes())
+}
+
+/// The f32 columns of the methods table for the sampler called `name`: worst norm error
+/// and worst relative error of `z`, in units of `f32::EPSILON` ("—" where not defined).
+fn single_precision(name: &str) -> (String, String) {
+    use crate::check::single::{norm_error, square_points, z_error};
+    use crate::sampling::{cosine, sphere};
+    use glam::{DVec2, Vec2, Vec3};
+    type F32 = fn(Vec2) -> Vec3;
+    type F64 = fn(DVec2) -> DVec3;
+    let points = square_points(200_000, 0xF32);
+    let both = |f: F32, exact: F64| {
+        (
+            format!("{:.2}", norm_error(f, &points)),
+            format!("{:.2}", z_error(f, exact, &points)),
+        )
+    };
+    match name {
+        "sphere, inverse CDF" | "hemisphere, flipped inverse CDF" => both(
+            sphere::single::sphere_inverse_cdf,
+            sphere::sphere_inverse_cdf,
+        ),
+        "sphere, Gaussian" | "sphere, rejection" => {
+            let mut r = rng::seeded(0x5F33);
+            let worst = crate::check::max_abs((0..200_000).map(|_| {
+                let v = rng::unit_vector(&mut r).as_vec3()
+                    * 10f32.powf(rng::uniform(&mut r, -30.0, 30.0) as f32);
+                sphere::single::normalize_robust(v).map_or(f64::NAN, |w| {
+                    (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
+                })
+            }));
+            (format!("{worst:.2}"), "—".into())
+        }
+        "cosine, seed angles" => both(
+            cosine::single::cosine_seed_angles,
+            cosine::cosine_seed_angles,
+        ),
+        "cosine, seed Cartesian" => both(
+            cosine::single::cosine_seed_cartesian,
+            cosine::cosine_seed_cartesian,
+        ),
+        "cosine, Malley (concentric)" => both(cosine::single::cosine_malley, cosine::cosine_malley),
+        _ => ("—".into(), "—".into()),
+    }
 }
 
 fn seeds(settings: &Settings) -> u64 {

@@ -6,49 +6,66 @@
 //! Malley's method (lift a uniform disc sample onto the hemisphere), here with the
 //! concentric disc map.
 
-use std::f64::consts::{FRAC_1_PI, TAU};
+use std::f64::consts::FRAC_1_PI;
 
 use glam::{DVec2, DVec3};
 
 use crate::sampling::disc::disc_concentric;
 
-// ANCHOR: seed_angles
-/// The seed's inverse CDF in angles: `F(theta) = (1 - cos 2 theta) / 2`, so
-/// `theta = acos(1 - 2 u1) / 2`, and `phi = 2 pi u2`.
-pub fn cosine_seed_angles(u: DVec2) -> DVec3 {
-    let theta = (1.0 - 2.0 * u.x).acos() / 2.0;
-    let phi = TAU * u.y;
-    DVec3::new(
-        theta.sin() * phi.cos(),
-        theta.sin() * phi.sin(),
-        theta.cos(),
-    )
-}
-// ANCHOR_END: seed_angles
+/// The constructions of this chapter, written once for both precisions: `$t` is `f64` or
+/// `f32` and `$V2`, `$V3` its glam vectors. Expanded here for `f64`, and in [`single`] for
+/// `f32`.
+macro_rules! precision {
+    ($t:ident, $V2:ident, $V3:ident) => {
+        // ANCHOR: seed_angles
+        /// The seed's inverse CDF in angles: `F(theta) = (1 - cos 2 theta) / 2`, so
+        /// `theta = acos(1 - 2 u1) / 2`, and `phi = 2 pi u2`.
+        pub fn cosine_seed_angles(u: $V2) -> $V3 {
+            let theta = (1.0 - 2.0 * u.x).acos() / 2.0;
+            let phi = std::$t::consts::TAU * u.y;
+            $V3::new(
+                theta.sin() * phi.cos(),
+                theta.sin() * phi.sin(),
+                theta.cos(),
+            )
+        }
+        // ANCHOR_END: seed_angles
 
-// ANCHOR: seed_cartesian
-/// The seed's Cartesian form, from the half-angle identities: `sin theta = sqrt(u1)`,
-/// `cos theta = sqrt(1 - u1)`. For `u1 < 1`, `z > 0`.
-pub fn cosine_seed_cartesian(u: DVec2) -> DVec3 {
-    let (s, phi) = (u.x.sqrt(), TAU * u.y);
-    DVec3::new(s * phi.cos(), s * phi.sin(), (1.0 - u.x).sqrt())
-}
-// ANCHOR_END: seed_cartesian
+        // ANCHOR: seed_cartesian
+        /// The seed's Cartesian form, from the half-angle identities: `sin theta = sqrt(u1)`,
+        /// `cos theta = sqrt(1 - u1)`. For `u1 < 1`, `z > 0`.
+        pub fn cosine_seed_cartesian(u: $V2) -> $V3 {
+            let (s, phi) = (u.x.sqrt(), std::$t::consts::TAU * u.y);
+            $V3::new(s * phi.cos(), s * phi.sin(), (1.0 - u.x).sqrt())
+        }
+        // ANCHOR_END: seed_cartesian
 
-// ANCHOR: malley
-/// Malley's method: a uniform point `(x, y)` of the disc lifted to `z = sqrt(1 - r^2)`.
-///
-/// Near the rim, `1 - x^2 - y^2` loses every digit (and can round below zero: NaN). The
-/// concentric map's radius is `r = max(|2u1 - 1|, |2u2 - 1|)`, so the distance to the rim
-/// is known exactly from `u`: `1 - r = 2 min(u1, 1 - u1, u2, 1 - u2)`, and
-/// `z = sqrt((1 - r)(1 + r))` stays positive for every `u` inside the square.
-pub fn cosine_malley(u: DVec2) -> DVec3 {
-    let p = disc_concentric(u);
-    let to_rim = 2.0 * u.x.min(1.0 - u.x).min(u.y).min(1.0 - u.y);
-    let z = (to_rim * (2.0 - to_rim)).max(0.0).sqrt();
-    DVec3::new(p.x, p.y, z)
+        // ANCHOR: malley
+        /// Malley's method: a uniform point `(x, y)` of the disc lifted to `z = sqrt(1 - r^2)`.
+        ///
+        /// Near the rim, `1 - x^2 - y^2` loses every digit (and can round below zero: NaN). The
+        /// concentric map's radius is `r = max(|2u1 - 1|, |2u2 - 1|)`, so the distance to the rim
+        /// is known exactly from `u`: `1 - r = 2 min(u1, 1 - u1, u2, 1 - u2)`, and
+        /// `z = sqrt((1 - r)(1 + r))` stays positive for every `u` inside the square.
+        pub fn cosine_malley(u: $V2) -> $V3 {
+            let p = disc_concentric(u);
+            let to_rim = 2.0 * u.x.min(1.0 - u.x).min(u.y).min(1.0 - u.y);
+            let z = (to_rim * (2.0 - to_rim)).max(0.0).sqrt();
+            $V3::new(p.x, p.y, z)
+        }
+        // ANCHOR_END: malley
+    };
 }
-// ANCHOR_END: malley
+
+precision!(f64, DVec2, DVec3);
+
+/// The same functions in single precision (`f32`, `Vec2`, `Vec3`): the book measures
+/// the same formulas in both precisions, and a renderer written in `f32` can use them.
+pub mod single {
+    use crate::sampling::disc::single::disc_concentric;
+    use glam::{Vec2, Vec3};
+    precision!(f32, Vec2, Vec3);
+}
 
 /// The cosine-weighted density `max(z, 0) / pi`, per steradian.
 pub fn cosine_pdf(w: DVec3) -> f64 {

@@ -3,21 +3,58 @@
 //! Both maps are area-preserving warps from the unit square with pdf `1 / pi`; they differ
 //! in how much they stretch the square's cells, which matters for stratified samples.
 
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
+use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
 use glam::{DVec2, DVec3};
 
 /// Density of a uniform point on the unit disc, per unit area.
 pub const DISC_PDF: f64 = 1.0 / PI;
 
-// ANCHOR: polar
-/// The polar map: `r = sqrt(u1)` (the inverse of the radial CDF `r^2`), `phi = 2 pi u2`.
-pub fn disc_polar(u: DVec2) -> DVec3 {
-    let r = u.x.sqrt();
-    let phi = TAU * u.y;
-    DVec3::new(r * phi.cos(), r * phi.sin(), 0.0)
+/// The maps of this chapter, written once for both precisions: `$t` is `f64` or `f32` and
+/// `$V2`, `$V3` its glam vectors. Expanded here for `f64`, and in [`single`] for `f32`.
+macro_rules! precision {
+    ($t:ident, $V2:ident, $V3:ident) => {
+        // ANCHOR: polar
+        /// The polar map: `r = sqrt(u1)` (the inverse of the radial CDF `r^2`), `phi = 2 pi u2`.
+        pub fn disc_polar(u: $V2) -> $V3 {
+            let r = u.x.sqrt();
+            let phi = std::$t::consts::TAU * u.y;
+            $V3::new(r * phi.cos(), r * phi.sin(), 0.0)
+        }
+        // ANCHOR_END: polar
+
+        // ANCHOR: concentric
+        /// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
+        /// concentric circles, each square's wedge to a sector of equal angle.
+        /// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
+        /// `r = a.y` and `phi = pi/2 - (pi/4) a.x / a.y`.
+        pub fn disc_concentric(u: $V2) -> $V3 {
+            let a = 2.0 * u - $V2::ONE;
+            if a == $V2::ZERO {
+                return $V3::ZERO;
+            }
+            let (r, phi) = if a.x.abs() > a.y.abs() {
+                (a.x, std::$t::consts::FRAC_PI_4 * (a.y / a.x))
+            } else {
+                (
+                    a.y,
+                    std::$t::consts::FRAC_PI_2 - std::$t::consts::FRAC_PI_4 * (a.x / a.y),
+                )
+            };
+            $V3::new(r * phi.cos(), r * phi.sin(), 0.0)
+        }
+        // ANCHOR_END: concentric
+    };
 }
-// ANCHOR_END: polar
+
+precision!(f64, DVec2, DVec3);
+
+/// The same functions in single precision (`f32`, `Vec2`, `Vec3`): the book measures
+/// the same formulas in both precisions, and a renderer written in `f32` can use them.
+pub mod single {
+    use glam::{Vec2, Vec3};
+    precision!(f32, Vec2, Vec3);
+}
 
 /// The inverse of [`disc_polar`].
 pub fn disc_polar_invert(p: DVec3) -> DVec2 {
@@ -25,25 +62,6 @@ pub fn disc_polar_invert(p: DVec3) -> DVec2 {
     let phi = if phi < 0.0 { phi + TAU } else { phi };
     DVec2::new(p.x * p.x + p.y * p.y, phi / TAU)
 }
-
-// ANCHOR: concentric
-/// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
-/// concentric circles, each square's wedge to a sector of equal angle.
-/// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
-/// `r = a.y` and `phi = pi/2 - (pi/4) a.x / a.y`.
-pub fn disc_concentric(u: DVec2) -> DVec3 {
-    let a = 2.0 * u - DVec2::ONE;
-    if a == DVec2::ZERO {
-        return DVec3::ZERO;
-    }
-    let (r, phi) = if a.x.abs() > a.y.abs() {
-        (a.x, FRAC_PI_4 * (a.y / a.x))
-    } else {
-        (a.y, FRAC_PI_2 - FRAC_PI_4 * (a.x / a.y))
-    };
-    DVec3::new(r * phi.cos(), r * phi.sin(), 0.0)
-}
-// ANCHOR_END: concentric
 
 /// The inverse of [`disc_concentric`], wedge by wedge.
 pub fn disc_concentric_invert(p: DVec3) -> DVec2 {

@@ -17,19 +17,49 @@ pub const SPHERE_PDF: f64 = 1.0 / (4.0 * PI);
 /// Density of a uniform direction on a hemisphere, per steradian.
 pub const HEMISPHERE_PDF: f64 = 1.0 / (2.0 * PI);
 
-// ANCHOR: inverse_cdf
-/// Inverse-CDF sampling: `z = cos(theta) = 1 - 2 u1`, `phi = 2 pi u2`.
-///
-/// The seed writes `sqrt(1 - z^2)` for the radius of the circle at height `z`; near the
-/// poles that subtracts two nearly equal numbers. Since `1 - (1 - 2u)^2 = 4 u (1 - u)`,
-/// the radius is computed as `2 sqrt(u (1 - u))`, accurate everywhere.
-pub fn sphere_inverse_cdf(u: DVec2) -> DVec3 {
-    let z = 1.0 - 2.0 * u.x;
-    let r = 2.0 * (u.x * (1.0 - u.x)).max(0.0).sqrt();
-    let phi = TAU * u.y;
-    DVec3::new(r * phi.cos(), r * phi.sin(), z)
+/// The sampling and normalisation of this chapter, written once for both precisions: `$t`
+/// is `f64` or `f32` and `$V2`, `$V3` its glam vectors. Expanded here for `f64`, and in
+/// [`single`] for `f32`.
+macro_rules! precision {
+    ($t:ident, $V2:ident, $V3:ident) => {
+        // ANCHOR: inverse_cdf
+        /// Inverse-CDF sampling: `z = cos(theta) = 1 - 2 u1`, `phi = 2 pi u2`.
+        ///
+        /// The seed writes `sqrt(1 - z^2)` for the radius of the circle at height `z`; near the
+        /// poles that subtracts two nearly equal numbers. Since `1 - (1 - 2u)^2 = 4 u (1 - u)`,
+        /// the radius is computed as `2 sqrt(u (1 - u))`, accurate everywhere.
+        pub fn sphere_inverse_cdf(u: $V2) -> $V3 {
+            let z = 1.0 - 2.0 * u.x;
+            let r = 2.0 * (u.x * (1.0 - u.x)).max(0.0).sqrt();
+            let phi = std::$t::consts::TAU * u.y;
+            $V3::new(r * phi.cos(), r * phi.sin(), z)
+        }
+        // ANCHOR_END: inverse_cdf
+
+        // ANCHOR: normalize
+        /// `v / |v|`, robust for tiny vectors: `v` is first scaled by its largest component
+        /// (exact for powers of two, and never underflowing), so a vector as short as `1e-300`
+        /// still normalises correctly. Returns `None` for a zero or non-finite vector.
+        pub fn normalize_robust(v: $V3) -> Option<$V3> {
+            let m = v.abs().max_element();
+            if !(m.is_finite() && m > 0.0) {
+                return None;
+            }
+            let s = v / m;
+            Some(s / s.length())
+        }
+        // ANCHOR_END: normalize
+    };
 }
-// ANCHOR_END: inverse_cdf
+
+precision!(f64, DVec2, DVec3);
+
+/// The same functions in single precision (`f32`, `Vec2`, `Vec3`): the book measures
+/// the same formulas in both precisions, and a renderer written in `f32` can use them.
+pub mod single {
+    use glam::{Vec2, Vec3};
+    precision!(f32, Vec2, Vec3);
+}
 
 /// The inverse of [`sphere_inverse_cdf`]: `u1 = (1 - z) / 2`, `u2 = phi / (2 pi)`.
 pub fn sphere_inverse_cdf_invert(w: DVec3) -> DVec2 {
@@ -37,20 +67,6 @@ pub fn sphere_inverse_cdf_invert(w: DVec3) -> DVec2 {
     let phi = if phi < 0.0 { phi + TAU } else { phi };
     DVec2::new((1.0 - w.z) / 2.0, phi / TAU)
 }
-
-// ANCHOR: normalize
-/// `v / |v|`, robust for tiny vectors: `v` is first scaled by its largest component
-/// (exact for powers of two, and never underflowing), so a vector as short as `1e-300`
-/// still normalises correctly. Returns `None` for a zero or non-finite vector.
-pub fn normalize_robust(v: DVec3) -> Option<DVec3> {
-    let m = v.abs().max_element();
-    if !(m.is_finite() && m > 0.0) {
-        return None;
-    }
-    let s = v / m;
-    Some(s / s.length())
-}
-// ANCHOR_END: normalize
 
 // ANCHOR: gaussian
 /// Two independent standard normal numbers from two uniforms (Box-Muller). `1 - u1` is

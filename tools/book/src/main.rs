@@ -6,6 +6,7 @@
 //! remote script or stylesheet, then swap the staging directory into place. On any failure the
 //! staging directory is removed and the previous output is left untouched.
 
+mod dedent;
 mod logging;
 mod math;
 mod preflight;
@@ -128,6 +129,7 @@ fn build(args: &Args) -> Result<PathBuf> {
     config.build.build_dir = staging.0.clone();
 
     let mut md = MDBook::load_with_config(&root, config).context("loading the book")?;
+    md.with_preprocessor(dedent::Dedent);
     md.with_preprocessor(math::KatexMathml);
     let chapters = md
         .iter()
