@@ -36,10 +36,11 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-const STRATEGIES: [(&str, Strategy); 3] = [
+const STRATEGIES: [(&str, Strategy); 4] = [
     ("light", Strategy::Light),
     ("BSDF (cosine)", Strategy::Bsdf),
     ("MIS (balance)", Strategy::Mis(Heuristic::Balance)),
+    ("MIS (power)", Strategy::Mis(Heuristic::Power)),
 ];
 
 /// A square light of side `side` at height 1 above the origin, facing down; the shading
