@@ -31,10 +31,24 @@ fn sidak_levels() {
     // One test: no correction.
     assert_rel(sidak(0.05, 1), 0.05, 1e-15);
     // 1 - 0.99^(1/100) = 1.004983e-4 (not the first-order -ln(0.99)/100 = 1.005034e-4).
-    assert_rel(sidak(0.01, 100), 1.004_983_08e-4, 1e-8);
+    // References: 1 - exp(ln(0.99) / m) in 50-digit decimal arithmetic.
+    assert_rel(sidak(0.01, 100), 1.004_983_082_416_679_0e-4, 1e-15);
     assert_rel(-(-0.01f64).ln_1p() / 100.0, 1.005_03e-4, 1e-5);
-    // The suite's budget of 200: 1 - 0.99^(1/200) = 5.025042e-5 (40-digit decimal arithmetic).
-    assert_rel(sidak(0.01, 200), 5.025_041_667e-5, 1e-8);
+    // The suite's budget of 200: 1 - 0.99^(1/200) = 5.025042e-5, first-order 5.025168e-5.
+    assert_rel(sidak(0.01, 200), 5.025_041_667_302_186e-5, 1e-15);
+    assert_rel(-(-0.01f64).ln_1p() / 200.0, 5.025_168e-5, 1e-6);
+    // The naive form 1 - (1 - alpha)^(1/m) subtracts from 1 a number within 1e-4 of it
+    // and loses three to four of its sixteen digits.
+    for (m, reference, lost) in [
+        (100.0, 1.004_983_082_416_679_0e-4, 3e-14),
+        (200.0, 5.025_041_667_302_186e-5, 3e-13),
+    ] {
+        let naive = 1.0 - 0.99f64.powf(1.0 / m);
+        assert!(
+            (naive / reference - 1.0).abs() > lost,
+            "m = {m}: naive {naive:e}"
+        );
+    }
     assert_eq!(test_alpha(), sidak(SUITE_ALPHA, SUITE_TESTS));
     // Šidák lies between Bonferroni's alpha/m and -ln(1 - alpha)/m, for every m.
     for m in [1, 2, 10, 100, 1000, 1_000_000] {
@@ -282,7 +296,7 @@ fn ks_p_value_is_a_tail_function() {
 fn ks_exact_and_asymptotic_meet_at_n_1000() {
     // At the switch from exact to asymptotic, the two agree to 5 % down to p = 1e-6.
     let n = ks::EXACT_MAX_N;
-    for s in [0.5f64, 1.0, 2.0, 3.0, 5.0, 6.5] {
+    for s in [0.5f64, 1.0, 2.0, 3.0, 5.0, 6.5, 7.0] {
         let d = (s / n as f64).sqrt();
         let exact = ks::p_value(n, d);
         let asymptotic = ks::p_value(n + 1, d);
