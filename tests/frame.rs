@@ -309,6 +309,28 @@ fn quickcheck_precisions_agree() {
     quickcheck(4).quickcheck(prop_precisions_agree as fn(f64, f64, f64) -> TestResult);
 }
 
+/// The error measure itself must not pass a broken frame: a NaN in any component, of any
+/// vector, makes the error NaN (it used to be dropped by `f64::max` and glam's
+/// `max_element`, scoring a NaN frame as perfect).
+#[test]
+fn orthonormality_error_keeps_a_nan() {
+    use raylemma::sampling::frame::orthonormality_error;
+    let (t, b, n) = (DVec3::X, DVec3::Y, DVec3::Z);
+    assert_eq!(orthonormality_error(t, b, n), 0.0);
+    for i in 0..3 {
+        let mut bad = [0.0; 3];
+        bad[i] = f64::NAN;
+        let nan = DVec3::from_array(bad);
+        for (tt, bb, nn) in [(t + nan, b, n), (t, b + nan, n), (t, b, n + nan)] {
+            let e = orthonormality_error(tt, bb, nn);
+            assert!(e.is_nan(), "NaN at {i} scored {e}");
+            assert!(!(e <= ORTHO_BOUND * f64::EPSILON));
+        }
+    }
+    // A frame whose only fault is the handedness, in its first component.
+    assert!(orthonormality_error(DVec3::Y, DVec3::X, DVec3::Z) >= 2.0);
+}
+
 #[test]
 fn vec3_and_dvec3_frames_are_the_same_type_of_thing() {
     let f: Frame<Vec3> = Frame::from_normal(Vec3::Z);

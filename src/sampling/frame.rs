@@ -144,17 +144,20 @@ fn dot<V: FrameVector>(a: V, b: V) -> V::S {
 /// (exactly widened) vectors: the largest of `||t| - 1|`, `||b| - 1|`, `|t·b|`, `|t·n|`,
 /// `|b·n|` and `|t × b - n|` (each component). For an `f32` frame the `f64` evaluation adds
 /// no error worth counting; for an `f64` frame it adds a few units of `f64::EPSILON`.
+/// NaN if any component is NaN, so that a broken frame can never pass a bound.
 pub fn orthonormality_error(t: DVec3, b: DVec3, n: DVec3) -> f64 {
-    [
-        (t.length() - 1.0).abs(),
-        (b.length() - 1.0).abs(),
-        t.dot(b).abs(),
-        t.dot(n).abs(),
-        b.dot(n).abs(),
-        (t.cross(b) - n).abs().max_element(),
-    ]
-    .into_iter()
-    .fold(0.0, f64::max)
+    let handedness = (t.cross(b) - n).to_array();
+    crate::check::max_abs(
+        [
+            t.length() - 1.0,
+            b.length() - 1.0,
+            t.dot(b),
+            t.dot(n),
+            b.dot(n),
+        ]
+        .into_iter()
+        .chain(handedness),
+    )
 }
 // ANCHOR_END: error
 
