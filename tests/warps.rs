@@ -7,7 +7,7 @@ use std::f64::consts::{FRAC_1_PI, PI, TAU};
 use glam::{DVec2, DVec3};
 use raylemma::check::Verdict;
 use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp};
-use raylemma::sampling::disc::{disc_pdf, disc_polar};
+use raylemma::sampling::disc::{disc_pdf, disc_polar, disc_polar_invert};
 use raylemma::sampling::sphere::sphere_pdf;
 
 fn opts() -> Options {
@@ -153,6 +153,26 @@ fn writes_images_on_failure() {
     for f in ["observed.png", "expected.png", "difference.png"] {
         assert!(dir.join(f).is_file(), "{f} missing");
     }
+}
+
+#[test]
+fn round_trip_rejects_an_inverse_returning_nan() {
+    // A correct inverse passes; one that loses the first coordinate to NaN must fail
+    // (glam's `max_element` would drop that NaN and pass it).
+    let check = |invert: fn(DVec3) -> DVec2| {
+        let w = SquareWarp {
+            name: "polar disc".into(),
+            domain: Domain::Disc,
+            sample: disc_polar,
+            pdf: disc_pdf,
+            invert: Some(invert),
+        };
+        warp::round_trip(&w, &opts()).expect("an invertible warp gets a round trip")
+    };
+    assert!(check(disc_polar_invert).passed());
+    let nan_first = check(|p| DVec2::new(f64::NAN, disc_polar_invert(p).y));
+    assert!(!nan_first.passed(), "{nan_first:?}");
+    assert!(nan_first.worst.is_some_and(|(w, _)| w.is_nan()));
 }
 
 #[test]
