@@ -131,9 +131,21 @@ fn hemisphere_claimed_at_the_sphere_density_is_rejected() {
 
 #[test]
 fn near_zero_vectors_normalise_or_are_refused() {
+    use raylemma::sampling::sphere::single;
     assert_eq!(normalize_robust(DVec3::ZERO), None);
     assert_eq!(normalize_robust(DVec3::new(f64::NAN, 0.0, 0.0)), None);
     assert_eq!(normalize_robust(DVec3::new(f64::INFINITY, 0.0, 0.0)), None);
+    // A NaN or infinity beside a finite component: glam's `max_element` drops a NaN in
+    // all but the last component, so the largest component alone would let these through.
+    for bad in [
+        DVec3::new(f64::NAN, 1.0, 0.0),
+        DVec3::new(1.0, f64::NAN, 0.0),
+        DVec3::new(0.0, 1.0, f64::NAN),
+        DVec3::new(f64::NEG_INFINITY, 1.0, 0.0),
+    ] {
+        assert_eq!(normalize_robust(bad), None, "{bad:?}");
+        assert_eq!(single::normalize_robust(bad.as_vec3()), None, "{bad:?}");
+    }
     for v in [
         DVec3::new(1e-300, -2e-300, 2e-300),
         DVec3::new(5e-324, 0.0, 0.0),

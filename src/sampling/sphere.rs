@@ -41,8 +41,10 @@ macro_rules! precision {
         /// (exact for powers of two, and never underflowing), so a vector as short as `1e-300`
         /// still normalises correctly. Returns `None` for a zero or non-finite vector.
         pub fn normalize_robust(v: $V3) -> Option<$V3> {
+            // `is_finite` first: glam's `max_element` drops a NaN in all but the last
+            // component, so `m` alone would let `(NaN, 1, 0)` through.
             let m = v.abs().max_element();
-            if !(m.is_finite() && m > 0.0) {
+            if !(v.is_finite() && m > 0.0) {
                 return None;
             }
             let s = v / m;
