@@ -127,6 +127,9 @@ fn hemisphere_claimed_at_the_sphere_density_is_rejected() {
     };
     let v = warp::check(&w, &opts());
     assert!(v.failed("chi_squared"), "{v}");
+    // Refused by name, as the chapter says: the pdf integrates to 1/2.
+    let message = v.finding("chi_squared").example.clone().unwrap_or_default();
+    assert!(message.contains("integrates to 0.500000"), "{message}");
 }
 
 #[test]
