@@ -68,7 +68,10 @@ fn a_cos_1_1_lobe_is_rejected() {
 #[test]
 fn the_pdf_without_1_over_pi_is_rejected() {
     let v = check("cosine, pdf cos", cosine_malley, |w| w.z.max(0.0));
-    assert!(!v.passed(), "{v}");
+    // Refused by name (the pdf integrates to pi), and the Jacobian check sees it too.
+    let message = v.finding("chi_squared").example.clone().unwrap_or_default();
+    assert!(message.contains("integrates to 3.14159"), "{v}");
+    assert!(v.failed("jacobian"), "{v}");
 }
 
 /// u -> 1 and the rim: directions stay unit length with z > 0 (pdf > 0), so an estimator

@@ -51,6 +51,14 @@ fn variances_match_the_formula() {
             q.name,
             terms.variance()
         );
+        // Planted twin: the formula without its - I^2 (int f^2/q alone) is rejected by the
+        // same band on the same terms.
+        let forgot = exact + I * I;
+        assert!(
+            (terms.variance() / forgot - 1.0).abs() > 0.02,
+            "{}: the band cannot tell {exact} from {forgot}",
+            q.name
+        );
     }
 }
 
