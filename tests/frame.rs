@@ -324,7 +324,6 @@ fn orthonormality_error_keeps_a_nan() {
         for (tt, bb, nn) in [(t + nan, b, n), (t, b + nan, n), (t, b, n + nan)] {
             let e = orthonormality_error(tt, bb, nn);
             assert!(e.is_nan(), "NaN at {i} scored {e}");
-            assert!(!(e <= ORTHO_BOUND * f64::EPSILON));
         }
     }
     // A frame whose only fault is the handedness, in its first component.

@@ -6,12 +6,12 @@
 //! stated in the book's table are pinned here to within 20 %.
 
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
+use raylemma::check::max_abs;
 use raylemma::optics::fresnel::{
     ErrorStats, FresnelFit, SWEEP_ANGLES, amplitudes, approximation_error, brewster_angle, check,
     cos_transmitted, fresnel_dielectric, fresnel_polarized, fresnel_transmittance, planted, r0,
     schlick, schlick_seed,
 };
-use raylemma::check::max_abs;
 use raylemma::optics::reflect::critical_angle;
 
 const EPS: f64 = f64::EPSILON;

@@ -32,7 +32,7 @@ fn sidak_levels() {
     assert_rel(sidak(0.05, 1), 0.05, 1e-15);
     // 1 - 0.99^(1/100) = 1.004983e-4 (not the first-order -ln(0.99)/100 = 1.005034e-4).
     // References: 1 - exp(ln(0.99) / m) in 50-digit decimal arithmetic.
-    assert_rel(sidak(0.01, 100), 1.004_983_082_416_679_0e-4, 1e-15);
+    assert_rel(sidak(0.01, 100), 1.004_983_082_416_679e-4, 1e-15);
     assert_rel(-(-0.01f64).ln_1p() / 100.0, 1.005_03e-4, 1e-5);
     // The suite's budget of 200: 1 - 0.99^(1/200) = 5.025042e-5, first-order 5.025168e-5.
     assert_rel(sidak(0.01, 200), 5.025_041_667_302_186e-5, 1e-15);
@@ -40,7 +40,7 @@ fn sidak_levels() {
     // The naive form 1 - (1 - alpha)^(1/m) subtracts from 1 a number within 1e-4 of it
     // and loses three to four of its sixteen digits.
     for (m, reference, lost) in [
-        (100.0, 1.004_983_082_416_679_0e-4, 3e-14),
+        (100.0, 1.004_983_082_416_679e-4, 3e-14),
         (200.0, 5.025_041_667_302_186e-5, 3e-13),
     ] {
         let naive = 1.0 - 0.99f64.powf(1.0 / m);
