@@ -495,4 +495,6 @@ fn rainbow_red_outside_violet_inside() {
     // The band from 400 to 700 nm is 1.87° wide: almost four solar diameters (0.53°).
     let width = bow(700.0) - bow(400.0);
     assert!((width - 1.87).abs() <= 0.01, "{width}");
+    // The round "42.3 degrees for red" of the textbooks is the bow at about 650 nm.
+    assert!((bow(650.0) - 42.3).abs() <= 0.05, "650 nm: {}", bow(650.0));
 }
