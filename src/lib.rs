@@ -15,6 +15,7 @@
 //! * [`spectral`]: spectra, CIE colour, wavelength sampling, emission spectra, display,
 //!   RGB-to-spectrum upsampling.
 //! * [`transport`]: Lambertian reflectance, Russian roulette, shadow-ray pdfs.
+//! * [`render`]: the reference renderer: scenes, the spectral path tracer, images, compare.
 //! * [`figures`]: the code that draws the book's figures and tables.
 
 pub mod check;
@@ -24,6 +25,7 @@ pub mod geometry;
 pub mod optics;
 pub mod plot;
 pub mod real;
+pub mod render;
 pub mod rng;
 pub mod sampling;
 pub mod spectral;

@@ -7,6 +7,7 @@ use std::process::{Command, ExitCode};
 
 use clap::{Parser, Subcommand};
 use raylemma::figures::{self, Settings};
+use raylemma::render::{self, compare, image::Image};
 
 /// Regenerate raylemma's figures and build its book.
 ///
@@ -31,6 +32,38 @@ enum Cmd {
     },
     /// Build the HTML book from chapters/ into book/ (mdBook as a library, math as MathML).
     Book,
+    /// Render a scene file: SCENE.exr (linear sRGB and the variance of each pixel's mean),
+    /// SCENE.png (display) and SCENE.json (scene hash, spp, seed, time, version) in --out.
+    Render {
+        /// The scene file (TOML; see scenes/ and the renderer chapter).
+        scene: PathBuf,
+        /// Samples per pixel (overrides the scene's `spp`).
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+        spp: Option<u32>,
+        /// The seed (overrides the scene's `seed`).
+        #[arg(long)]
+        seed: Option<u64>,
+        /// The folder to write into (created if needed).
+        #[arg(long, default_value = "renders")]
+        out: PathBuf,
+        /// Worker threads (default: all cores). The image does not depend on it.
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+        threads: Option<u32>,
+    },
+    /// Do two renders (EXR with variance channels) agree within their noise? Exit status 0
+    /// if they agree, 1 if they differ, 2 for bad input.
+    Compare {
+        /// The first image.
+        a: PathBuf,
+        /// The second image.
+        b: PathBuf,
+        /// The family-wise false-alarm rate of the z-tests.
+        #[arg(long, default_value_t = 0.01)]
+        alpha: f64,
+        /// Where to write the difference image (PNG).
+        #[arg(long)]
+        diff: Option<PathBuf>,
+    },
 }
 
 /// The project root: this binary is built from it.
@@ -75,6 +108,55 @@ fn run_book() -> Result<(), String> {
     }
 }
 
+fn run_render(
+    scene: &Path,
+    spp: Option<u32>,
+    seed: Option<u64>,
+    out: &Path,
+    threads: Option<u32>,
+) -> Result<(), String> {
+    if let Some(t) = threads {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(t as usize)
+            .build_global()
+            .map_err(|e| format!("cannot start {t} threads: {e}"))?;
+    }
+    let stem = scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .ok_or_else(|| format!("{}: not a file name", scene.display()))?;
+    eprintln!("raylemma: rendering {}", scene.display());
+    let (_, image, sidecar) = render::render_file(scene, spp, seed, render::Progress::Bar)?;
+    let files = render::write_outputs(out, &stem, &image, &sidecar).map_err(|e| e.to_string())?;
+    eprintln!(
+        "raylemma: {} spp in {:.2} s ({:.3e} pixel samples per second, {} threads)",
+        sidecar.spp,
+        sidecar.seconds,
+        f64::from(image.width) * f64::from(image.height) * f64::from(sidecar.spp) / sidecar.seconds,
+        sidecar.threads
+    );
+    for f in files {
+        eprintln!("raylemma: wrote {}", f.display());
+    }
+    Ok(())
+}
+
+/// 0: agree, 1: differ; an error is returned for bad input (exit status 2).
+fn run_compare(a: &Path, b: &Path, alpha: f64, diff: Option<&Path>) -> Result<bool, String> {
+    let ia = Image::read_exr(a).map_err(|e| e.to_string())?;
+    let ib = Image::read_exr(b).map_err(|e| e.to_string())?;
+    let c = compare::compare(&ia, &ib, alpha)
+        .map_err(|e| format!("{} vs {}: {e}", a.display(), b.display()))?;
+    print!("{}", c.report());
+    if let Some(path) = diff {
+        let bytes = compare::difference_rgb8(&ia, &ib, c.z_critical);
+        raylemma::spectral::display::write_png(path, ia.width, ia.height, &bytes)
+            .map_err(|e| e.to_string())?;
+        println!("difference image: {}", path.display());
+    }
+    Ok(c.agree())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let settings = Settings { quick: cli.quick };
@@ -82,6 +164,23 @@ fn main() -> ExitCode {
         None => run_figures(&settings, None).and_then(|()| run_book()),
         Some(Cmd::Figures { only }) => run_figures(&settings, only.as_deref()),
         Some(Cmd::Book) => run_book(),
+        Some(Cmd::Render {
+            scene,
+            spp,
+            seed,
+            out,
+            threads,
+        }) => run_render(scene, *spp, *seed, out, *threads),
+        Some(Cmd::Compare { a, b, alpha, diff }) => {
+            match run_compare(a, b, *alpha, diff.as_deref()) {
+                Ok(true) => Ok(()),
+                Ok(false) => return ExitCode::from(1),
+                Err(e) => {
+                    eprintln!("raylemma: error: {e}");
+                    return ExitCode::from(2);
+                }
+            }
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,212 @@
+//! A rendered image: per-pixel means and the variance of each mean, in linear sRGB, and
+//! the files a render writes (OpenEXR, PNG, a JSON sidecar). Chapter: *The reference
+//! renderer* (`chapters/renderer/renderer.md`).
+//!
+//! # The EXR layout
+//!
+//! One part, float32, scan lines from the top, channels `R`, `G`, `B` (the pixel means,
+//! linear sRGB primaries and D65 white, from CIE XYZ with a constant spectrum 1 at `Y = 1`)
+//! and `var.R`, `var.G`, `var.B`: the variance **of the mean** of each pixel (the squared
+//! standard error), `s^2 / n` from the `n` samples' sample variance `s^2`. Another renderer
+//! writes the same six channels to be compared by `raylemma compare`.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use exr::prelude::{
+    AnyChannel, AnyChannels, Encoding, FlatSamples, Image as ExrImage, Layer, LayerAttributes,
+    SmallVec, WritableImage,
+};
+use glam::DVec3;
+
+use crate::spectral::display;
+
+/// The channel names of an image file, in the order of [`Image::mean`] then
+/// [`Image::var`].
+pub const CHANNELS: [&str; 6] = ["R", "G", "B", "var.R", "var.G", "var.B"];
+
+/// Per-pixel means and variances of the means, row-major from the top-left pixel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// The mean of each pixel, linear sRGB.
+    pub mean: Vec<DVec3>,
+    /// The variance of each pixel's mean (NaN where it is unknown: one sample).
+    pub var: Vec<DVec3>,
+}
+
+// ANCHOR: welford
+/// A running mean and sum of squared deviations (Welford 1962): adding a sample `x` to
+/// `n` of them moves the mean by `(x - mean) / (n + 1)` and the sum of squares by
+/// `(x - mean_old)(x - mean_new)`, without the cancellation of `sum x^2 - n mean^2`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Welford {
+    n: u32,
+    mean: DVec3,
+    m2: DVec3,
+}
+
+impl Welford {
+    /// Adds one sample.
+    pub fn push(&mut self, x: DVec3) {
+        self.n += 1;
+        let delta = x - self.mean;
+        self.mean += delta / f64::from(self.n);
+        self.m2 += delta * (x - self.mean);
+    }
+
+    /// The mean of the samples.
+    pub fn mean(&self) -> DVec3 {
+        self.mean
+    }
+
+    /// The variance of the mean, `s^2 / n` with `s^2 = m2 / (n - 1)`; NaN for fewer than
+    /// two samples.
+    pub fn var_of_mean(&self) -> DVec3 {
+        if self.n < 2 {
+            return DVec3::NAN;
+        }
+        let n = f64::from(self.n);
+        self.m2 / ((n - 1.0) * n)
+    }
+}
+// ANCHOR_END: welford
+
+/// What went wrong reading or writing an image file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImageError {
+    /// The file.
+    pub path: PathBuf,
+    /// The problem.
+    pub problem: String,
+}
+
+impl std::fmt::Display for ImageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.path.display(), self.problem)
+    }
+}
+
+impl std::error::Error for ImageError {}
+
+/// A temporary name beside `path`, so that a file is written whole and renamed into place.
+pub fn temporary_beside(path: &Path) -> PathBuf {
+    let mut name = std::ffi::OsString::from(".");
+    name.push(path.file_name().unwrap_or_default());
+    name.push(format!(".tmp-{}", std::process::id()));
+    path.with_file_name(name)
+}
+
+impl Image {
+    /// The pixel index of `(x, y)`.
+    pub fn index(&self, x: u32, y: u32) -> usize {
+        y as usize * self.width as usize + x as usize
+    }
+
+    // ANCHOR: write_exr
+    /// Writes the six channels ([`CHANNELS`]) as float32 OpenEXR (ZIP compressed) to a
+    /// temporary file beside `path`, and renames it over `path` only when complete.
+    ///
+    /// # Errors
+    /// An [`ImageError`] naming `path` when the file cannot be written.
+    pub fn write_exr(&self, path: &Path) -> Result<(), ImageError> {
+        let channel = |k: usize| -> Vec<f32> {
+            let src = if k < 3 { &self.mean } else { &self.var };
+            src.iter().map(|v| v[k % 3] as f32).collect()
+        };
+        let list: SmallVec<[AnyChannel<FlatSamples>; 4]> = CHANNELS
+            .iter()
+            .enumerate()
+            .map(|(k, name)| AnyChannel::new(*name, FlatSamples::F32(channel(k))))
+            .collect();
+        let layer = Layer::new(
+            (self.width as usize, self.height as usize),
+            LayerAttributes::default(),
+            Encoding::SMALL_LOSSLESS,
+            AnyChannels::sort(list),
+        );
+        let tmp = temporary_beside(path);
+        let result = ExrImage::from_layer(layer)
+            .write()
+            .to_file(&tmp)
+            .map_err(|e| e.to_string())
+            .and_then(|()| fs::rename(&tmp, path).map_err(|e| e.to_string()));
+        result.map_err(|problem| {
+            let _ = fs::remove_file(&tmp);
+            ImageError {
+                path: path.to_path_buf(),
+                problem: format!("cannot write the EXR: {problem}"),
+            }
+        })
+    }
+    // ANCHOR_END: write_exr
+
+    /// Reads an EXR written by [`Image::write_exr`] (or by another renderer with the same
+    /// channels: `R`, `G`, `B`, and `var.R`, `var.G`, `var.B`; any sample type).
+    ///
+    /// # Errors
+    /// An [`ImageError`] naming `path`: not readable, not an EXR, or a channel missing
+    /// (the message lists the channels there are).
+    pub fn read_exr(path: &Path) -> Result<Image, ImageError> {
+        let err = |problem: String| ImageError {
+            path: path.to_path_buf(),
+            problem,
+        };
+        if !path.is_file() {
+            return Err(err("no such file".into()));
+        }
+        let image = exr::prelude::read_first_flat_layer_from_file(path)
+            .map_err(|e| err(format!("not a readable OpenEXR file: {e}")))?;
+        let layer = &image.layer_data;
+        let (w, h) = (layer.size.0, layer.size.1);
+        let names: Vec<String> = layer
+            .channel_data
+            .list
+            .iter()
+            .map(|c| c.name.to_string())
+            .collect();
+        let mut data: Vec<Vec<f64>> = Vec::new();
+        for name in CHANNELS {
+            let Some(c) = layer
+                .channel_data
+                .list
+                .iter()
+                .find(|c| c.name.to_string() == name)
+            else {
+                return Err(err(format!(
+                    "no channel {name:?}; the file has {} (a raylemma image has R, G, B, var.R, var.G, var.B)",
+                    names.join(", ")
+                )));
+            };
+            data.push(c.sample_data.values_as_f32().map(f64::from).collect());
+        }
+        let pixel = |k: usize| -> Vec<DVec3> {
+            (0..w * h)
+                .map(|i| DVec3::new(data[k][i], data[k + 1][i], data[k + 2][i]))
+                .collect()
+        };
+        Ok(Image {
+            width: u32::try_from(w).map_err(|_| err("too wide".into()))?,
+            height: u32::try_from(h).map_err(|_| err("too tall".into()))?,
+            mean: pixel(0),
+            var: pixel(3),
+        })
+    }
+
+    /// Writes the means as an 8-bit sRGB PNG through the display chapter's rules (exposure
+    /// `2^stops`, fit to gamut, the sRGB curve), atomically.
+    ///
+    /// # Errors
+    /// As [`display::write_png`].
+    pub fn write_png(&self, path: &Path, stops: f64) -> Result<(), display::PngError> {
+        display::write_png(
+            path,
+            self.width,
+            self.height,
+            &display::to_display_rgb8(&self.mean, stops),
+        )
+    }
+}

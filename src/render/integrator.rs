@@ -1,0 +1,307 @@
+//! The spectral path tracer: next-event estimation with multiple importance sampling,
+//! Russian roulette, hero wavelengths. Chapter: *The reference renderer*
+//! (`chapters/renderer/renderer.md`).
+//!
+//! Every interaction is one of the book's modules, unchanged: the stable ray-sphere
+//! intersection, the parallelogram and sphere lights with their area-to-solid-angle pdfs
+//! and the power heuristic (*Shadow-ray pdfs*), Malley's cosine-weighted sampling and the
+//! tangent frame (*Sampling*), exact Fresnel and Snell refraction (*Optics*), the Sellmeier
+//! index and the Airy sum of a thin film, Russian roulette, and hero wavelengths with the
+//! termination of secondary lanes at a dispersive refraction (*Spectral*).
+
+use std::f64::consts::FRAC_1_PI;
+
+use glam::{DVec2, DVec3};
+use rand::RngExt;
+
+use super::scene::{Emitter, Geometry, Ior, LightShape, Material, Scene};
+use crate::geometry::Ray;
+use crate::geometry::sphere::intersect_stable;
+use crate::optics::fresnel::fresnel_dielectric;
+use crate::optics::reflect::{reflect, refract};
+use crate::optics::thinfilm::Film;
+use crate::rng::Rng;
+use crate::sampling::cosine::cosine_malley;
+use crate::sampling::frame::Frame;
+use crate::spectral::wavelength::{N, Wavelengths};
+use crate::transport::roulette::roulette;
+use crate::transport::shadow::{Heuristic, Light};
+
+/// Radiance (or throughput) at the path's `N` wavelengths.
+pub type Lanes = [f64; N];
+
+/// What a ray hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Surface {
+    /// Index into [`Scene::shapes`].
+    Shape(usize),
+    /// Index into [`Scene::lights`].
+    Light(usize),
+}
+
+/// The first surface along a ray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// Distance along the unit direction.
+    pub t: f64,
+    /// Which surface.
+    pub surface: Surface,
+}
+
+// ANCHOR: offset
+/// The relative size of the offset that moves a new ray's origin off the surface it
+/// leaves: `1e-9 (1 + max |p_i|)` along the normal, on the side the ray goes. Double
+/// precision puts the rounding error of a hit point near `1e-16 max |p_i|` (the sphere's
+/// hit point is also projected back onto it), so the margin is some seven orders of
+/// magnitude, while `1e-9` of the scene's size is far below anything a pixel resolves.
+pub const OFFSET: f64 = 1e-9;
+
+/// The origin of a ray leaving the surface point `p` (unit normal `n`, either side) in
+/// direction `dir`: `p` pushed by [`OFFSET`] to the side `dir` points to, so that the ray
+/// can neither hit the surface it starts on (acne) nor start behind it (light leaking
+/// through a wall).
+pub fn offset_origin(p: DVec3, n: DVec3, dir: DVec3) -> DVec3 {
+    let eps = OFFSET * (1.0 + p.abs().max_element());
+    if dir.dot(n) >= 0.0 {
+        p + eps * n
+    } else {
+        p - eps * n
+    }
+}
+// ANCHOR_END: offset
+
+impl Emitter {
+    /// The emitter as a sampleable light.
+    pub fn light(&self) -> &dyn Light {
+        match &self.shape {
+            LightShape::Quad(q) => q,
+            LightShape::Sphere(s) => s,
+        }
+    }
+}
+
+impl Scene {
+    // ANCHOR: intersect
+    /// The first shape or light along the ray from `o` in the unit direction `d`.
+    /// A linear loop: the canonical scenes have at most a dozen surfaces.
+    pub fn intersect(&self, o: DVec3, d: DVec3) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        let mut consider = |t: Option<f64>, surface| {
+            if let Some(t) = t
+                && t > 0.0
+                && best.is_none_or(|b| t < b.t)
+            {
+                best = Some(Hit { t, surface });
+            }
+        };
+        let ray = Ray::new(o, d);
+        for (i, s) in self.shapes.iter().enumerate() {
+            let t = match &s.geometry {
+                Geometry::Sphere(sp) => intersect_stable(&ray, sp, 0.0),
+                Geometry::Quad(q) => q.hit(o, d).map(|h| h.dist),
+            };
+            consider(t, Surface::Shape(i));
+        }
+        for (i, l) in self.lights.iter().enumerate() {
+            let t = match &l.shape {
+                LightShape::Sphere(sp) => {
+                    let sphere = crate::geometry::sphere::Sphere::new(sp.center(), sp.radius());
+                    intersect_stable(&ray, &sphere, 0.0)
+                }
+                LightShape::Quad(q) => q.hit(o, d).map(|h| h.dist),
+            };
+            consider(t, Surface::Light(i));
+        }
+        best
+    }
+    // ANCHOR_END: intersect
+
+    /// The point and unit geometric normal where the ray from `o` along `d` meets shape
+    /// `i` at distance `t`. A sphere's point is projected back onto the sphere, which
+    /// removes most of the rounding of `o + t d` (the offset then needs no error bound).
+    fn surface_point(&self, i: usize, o: DVec3, d: DVec3, t: f64) -> (DVec3, DVec3) {
+        let p = o + t * d;
+        match &self.shapes[i].geometry {
+            Geometry::Sphere(s) => {
+                let n = (p - s.center).normalize();
+                (s.center + s.radius * n, n)
+            }
+            Geometry::Quad(q) => (p, q.normal()),
+        }
+    }
+
+    /// Whether emitter `light` emits towards a ray travelling along `d` that hits it.
+    fn emits_towards(&self, light: usize, d: DVec3) -> bool {
+        match &self.lights[light].shape {
+            LightShape::Quad(q) => q.normal().dot(d) < 0.0,
+            LightShape::Sphere(_) => true,
+        }
+    }
+}
+
+fn lanes(f: impl Fn(usize) -> f64) -> Lanes {
+    std::array::from_fn(f)
+}
+
+/// The emission of `e` at the path's wavelengths.
+fn emission(e: &Emitter, wl: &Wavelengths) -> Lanes {
+    lanes(|j| e.emission.eval(wl.lambda[j]))
+}
+
+// ANCHOR: radiance
+/// The radiance arriving at `o` from the direction `-d` (`d` of unit length), at the
+/// wavelengths `wl`, estimated along one path. `wl` may be changed: a dispersive
+/// refraction terminates the secondary lanes.
+pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &mut Rng) -> Lanes {
+    let s = &scene.settings;
+    let mut l = [0.0; N];
+    let mut beta = [1.0; N];
+    let (mut o, mut d) = (o, d);
+    // The density with which the last bounce drew `d`; `None` after a delta bounce (or at
+    // the camera), where a light that is hit counts in full.
+    let mut bsdf_pdf: Option<f64> = None;
+    let light_choice = 1.0 / scene.lights.len().max(1) as f64;
+    for depth in 0..=s.max_depth {
+        let Some(hit) = scene.intersect(o, d) else {
+            if let Some(env) = &scene.environment {
+                for j in 0..N {
+                    l[j] += beta[j] * env.eval(wl.lambda[j]);
+                }
+            }
+            break;
+        };
+        let i = match hit.surface {
+            Surface::Light(k) => {
+                if scene.emits_towards(k, d) {
+                    let w = match bsdf_pdf {
+                        None => 1.0,
+                        Some(pb) => {
+                            let pl = light_choice * scene.lights[k].light().pdf(o, d);
+                            Heuristic::Power.weight(pb, pl)
+                        }
+                    };
+                    let le = emission(&scene.lights[k], wl);
+                    for j in 0..N {
+                        l[j] += w * beta[j] * le[j];
+                    }
+                }
+                break; // lights reflect nothing
+            }
+            Surface::Shape(i) => i,
+        };
+        let (p, n) = scene.surface_point(i, o, d, hit.t);
+        match &scene.materials[scene.shapes[i].material] {
+            Material::Lambert { reflectance } => {
+                // Shade on the side the ray arrived from (two-sided).
+                let n = if n.dot(d) < 0.0 { n } else { -n };
+                let rho = lanes(|j| reflectance.eval(wl.lambda[j]));
+                let po = offset_origin(p, n, n);
+                let (u_pick, u_light, u_bsdf) = (
+                    rng.random::<f64>(),
+                    DVec2::new(rng.random(), rng.random()),
+                    DVec2::new(rng.random(), rng.random()),
+                );
+                // Next-event estimation: one light, chosen uniformly, one point on it.
+                if !scene.lights.is_empty() {
+                    let k =
+                        ((u_pick * scene.lights.len() as f64) as usize).min(scene.lights.len() - 1);
+                    let light = &scene.lights[k];
+                    if let Some(ls) = light.light().sample(po, u_light) {
+                        let cos = n.dot(ls.dir);
+                        if cos > 0.0
+                            && ls.cos_light < 0.0
+                            && scene
+                                .intersect(po, ls.dir)
+                                .is_some_and(|h| h.surface == Surface::Light(k))
+                        {
+                            let pl = light_choice * ls.pdf;
+                            let w = Heuristic::Power.weight(pl, cos * FRAC_1_PI);
+                            let le = emission(light, wl);
+                            for j in 0..N {
+                                l[j] += beta[j] * rho[j] * FRAC_1_PI * le[j] * cos * w / pl;
+                            }
+                        }
+                    }
+                }
+                // The next direction, cosine-weighted: f cos / p = rho.
+                let local = cosine_malley(u_bsdf);
+                d = Frame::from_normal(n).to_world(local).normalize();
+                bsdf_pdf = Some(local.z * FRAC_1_PI);
+                o = po;
+                for j in 0..N {
+                    beta[j] *= rho[j];
+                }
+            }
+            Material::Mirror => {
+                d = reflect(d, n);
+                o = offset_origin(p, n, d);
+                bsdf_pdf = None;
+            }
+            Material::Dielectric { ior } => {
+                if matches!(ior, Ior::Sellmeier(_)) {
+                    // The direction depends on the wavelength: only the hero can follow it.
+                    wl.terminate_secondary();
+                }
+                let eta = ior.at(wl.lambda[0]);
+                let entering = d.dot(n) < 0.0;
+                let (n1, n2) = if entering { (1.0, eta) } else { (eta, 1.0) };
+                let f = fresnel_dielectric(d.dot(n).abs(), n1, n2);
+                // Reflect with probability F, refract with 1 - F: the weight F / F is 1.
+                d = match refract(d, n, n1, n2).transmitted() {
+                    Some(t) if rng.random::<f64>() >= f => t,
+                    _ => reflect(d, n),
+                };
+                o = offset_origin(p, n, d);
+                bsdf_pdf = None;
+            }
+            Material::ThinFilm { ior, thickness } => {
+                let film = Film::new(1.0, *ior, 1.0, thickness.at(p.y));
+                let cos1 = d.dot(n).abs().min(1.0);
+                let live: Vec<usize> = (0..N).filter(|&j| wl.pdf[j] > 0.0).collect();
+                let resp: [(f64, f64); N] = std::array::from_fn(|j| {
+                    if wl.pdf[j] > 0.0 {
+                        let r = film.response_cos(wl.lambda[j], cos1);
+                        (r.reflectance(), r.transmittance())
+                    } else {
+                        (0.0, 0.0)
+                    }
+                });
+                // Reflect with the lanes' mean reflectance P; each lane is weighted by its
+                // own R / P (or T / (1 - P)), which keeps every lane unbiased.
+                let p_r = live.iter().map(|&j| resp[j].0).sum::<f64>() / live.len() as f64;
+                if rng.random::<f64>() < p_r {
+                    d = reflect(d, n);
+                    for j in 0..N {
+                        beta[j] *= resp[j].0 / p_r;
+                    }
+                } else {
+                    for j in 0..N {
+                        beta[j] *= resp[j].1 / (1.0 - p_r);
+                    }
+                }
+                o = offset_origin(p, n, d);
+                bsdf_pdf = None;
+            }
+        }
+        // Russian roulette on the largest live throughput.
+        if depth + 1 >= s.roulette_depth {
+            let q = (0..N)
+                .filter(|&j| wl.pdf[j] > 0.0)
+                .map(|j| beta[j])
+                .fold(0.0, f64::max)
+                .min(1.0);
+            if !(q > 0.0) {
+                break;
+            }
+            let u = rng.random::<f64>();
+            for b in &mut beta {
+                *b = roulette(*b, q, u);
+            }
+            if beta.iter().all(|&b| b == 0.0) {
+                break;
+            }
+        }
+    }
+    l
+}
+// ANCHOR_END: radiance
