@@ -12,7 +12,7 @@ pub mod scene;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use glam::{DMat3, DVec2, DVec3};
+use glam::{DVec2, DVec3};
 use indicatif::{ProgressBar, ProgressStyle};
 use rand::RngExt;
 use rayon::prelude::*;
@@ -21,7 +21,8 @@ use self::camera::Camera;
 use self::image::{Image, ImageError, Welford};
 use self::scene::Scene;
 use crate::rng::Rng;
-use crate::spectral::{cie, wavelength::N};
+use crate::spectral::cie;
+use crate::spectral::wavelength::{N, Wavelengths};
 
 /// The side of the square tiles the image is split into for the worker threads.
 pub const TILE: u32 = 16;
@@ -42,7 +43,7 @@ pub fn pixel_rng(seed: u64, index: u64) -> Rng {
 /// that a constant radiance 1 has `Y = 1` (the estimator of
 /// [`crate::spectral::wavelength::Wavelengths::estimate`], with the lanes' values
 /// already known).
-pub fn sample_xyz(l: &integrator::Lanes, wl: &crate::spectral::wavelength::Wavelengths) -> DVec3 {
+pub fn sample_xyz(l: &integrator::Lanes, wl: &Wavelengths) -> DVec3 {
     let mut sum = DVec3::ZERO;
     for j in 0..N {
         if wl.pdf[j] > 0.0 {
@@ -53,15 +54,18 @@ pub fn sample_xyz(l: &integrator::Lanes, wl: &crate::spectral::wavelength::Wavel
 }
 // ANCHOR_END: sample_xyz
 
+/// Draws the wavelengths of one path from a uniform number in `[0, 1)`.
+pub type WavelengthSampler<'a> = &'a (dyn Fn(f64) -> Wavelengths + Sync);
+
 /// Renders pixel `(x, y)` with `spp` samples: the mean and variance of its linear sRGB.
 pub fn render_pixel(
     scene: &Scene,
     camera: &Camera,
-    to_rgb: &DMat3,
-    x: u32,
-    y: u32,
+    sampler: WavelengthSampler,
+    (x, y): (u32, u32),
     spp: u32,
 ) -> Welford {
+    let to_rgb = cie::xyz_to_linear_srgb_matrix();
     let w = scene.camera.width;
     let mut rng = pixel_rng(
         scene.settings.seed,
@@ -71,10 +75,9 @@ pub fn render_pixel(
     for _ in 0..spp {
         let jitter = DVec2::new(rng.random(), rng.random());
         let ray = camera.ray(x, y, jitter);
-        let mut wl = scene.settings.wavelengths.sample(rng.random());
+        let mut wl = sampler(rng.random());
         let l = integrator::radiance(scene, ray.origin, ray.dir, &mut wl, &mut rng);
-        let rgb = *to_rgb * sample_xyz(&l, &wl);
-        acc.push(rgb);
+        acc.push(to_rgb * sample_xyz(&l, &wl));
     }
     acc
 }
@@ -93,8 +96,20 @@ pub enum Progress {
 /// Each pixel has its own generator ([`pixel_rng`]), so the result does not depend on the
 /// number of threads.
 pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
+    let strategy = scene.settings.wavelengths;
+    render_with(scene, spp, progress, &|u| strategy.sample(u))
+}
+// ANCHOR_END: render
+
+/// [`render`] with the wavelengths of every path drawn by `sampler` instead of the scene's
+/// strategy (the tests plant wrong samplers through it).
+pub fn render_with(
+    scene: &Scene,
+    spp: u32,
+    progress: Progress,
+    sampler: WavelengthSampler,
+) -> Image {
     let camera = Camera::new(&scene.camera);
-    let to_rgb = cie::xyz_to_linear_srgb_matrix();
     let (w, h) = (scene.camera.width, scene.camera.height);
     let tiles: Vec<(u32, u32)> = (0..h.div_ceil(TILE))
         .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
@@ -117,7 +132,7 @@ pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
             for y in y0..(y0 + TILE).min(h) {
                 for x in x0..(x0 + TILE).min(w) {
                     let idx = y as usize * w as usize + x as usize;
-                    out.push((idx, render_pixel(scene, &camera, &to_rgb, x, y, spp)));
+                    out.push((idx, render_pixel(scene, &camera, sampler, (x, y), spp)));
                 }
             }
             bar.inc(1);
@@ -138,7 +153,6 @@ pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
     }
     image
 }
-// ANCHOR_END: render
 
 /// What a render was, for its JSON sidecar.
 #[derive(Clone, Debug, PartialEq)]

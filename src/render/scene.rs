@@ -17,9 +17,9 @@ use toml::Spanned;
 use crate::data::DataError;
 use crate::geometry::sphere::Sphere;
 use crate::optics::dispersion::{self, Sellmeier};
-use crate::spectral::emission;
 use crate::spectral::spectrum::{self, Spectrum, Table};
 use crate::spectral::wavelength::Strategy;
+use crate::spectral::{cie, emission};
 use crate::transport::shadow::{QuadLight, SphereLight};
 
 /// A checked scene, ready to render.
@@ -263,6 +263,7 @@ struct RawSpectrum {
     peak: Option<f64>,
     lamp: Option<String>,
     scale: Option<f64>,
+    luminance: Option<f64>,
 }
 
 // ---------------------------------------------------------------------------------------
@@ -405,6 +406,8 @@ impl Checker<'_> {
         }
     }
 
+    /// An inline table: one kind, then `scale`, or `luminance` (the factor that gives the
+    /// spectrum's CIE `Y`, [`cie::xyz`], that value).
     fn spectrum_table(&self, v: &Spanned<toml::Value>, what: &str) -> Result<Spectrum, DataError> {
         let span = v.span();
         let raw: RawSpectrum = v
@@ -414,6 +417,48 @@ impl Checker<'_> {
             .or_else(|e: toml::de::Error| {
                 self.err(span.clone(), format!("{what}: {}", e.message()))
             })?;
+        let Some(lum) = raw.luminance else {
+            return self.spectrum_kind(&raw, span, what);
+        };
+        if raw.scale.is_some() {
+            return self.err(
+                span,
+                format!("{what}: give `scale` or `luminance`, not both"),
+            );
+        }
+        if !(lum.is_finite() && lum >= 0.0) {
+            return self.err(
+                span,
+                format!("{what}: luminance {lum} must be finite and >= 0"),
+            );
+        }
+        let s = self.spectrum_kind(&raw, span.clone(), what)?;
+        let y = cie::xyz(|nm| s.eval(nm)).y;
+        if !(y > 0.0) {
+            return self.err(
+                span,
+                format!(
+                    "{what}: the spectrum is black in 360-830 nm; it has no luminance to scale"
+                ),
+            );
+        }
+        let k = lum / y;
+        Ok(match s {
+            Spectrum::Constant(c) => Spectrum::Constant(c * k),
+            Spectrum::Table(t) => Spectrum::Table(t.scaled(k)),
+            Spectrum::Blackbody { kelvin, peak } => Spectrum::Blackbody {
+                kelvin,
+                peak: peak * k,
+            },
+        })
+    }
+
+    fn spectrum_kind(
+        &self,
+        raw: &RawSpectrum,
+        span: std::ops::Range<usize>,
+        what: &str,
+    ) -> Result<Spectrum, DataError> {
         let kinds = [
             raw.constant.is_some(),
             raw.file.is_some(),

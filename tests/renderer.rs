@@ -1,0 +1,438 @@
+//! Tests of the chapter *The reference renderer* (`src/render/`): furnace scenes against
+//! their exact pixel values, determinism whatever the number of threads, ray offsets (no
+//! acne, no leaks), the image files, and `compare` on agreeing and disagreeing renders.
+//!
+//! Statistical tests (7 of the suite's budget of 200): the white furnace under four
+//! wavelength strategies, the grey furnace's two regions, and one comparison of two seeds,
+//! each at `raylemma::stats::test_alpha()`, split by Šidák over its pixels. Each has a
+//! planted-bug twin it must reject: lanes weighted by a pdf they were not drawn from in the
+//! white furnace, a reflectance 4 % too high in the grey one, a brighter scene for `compare`.
+
+use std::path::Path;
+
+use glam::{DVec2, DVec3};
+use raylemma::render::compare::{compare, two_sided_critical};
+use raylemma::render::image::{Image, Welford};
+use raylemma::render::integrator::{Surface, offset_origin};
+use raylemma::render::scene::{self, Geometry, Material, Scene};
+use raylemma::render::{Progress, render, render_with};
+use raylemma::rng;
+use raylemma::sampling::cosine::cosine_malley;
+use raylemma::sampling::frame::Frame;
+use raylemma::spectral::cie;
+use raylemma::spectral::spectrum::Spectrum;
+use raylemma::spectral::wavelength::{N, RANGE, Strategy, hero_visible};
+use raylemma::stats::{sidak, test_alpha};
+use raylemma::transport::shadow::QuadLight;
+
+fn load(name: &str) -> Scene {
+    scene::load(
+        &Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes")
+            .join(name),
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn small(mut s: Scene, side: u32, spp: u32) -> Scene {
+    s.camera.width = side;
+    s.camera.height = side;
+    s.settings.spp = spp;
+    s
+}
+
+/// The exact linear sRGB of an environment of spectrum `s` seen directly.
+fn exact_rgb(s: &Spectrum) -> DVec3 {
+    cie::xyz_to_linear_srgb(cie::xyz(|nm| s.eval(nm)))
+}
+
+/// The z-scores of the pixels `which` against `expected`, pooled in 8 x 8 blocks (a pixel's
+/// 32 samples are too few for its own z to be normal: one uniform wavelength gives a skewed
+/// XYZ; a block's 2048 are plenty), and of their overall mean.
+struct Fit {
+    /// The largest block `|z|`.
+    worst: f64,
+    /// The critical `|z|`: Šidák at `test_alpha()` over the block tests and the mean's.
+    critical: f64,
+    /// The overall mean's `|z|`, the channel with the largest.
+    mean_z: f64,
+    pixels: usize,
+}
+
+fn fit(image: &Image, which: impl Fn(u32, u32) -> bool, expected: DVec3) -> Fit {
+    const B: u32 = 8;
+    let bw = image.width.div_ceil(B);
+    let nb = (bw * image.height.div_ceil(B)) as usize;
+    let (mut bd, mut bv, mut bn) = (vec![DVec3::ZERO; nb], vec![DVec3::ZERO; nb], vec![0u32; nb]);
+    let mut pixels = 0;
+    for y in 0..image.height {
+        for x in 0..image.width {
+            if which(x, y) {
+                let (i, k) = (image.index(x, y), ((y / B) * bw + x / B) as usize);
+                bd[k] += image.mean[i] - expected;
+                bv[k] += image.var[i];
+                bn[k] += 1;
+                pixels += 1;
+            }
+        }
+    }
+    let z = |d: DVec3, v: DVec3| raylemma::check::max_abs((d / v.powf(0.5)).to_array());
+    let blocks: Vec<f64> = (0..nb)
+        .filter(|&k| bn[k] > 0)
+        .map(|k| z(bd[k], bv[k]))
+        .collect();
+    let worst = raylemma::check::max_abs(blocks.iter().copied());
+    let mean_z = z(bd.iter().sum(), bv.iter().sum());
+    let critical = two_sided_critical(sidak(test_alpha(), 3 * blocks.len() as u32 + 3));
+    Fit {
+        worst,
+        critical,
+        mean_z,
+        pixels,
+    }
+}
+
+fn white_furnace(sampler: raylemma::render::WavelengthSampler) -> Fit {
+    let s = small(load("furnace.toml"), 48, 32);
+    let image = render_with(&s, s.settings.spp, Progress::Silent, sampler);
+    fit(&image, |_, _| true, exact_rgb(&Spectrum::Constant(1.0)))
+}
+
+#[test]
+fn white_furnace_is_exact_within_noise() {
+    let f = white_furnace(&|u| Strategy::HeroVisible.sample(u));
+    assert_eq!(f.pixels, 48 * 48);
+    assert!(
+        f.worst <= f.critical && f.mean_z <= f.critical,
+        "white furnace: worst pixel |z| = {}, image mean |z| = {}, critical {}",
+        f.worst,
+        f.mean_z,
+        f.critical
+    );
+}
+
+#[test]
+fn white_furnace_accepts_every_unbiased_wavelength_strategy() {
+    // The one-wavelength, uniform and balance-heuristic strategies, through the same test.
+    for strategy in [Strategy::Uniform, Strategy::Visible, Strategy::HeroBalance] {
+        let f = white_furnace(&|u| strategy.sample(u));
+        assert!(
+            f.worst <= f.critical && f.mean_z <= f.critical,
+            "{}: worst |z| = {}, mean |z| = {}, critical {}",
+            strategy.name(),
+            f.worst,
+            f.mean_z,
+            f.critical
+        );
+    }
+}
+
+#[test]
+fn white_furnace_rejects_a_wavelength_pdf_that_is_not_the_sampled_one() {
+    // Planted bug: lanes drawn from the visible pdf but weighted by the uniform density
+    // (the wavelength chapter's "uniform weight").
+    let f = white_furnace(&|u| {
+        let mut w = hero_visible(u);
+        w.pdf = [1.0 / RANGE; N];
+        w
+    });
+    assert!(
+        f.worst > f.critical && f.mean_z > f.critical,
+        "the wrong weight passed the white furnace: worst block |z| = {}, mean |z| = {}, critical {}",
+        f.worst,
+        f.mean_z,
+        f.critical
+    );
+}
+
+/// The grey furnace: pixels that see only the sphere (all four corners' rays hit it) must
+/// be `rho` times the environment, pixels whose 3x3 neighbourhood misses it entirely must
+/// be the environment.
+/// `rho` is the sphere's reflectance in the render, `assumed` the one of the exact value.
+fn grey_furnace(rho: f64, assumed: f64) -> (Fit, Fit) {
+    let mut s = small(load("furnace-grey.toml"), 48, 32);
+    s.materials[0] = Material::Lambert {
+        reflectance: Spectrum::Constant(rho),
+    };
+    let image = render(&s, s.settings.spp, Progress::Silent);
+    let env = s.environment.clone().unwrap_or(Spectrum::Constant(0.0));
+    let camera = raylemma::render::camera::Camera::new(&s.camera);
+    let Geometry::Sphere(sphere) = s.shapes[0].geometry else {
+        panic!("the grey furnace has one sphere")
+    };
+    let hits = |x: u32, y: u32, dx: f64, dy: f64| {
+        let r = camera.ray(x, y, DVec2::new(dx, dy));
+        raylemma::geometry::sphere::intersect_stable(&r, &sphere, 0.0).is_some()
+    };
+    let corners = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)];
+    let inside = |x, y| corners.iter().all(|&(dx, dy)| hits(x, y, dx, dy));
+    let outside = |x: u32, y: u32| {
+        corners
+            .iter()
+            .all(|&(dx, dy)| !hits(x.saturating_sub(1), y.saturating_sub(1), 3.0 * dx, 3.0 * dy))
+    };
+    let bg = exact_rgb(&env);
+    (fit(&image, inside, assumed * bg), fit(&image, outside, bg))
+}
+
+#[test]
+fn grey_furnace_is_exact_within_noise() {
+    let (inside, outside) = grey_furnace(0.5, 0.5);
+    assert!(
+        inside.pixels > 300 && outside.pixels > 300,
+        "{} inside, {} outside",
+        inside.pixels,
+        outside.pixels
+    );
+    for (what, f) in [("on the sphere", &inside), ("on the environment", &outside)] {
+        assert!(
+            f.worst <= f.critical && f.mean_z <= f.critical,
+            "grey furnace, pixels {what}: worst |z| = {}, mean |z| = {}, critical {}",
+            f.worst,
+            f.mean_z,
+            f.critical
+        );
+    }
+}
+
+#[test]
+fn grey_furnace_rejects_a_reflectance_four_percent_high() {
+    // Planted bug: the sphere reflects 0.52 where the exact value assumes 0.5.
+    let (inside, _) = grey_furnace(0.52, 0.5);
+    assert!(
+        inside.worst > inside.critical || inside.mean_z > inside.critical,
+        "a 4 % bias passed: worst |z| = {}, mean |z| = {}, critical {}",
+        inside.worst,
+        inside.mean_z,
+        inside.critical
+    );
+}
+
+fn bits(image: &Image) -> Vec<u64> {
+    image
+        .mean
+        .iter()
+        .chain(&image.var)
+        .flat_map(|v| v.to_array().map(f64::to_bits))
+        .collect()
+}
+
+#[test]
+fn images_are_bit_identical_whatever_the_number_of_threads() {
+    let s = small(load("cornell.toml"), 40, 3);
+    let with = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| render(&s, s.settings.spp, Progress::Silent))
+    };
+    let one = bits(&with(1));
+    for threads in [2, 3, 5] {
+        assert!(
+            one == bits(&with(threads)),
+            "{threads} threads changed the image"
+        );
+    }
+    // And the seed matters (a renderer that ignored it would pass the check above).
+    let mut other = s.clone();
+    other.settings.seed += 1;
+    assert!(one != bits(&render(&other, other.settings.spp, Progress::Silent)));
+}
+
+/// The Cornell box closed at z = 0 by a white wall: no ray may leave it.
+fn closed_box() -> Scene {
+    let mut s = load("cornell.toml");
+    let front = QuadLight::new(
+        DVec3::ZERO,
+        DVec3::new(0.0, 555.0, 0.0),
+        DVec3::new(555.0, 0.0, 0.0),
+    )
+    .unwrap();
+    s.shapes.push(scene::Shape {
+        geometry: Geometry::Quad(front),
+        material: 0,
+    });
+    s
+}
+
+/// Rays leaving random points of every shape of the closed box, cosine-distributed
+/// about the normal on a random side that faces into the box (and, at a fraction of
+/// them, almost tangent): `(self hits, escapes, rays)`.
+fn offset_failures(offset: impl Fn(DVec3, DVec3, DVec3) -> DVec3) -> (usize, usize, usize) {
+    let s = closed_box();
+    let mut rng = rng::seeded(17);
+    let (mut self_hits, mut escapes, mut rays) = (0, 0, 0);
+    let centre = DVec3::splat(277.5);
+    for (i, shape) in s.shapes.iter().enumerate() {
+        for k in 0..4000 {
+            let u = DVec2::new(
+                rng::uniform(&mut rng, 0.0, 1.0),
+                rng::uniform(&mut rng, 0.0, 1.0),
+            );
+            let (p, n) = match &shape.geometry {
+                Geometry::Quad(q) => {
+                    let [c, a, _, b] = q.vertices();
+                    let p = c + u.x * (a - c) + u.y * (b - c);
+                    let n = q.normal();
+                    (p, if n.dot(centre - p) > 0.0 { n } else { -n })
+                }
+                Geometry::Sphere(sp) => {
+                    let n = raylemma::sampling::sphere::sphere_inverse_cdf(u);
+                    let p = sp.center + sp.radius * n;
+                    if p.y < 0.0 {
+                        continue; // below the floor
+                    }
+                    (p, n)
+                }
+            };
+            let v = DVec2::new(
+                rng::uniform(&mut rng, 0.0, 1.0),
+                rng::uniform(&mut rng, 0.0, 1.0),
+            );
+            let mut local = cosine_malley(v);
+            if k % 8 == 0 {
+                // Grazing: 1e-7 rad above the tangent plane.
+                local = DVec3::new(local.x, local.y, 0.0).normalize_or(DVec3::X) + DVec3::Z * 1e-7;
+            }
+            let dir = Frame::from_normal(n).to_world(local).normalize();
+            rays += 1;
+            match s.intersect(offset(p, n, dir), dir) {
+                None => escapes += 1,
+                Some(h) if h.surface == Surface::Shape(i) => self_hits += 1,
+                Some(_) => {}
+            }
+        }
+    }
+    (self_hits, escapes, rays)
+}
+
+#[test]
+fn offset_rays_neither_hit_their_own_surface_nor_leak() {
+    let (self_hits, escapes, rays) = offset_failures(offset_origin);
+    assert!(rays > 30_000);
+    assert_eq!((self_hits, escapes), (0, 0), "of {rays} rays");
+}
+
+#[test]
+fn rays_without_an_offset_do_hit_their_own_surface() {
+    // Planted bug: the hit point itself as the origin. The test above must be able to fail.
+    let (self_hits, _, rays) = offset_failures(|p, _, _| p);
+    assert!(
+        self_hits > rays / 100,
+        "only {self_hits} self hits of {rays}"
+    );
+}
+
+#[test]
+fn welford_matches_the_two_pass_variance() {
+    let xs: Vec<f64> = (0..1000).map(|i| 1e6 + f64::from(i % 7) * 0.25).collect();
+    let mut w = Welford::default();
+    for &x in &xs {
+        w.push(DVec3::splat(x));
+    }
+    let n = xs.len() as f64;
+    let mean = xs.iter().sum::<f64>() / n;
+    let s2 = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    assert!((w.mean().x - mean).abs() <= 1e-9);
+    assert!(
+        (w.var_of_mean().x - s2 / n).abs() <= 1e-9 * s2 / n,
+        "{} vs {}",
+        w.var_of_mean().x,
+        s2 / n
+    );
+    let mut one = Welford::default();
+    one.push(DVec3::ONE);
+    assert!(one.var_of_mean().is_nan(), "one sample has no variance");
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("raylemma-renderer-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+#[test]
+fn exr_round_trip_keeps_every_channel() {
+    let s = small(load("cornell-diffuse.toml"), 12, 4);
+    let image = render(&s, 4, Progress::Silent);
+    let path = tmp("round.exr");
+    image.write_exr(&path).unwrap();
+    let back = Image::read_exr(&path).unwrap();
+    assert_eq!((back.width, back.height), (12, 12));
+    for (a, b) in image
+        .mean
+        .iter()
+        .chain(&image.var)
+        .zip(back.mean.iter().chain(&back.var))
+    {
+        let rel = raylemma::check::max_abs((*a - *b).to_array()) / a.abs().max_element().max(1e-30);
+        assert!(rel <= 1e-7, "{a} became {b}");
+    }
+    let missing = Image::read_exr(&tmp("no-such.exr")).unwrap_err();
+    assert!(missing.problem.contains("no such file"), "{missing}");
+    std::fs::write(tmp("not.exr"), b"not an exr").unwrap();
+    let bad = Image::read_exr(&tmp("not.exr")).unwrap_err();
+    assert!(bad.problem.contains("OpenEXR"), "{bad}");
+}
+
+#[test]
+fn compare_accepts_two_seeds_and_rejects_a_changed_scene() {
+    let s = small(load("cornell-diffuse.toml"), 32, 32);
+    let a = render(&s, 32, Progress::Silent);
+    let mut s2 = s.clone();
+    s2.settings.seed = 99;
+    let b = render(&s2, 32, Progress::Silent);
+    let c = compare(&a, &b, test_alpha()).unwrap();
+    assert!(c.agree(), "two seeds of one scene differ:\n{}", c.report());
+    assert!(
+        (0.8..=1.25).contains(&c.mean_z2),
+        "mean z^2 = {} (variances wrong?)",
+        c.mean_z2
+    );
+    // Planted bug: the white sphere and walls reflect 5 % more.
+    let mut bright = s2.clone();
+    for m in &mut bright.materials {
+        if let Material::Lambert {
+            reflectance: Spectrum::Table(t),
+        } = m
+        {
+            *t = t.scaled(1.05);
+        }
+    }
+    let d = render(&bright, 32, Progress::Silent);
+    let c = compare(&a, &d, test_alpha()).unwrap();
+    assert!(!c.agree(), "a 5 % brighter box passed:\n{}", c.report());
+    assert!(c.regions[0].z.abs() > c.z_critical);
+}
+
+#[test]
+fn compare_refuses_images_it_cannot_judge() {
+    let s = small(load("cornell-diffuse.toml"), 8, 2);
+    let a = render(&s, 2, Progress::Silent);
+    let b = render(
+        &small(load("cornell-diffuse.toml"), 9, 2),
+        2,
+        Progress::Silent,
+    );
+    assert!(
+        compare(&a, &b, 0.01)
+            .unwrap_err()
+            .contains("different sizes")
+    );
+    let one = render(&s, 1, Progress::Silent);
+    assert!(
+        compare(&a, &one, 0.01)
+            .unwrap_err()
+            .contains("at least 2 samples")
+    );
+    assert!(compare(&a, &a, 0.0).is_err());
+    assert!(compare(&a, &a, 0.01).unwrap().agree());
+}
+
+#[test]
+fn two_sided_critical_values_match_the_normal_table() {
+    // Published values: P(|Z| > 1.959964) = 0.05, P(|Z| > 3.290527) = 0.001.
+    assert!((two_sided_critical(0.05) - 1.959_964).abs() <= 1e-6);
+    assert!((two_sided_critical(0.001) - 3.290_527).abs() <= 1e-6);
+}
