@@ -20,7 +20,7 @@ use crate::optics::dispersion::{self, Sellmeier};
 use crate::spectral::spectrum::{self, Spectrum, Table};
 use crate::spectral::wavelength::Strategy;
 use crate::spectral::{cie, emission};
-use crate::transport::shadow::{QuadLight, SphereLight};
+use crate::transport::shadow::{LightError, QuadLight, SphereLight};
 
 /// A checked scene, ready to render.
 #[derive(Clone, Debug)]
@@ -815,11 +815,34 @@ impl Checker<'_> {
             self.required(&s.edge2, span.clone(), "edge2")?,
             &format!("{what} edge2"),
         )?;
-        QuadLight::new(corner, e1, e2)
-            .or_else(|e| self.err(span, format!("{what} is degenerate: {e}")))
+        QuadLight::new(corner, e1, e2).or_else(|e| {
+            // Point at the edge that makes the quad degenerate.
+            let at = match e {
+                LightError::ZeroLengthEdge("e1") => s.edge1.as_ref(),
+                LightError::ZeroLengthEdge(_) | LightError::ParallelEdges => s.edge2.as_ref(),
+                _ => None,
+            };
+            self.err(
+                at.map_or(span, Spanned::span),
+                format!("{what} is degenerate: {e}"),
+            )
+        })
     }
 
+    /// Refuses an unknown `type`, and keys that belong to the other kind of shape (or
+    /// `emission` on a shape, `material` on a light: `extra` is the one allowed).
     fn keys_for(&self, s: &RawShape, kind: &str, what: &str, extra: &str) -> Result<(), DataError> {
+        if kind != "sphere" && kind != "quad" {
+            let noun = if extra == "material" {
+                "shape"
+            } else {
+                "light"
+            };
+            return self.err(
+                s.kind.span(),
+                format!("unknown {noun} type {kind:?} (there are: sphere, quad)"),
+            );
+        }
         let sphere = [
             ("center", s.center.as_ref().map(Spanned::span)),
             ("radius", s.radius.as_ref().map(Spanned::span)),

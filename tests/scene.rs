@@ -1,0 +1,451 @@
+//! Tests of the scene format (`src/render/scene.rs`, chapter *The reference renderer*):
+//! every canonical scene reads; every malformed scene is refused with the file, the line
+//! and the reason; random corruptions of real scenes never panic; and `raylemma render`
+//! refuses a bad scene before it writes anything, leaving earlier outputs untouched.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use raylemma::data::DataError;
+use raylemma::render::scene::{self, Material};
+use raylemma::rng;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn scenes_dir() -> PathBuf {
+    root().join("scenes")
+}
+
+/// A minimal valid scene; tests change one line of it.
+const GOOD: &str = r#"[render]
+spp = 4
+seed = 1
+
+[camera]
+position = [0, 0, -5]
+look_at = [0, 0, 0]
+up = [0, 1, 0]
+fov_y = 40
+resolution = [16, 16]
+
+[spectra]
+grey = { constant = 0.5 }
+
+[materials]
+grey = { type = "lambert", reflectance = "grey" }
+glass = { type = "dielectric", ior = 1.5 }
+
+[[shape]]
+type = "sphere"
+center = [0, 0, 0]
+radius = 1
+material = "grey"
+
+[[shape]]
+type = "quad"
+corner = [-5, -1, -5]
+edge1 = [0, 0, 10]
+edge2 = [10, 0, 0]
+material = "glass"
+
+[[light]]
+type = "quad"
+corner = [-1, 3, -1]
+edge1 = [2, 0, 0]
+edge2 = [0, 0, 2]
+emission = 10
+"#;
+
+fn parse(text: &str) -> Result<scene::Scene, DataError> {
+    scene::parse(text, "test.toml", &scenes_dir())
+}
+
+/// `GOOD` with the line that starts with `old` replaced by `new`; the 1-based line.
+fn with(old: &str, new: &str) -> (String, usize) {
+    let lines: Vec<&str> = GOOD.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| l.starts_with(old))
+        .unwrap_or_else(|| panic!("no line {old:?}"));
+    let mut out: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    out[at] = new.to_string();
+    (out.join("\n") + "\n", at + 1)
+}
+
+/// The scene with `old` replaced by `new` must be refused at that line, with a message
+/// containing every one of `words`.
+fn refused_at(old: &str, new: &str, words: &[&str]) {
+    let (text, line) = with(old, new);
+    let e = parse(&text).map(|_| ()).unwrap_err();
+    assert_eq!(
+        (e.file.as_str(), e.line),
+        ("test.toml", line),
+        "{new:?}: {e}"
+    );
+    for w in words {
+        assert!(e.problem.contains(w), "{new:?}: {e:?} does not say {w:?}");
+    }
+}
+
+#[test]
+fn every_canonical_scene_reads() {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(scenes_dir())
+        .unwrap()
+        .chain(std::fs::read_dir(scenes_dir().join("lamps")).unwrap())
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 11, "{paths:?}");
+    for p in &paths {
+        let s = scene::load(p).unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            s.settings.spp >= 1 && !s.shapes.is_empty(),
+            "{}",
+            p.display()
+        );
+    }
+    assert!(parse(GOOD).is_ok());
+}
+
+#[test]
+fn the_cornell_box_is_the_one_the_issue_specifies() {
+    let s = scene::load(&scenes_dir().join("cornell.toml")).unwrap();
+    assert_eq!((s.camera.width, s.camera.height), (256, 256));
+    assert_eq!(s.camera.fov_y_deg, 39.3077);
+    assert_eq!(s.camera.position, glam::DVec3::new(278.0, 273.0, -800.0));
+    assert_eq!(s.shapes.len(), 7);
+    assert_eq!(s.lights.len(), 1);
+    let scene::LightShape::Quad(q) = s.lights[0].shape else {
+        panic!("the light is a quad")
+    };
+    assert_eq!(
+        q.normal(),
+        glam::DVec3::new(0.0, -1.0, 0.0),
+        "the light must face down"
+    );
+    assert_eq!(q.area(), 130.0 * 105.0);
+    let glass = s
+        .materials
+        .iter()
+        .filter(|m| matches!(m, Material::Dielectric { .. }))
+        .count();
+    assert_eq!(glass, 1);
+}
+
+#[test]
+fn syntax_errors_name_their_line() {
+    refused_at("radius = 1", "radius = = 1", &[]);
+    // An unclosed array is noticed where the next line starts.
+    let (text, line) = with("fov_y = 40", "fov_y = [40");
+    let e = parse(&text).map(|_| ()).unwrap_err();
+    assert_eq!(e.line, line + 1, "{e}");
+}
+
+#[test]
+fn unknown_keys_types_and_names_are_refused() {
+    refused_at("seed = 1", "sed = 1", &["sed"]);
+    refused_at(
+        "grey = { type = \"lambert\"",
+        "grey = { type = \"plastic\", reflectance = 1 }",
+        &["plastic", "lambert"],
+    );
+    refused_at(
+        "material = \"grey\"",
+        "material = \"gold\"",
+        &["gold", "grey", "glass"],
+    );
+    refused_at("type = \"sphere\"", "type = \"cube\"", &["cube"]);
+    refused_at("emission = 10", "emission = \"sun\"", &["sun"]);
+    refused_at(
+        "glass = {",
+        "glass = { type = \"dielectric\", sellmeier = \"unobtainium\" }",
+        &["unobtainium", "N-BK7"],
+    );
+    refused_at(
+        "seed = 1",
+        "wavelengths = \"rainbow\"",
+        &["rainbow", "hero-visible"],
+    );
+}
+
+#[test]
+fn bad_numbers_are_refused() {
+    refused_at("radius = 1", "radius = -1", &["radius", "-1", "> 0"]);
+    refused_at("radius = 1", "radius = 0", &["radius"]);
+    refused_at("radius = 1", "radius = nan", &["radius", "NaN"]);
+    refused_at("center = [0, 0, 0]", "center = [0, inf, 0]", &["center"]);
+    refused_at(
+        "glass = {",
+        "glass = { type = \"dielectric\", ior = 0 }",
+        &["ior", "> 0"],
+    );
+    refused_at(
+        "glass = {",
+        "glass = { type = \"dielectric\", ior = -1.5 }",
+        &["ior"],
+    );
+    refused_at("spp = 4", "spp = 0", &["spp", "at least 1"]);
+    refused_at("spp = 4", "spp = -3", &["spp"]);
+    refused_at("fov_y = 40", "fov_y = 180", &["fov_y"]);
+    refused_at(
+        "resolution = [16, 16]",
+        "resolution = [0, 16]",
+        &["resolution"],
+    );
+    refused_at("emission = 10", "emission = -10", &["emission"]);
+}
+
+#[test]
+fn an_over_unit_reflectance_is_refused_where_it_is_used() {
+    let (text, _) = with("grey = { constant", "grey = { constant = 1.5 }");
+    let e = parse(&text).map(|_| ()).unwrap_err();
+    let line = GOOD
+        .lines()
+        .position(|l| l.starts_with("grey = { type"))
+        .unwrap()
+        + 1;
+    assert_eq!(e.line, line, "{e}");
+    assert!(e.problem.contains("[0, 1]"), "{e}");
+}
+
+#[test]
+fn degenerate_geometry_is_refused() {
+    // Parallel edges: the quad has no area.
+    let (text, _) = with("edge2 = [10, 0, 0]", "edge2 = [0, 0, 20]");
+    let e = parse(&text).map(|_| ()).unwrap_err();
+    assert!(
+        e.problem.contains("degenerate") && e.problem.contains("parallel"),
+        "{e}"
+    );
+    assert!(
+        e.line > 0 && GOOD.lines().nth(e.line - 1).is_some_and(|l| !l.is_empty()),
+        "{e}"
+    );
+    refused_at("edge1 = [0, 0, 10]", "edge1 = [0, 0, 0]", &[]);
+    // A camera looking along its up direction has no image plane.
+    refused_at("up = [0, 1, 0]", "up = [0, 0, 1]", &["parallel"]);
+    refused_at("look_at = [0, 0, 0]", "look_at = [0, 0, -5]", &["look_at"]);
+}
+
+#[test]
+fn a_missing_spectrum_file_is_refused_with_its_path() {
+    refused_at(
+        "grey = { constant",
+        "grey = { file = \"no-such.csv\" }",
+        &["no-such.csv", "does not exist"],
+    );
+    // A file that exists but lacks the column.
+    refused_at(
+        "grey = { constant",
+        "grey = { file = \"../data/cornell_box_reflectance.csv\", column = \"blue\" }",
+        &["blue", "white"],
+    );
+}
+
+#[test]
+fn a_malformed_spectrum_file_names_its_own_line() {
+    let dir = std::env::temp_dir().join(format!("raylemma-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("bad.csv"),
+        "wavelength_nm,value\n400,0.5\n500,oops\n",
+    )
+    .unwrap();
+    let (text, _) = with("grey = { constant", "grey = { file = \"bad.csv\" }");
+    let e = scene::parse(&text, "test.toml", &dir)
+        .map(|_| ())
+        .unwrap_err();
+    assert!(e.file.ends_with("bad.csv") && e.line == 3, "{e}");
+}
+
+#[test]
+fn random_corruptions_never_panic() {
+    // A fuzzer's diet: bytes flipped, lines dropped or duplicated, the file truncated, in
+    // every canonical scene. The parser must answer Ok or a DataError, never panic.
+    let mut rng = rng::seeded(23);
+    let texts: Vec<String> = [
+        "cornell.toml",
+        "bubble.toml",
+        "furnace.toml",
+        "dispersion.toml",
+    ]
+    .iter()
+    .map(|n| std::fs::read_to_string(scenes_dir().join(n)).unwrap())
+    .chain([GOOD.to_string()])
+    .collect();
+    let alphabet = b" =[]{}\",.-0123456789aeinrstxyz#\n";
+    let mut refused = 0;
+    for k in 0..3000 {
+        let mut bytes = texts[k % texts.len()].clone().into_bytes();
+        match k % 4 {
+            0 => {
+                for _ in 0..1 + k % 5 {
+                    let i = (rng::uniform(&mut rng, 0.0, 1.0) * bytes.len() as f64) as usize;
+                    let c = alphabet
+                        [(rng::uniform(&mut rng, 0.0, 1.0) * alphabet.len() as f64) as usize];
+                    let last = bytes.len() - 1;
+                    bytes[i.min(last)] = c;
+                }
+            }
+            1 => bytes.truncate((rng::uniform(&mut rng, 0.0, 1.0) * bytes.len() as f64) as usize),
+            2 => {
+                let text = String::from_utf8_lossy(&bytes).into_owned();
+                let mut lines: Vec<&str> = text.lines().collect();
+                let i = (rng::uniform(&mut rng, 0.0, 1.0) * lines.len() as f64) as usize;
+                lines.remove(i.min(lines.len() - 1));
+                bytes = lines.join("\n").into_bytes();
+            }
+            _ => {
+                let text = String::from_utf8_lossy(&bytes).into_owned();
+                let mut lines: Vec<&str> = text.lines().collect();
+                let i = (rng::uniform(&mut rng, 0.0, 1.0) * lines.len() as f64) as usize;
+                let l = lines[i.min(lines.len() - 1)];
+                lines.insert(i.min(lines.len() - 1), l);
+                bytes = lines.join("\n").into_bytes();
+            }
+        }
+        let text = String::from_utf8_lossy(&bytes);
+        let outcome =
+            std::panic::catch_unwind(|| scene::parse(&text, "fuzz.toml", &scenes_dir()).is_err());
+        match outcome {
+            Ok(true) => refused += 1,
+            Ok(false) => {}
+            Err(_) => panic!("the parser panicked on corruption {k}:\n{text}"),
+        }
+    }
+    // The corruptions must actually reach the checks (a generator that left the files
+    // valid would make this test pass vacuously).
+    assert!(
+        refused > 1000,
+        "only {refused} of 3000 corruptions were refused"
+    );
+}
+
+fn raylemma() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_raylemma"))
+}
+
+fn out_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("raylemma-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn render_refuses_a_bad_scene_and_keeps_earlier_outputs() {
+    let dir = out_dir("bad");
+    let (text, line) = with("radius = 1", "radius = -2");
+    let scene = dir.join("tiny.toml");
+    std::fs::write(&scene, text).unwrap();
+    // An earlier render's files, which must survive.
+    for ext in ["exr", "png", "json"] {
+        std::fs::write(dir.join(format!("tiny.{ext}")), b"earlier").unwrap();
+    }
+    let out = raylemma()
+        .arg("render")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(&format!("tiny.toml:{line}:")) && err.contains("radius"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+    for ext in ["exr", "png", "json"] {
+        assert_eq!(
+            std::fs::read(dir.join(format!("tiny.{ext}"))).unwrap(),
+            b"earlier",
+            "tiny.{ext} was touched"
+        );
+    }
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert_eq!(left.len(), 4, "stray files: {left:?}");
+}
+
+#[test]
+fn render_refuses_zero_spp_and_a_missing_scene() {
+    let dir = out_dir("flags");
+    let out = raylemma()
+        .args(["render", "scenes/cornell.toml", "--spp", "0", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--spp"));
+    let out = raylemma()
+        .args(["render", "no/such/scene.toml", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no/such/scene.toml"));
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+}
+
+#[test]
+fn render_then_compare_from_the_command_line() {
+    let dir = out_dir("ok");
+    let scene = dir.join("tiny.toml");
+    std::fs::write(&scene, GOOD).unwrap();
+    let render = |seed: &str, sub: &str| {
+        let out = raylemma()
+            .arg("render")
+            .arg(&scene)
+            .args(["--spp", "16", "--seed", seed, "--out"])
+            .arg(dir.join(sub))
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        dir.join(sub).join("tiny.exr")
+    };
+    let (a, b) = (render("1", "a"), render("2", "b"));
+    let json = std::fs::read_to_string(dir.join("a").join("tiny.json")).unwrap();
+    for key in [
+        "\"scene_hash\"",
+        "\"spp\": 16",
+        "\"seed\": 1",
+        "\"seconds\"",
+        "\"renderer\": \"raylemma",
+    ] {
+        assert!(json.contains(key), "{key} missing from {json}");
+    }
+    assert!(Path::new(&dir.join("a").join("tiny.png")).is_file());
+    let diff = dir.join("diff.png");
+    let out = raylemma()
+        .arg("compare")
+        .arg(&a)
+        .arg(&b)
+        .arg("--diff")
+        .arg(&diff)
+        .output()
+        .unwrap();
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{report}");
+    assert!(report.contains("AGREE") && diff.is_file(), "{report}");
+    // A missing file is bad input: exit 2 and the path named.
+    let out = raylemma()
+        .arg("compare")
+        .arg(&a)
+        .arg(dir.join("nope.exr"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("nope.exr"));
+}
