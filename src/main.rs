@@ -11,7 +11,7 @@ use raylemma::render::{self, compare, image::Image};
 
 /// Regenerate raylemma's figures and build its book.
 ///
-/// With no subcommand: `figures`, then `book`.
+/// With no subcommand: `figures`, `references`, then `book`.
 #[derive(Parser, Debug)]
 #[command(name = "raylemma", version, about, long_about = None)]
 struct Cli {
@@ -30,6 +30,9 @@ enum Cmd {
         #[arg(long)]
         only: Option<String>,
     },
+    /// Render every canonical scene into figures/reference/ (EXR, PNG, JSON), with the
+    /// noise-level table and the cornell scene's RMSE against time.
+    References,
     /// Build the HTML book from chapters/ into book/ (mdBook as a library, math as MathML).
     Book,
     /// Render a scene file: SCENE.exr (linear sRGB and the variance of each pixel's mean),
@@ -80,6 +83,17 @@ fn run_figures(settings: &Settings, only: Option<&str>) -> Result<(), String> {
         written.len(),
         dir.display()
     );
+    Ok(())
+}
+
+fn run_references(settings: &Settings) -> Result<(), String> {
+    let dir = root().join("figures");
+    eprintln!(
+        "raylemma: rendering the reference images into {}",
+        dir.join("reference").display()
+    );
+    let written = figures::render::write_references(&dir, settings).map_err(|e| e.to_string())?;
+    eprintln!("raylemma: wrote {} files", written.len());
     Ok(())
 }
 
@@ -161,7 +175,10 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let settings = Settings { quick: cli.quick };
     let result = match &cli.command {
-        None => run_figures(&settings, None).and_then(|()| run_book()),
+        None => run_figures(&settings, None)
+            .and_then(|()| run_references(&settings))
+            .and_then(|()| run_book()),
+        Some(Cmd::References) => run_references(&settings),
         Some(Cmd::Figures { only }) => run_figures(&settings, only.as_deref()),
         Some(Cmd::Book) => run_book(),
         Some(Cmd::Render {

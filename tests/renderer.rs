@@ -2,8 +2,9 @@
 //! their exact pixel values, determinism whatever the number of threads, ray offsets (no
 //! acne, no leaks), the image files, and `compare` on agreeing and disagreeing renders.
 //!
-//! Statistical tests (7 of the suite's budget of 200): the white furnace under four
-//! wavelength strategies, the grey furnace's two regions, and one comparison of two seeds,
+//! Statistical tests (9 of the suite's budget of 200): the white furnace under four
+//! wavelength strategies, the grey furnace's two regions, one comparison of two seeds and
+//! two of wavelength strategies on a lamp,
 //! each at `raylemma::stats::test_alpha()`, split by Šidák over its pixels. Each has a
 //! planted-bug twin it must reject: lanes weighted by a pdf they were not drawn from in the
 //! white furnace, a reflectance 4 % too high in the grey one, a brighter scene for `compare`.
@@ -435,4 +436,60 @@ fn two_sided_critical_values_match_the_normal_table() {
     // Published values: P(|Z| > 1.959964) = 0.05, P(|Z| > 3.290527) = 0.001.
     assert!((two_sided_critical(0.05) - 1.959_964).abs() <= 1e-6);
     assert!((two_sided_critical(0.001) - 3.290_527).abs() <= 1e-6);
+}
+
+fn lamp_named(name: &str, strategy: Option<raylemma::render::WavelengthSampler>) -> Image {
+    let s = small(load(name), 24, 64);
+    match strategy {
+        None => render(&s, s.settings.spp, Progress::Silent),
+        Some(w) => render_with(&s, s.settings.spp, Progress::Silent, w),
+    }
+}
+
+fn lamp(strategy: Option<raylemma::render::WavelengthSampler>) -> Image {
+    lamp_named("lamps/high-pressure-sodium.toml", strategy)
+}
+
+fn total_variance(i: &Image) -> f64 {
+    i.var.iter().map(|v| v.element_sum()).sum()
+}
+
+#[test]
+fn emission_wavelengths_agree_with_hero_visible_and_cut_the_noise() {
+    let by_emission = lamp(None);
+    let by_visible = lamp(Some(&|u| Strategy::HeroVisible.sample(u)));
+    let c = compare(&by_emission, &by_visible, test_alpha()).unwrap();
+    assert!(
+        c.agree(),
+        "emission vs visible wavelengths:\n{}",
+        c.report()
+    );
+    let gain = total_variance(&by_visible) / total_variance(&by_emission);
+    assert!(
+        gain >= 1.3,
+        "high-pressure sodium: the emission strategy's variance is only {gain} times lower"
+    );
+    // On a line spectrum the gain is the point of the emission chapter.
+    let lps = "lamps/low-pressure-sodium.toml";
+    let gain = total_variance(&lamp_named(lps, Some(&|u| Strategy::HeroVisible.sample(u))))
+        / total_variance(&lamp_named(lps, None));
+    assert!(
+        gain >= 10.0,
+        "low-pressure sodium: the emission strategy's variance is only {gain} times lower"
+    );
+}
+
+#[test]
+fn emission_wavelengths_weighted_by_another_pdf_are_rejected() {
+    // Planted bug: lanes drawn from the lamp's colour proposal, weighted by the visible pdf.
+    let s = small(load("lamps/high-pressure-sodium.toml"), 24, 64);
+    let wavelengths = s.settings.wavelengths.clone();
+    let wrong = lamp(Some(&move |u| {
+        let mut w = wavelengths.sample(u);
+        w.pdf = w.lambda.map(raylemma::spectral::wavelength::visible_pdf);
+        w.hero_pdf = w.pdf[0];
+        w
+    }));
+    let c = compare(&lamp(None), &wrong, test_alpha()).unwrap();
+    assert!(!c.agree(), "a wrong weight passed:\n{}", c.report());
 }

@@ -449,3 +449,16 @@ fn render_then_compare_from_the_command_line() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("nope.exr"));
 }
+
+#[test]
+fn emission_wavelengths_need_one_tabulated_light_and_no_environment() {
+    let (text, line) = with("seed = 1", "wavelengths = \"emission\"");
+    let e = parse(&text).map(|_| ()).unwrap_err();
+    assert!(e.line == line && e.problem.contains("not a table"), "{e}");
+    let text = text.replace("emission = 10", "emission = { lamp = \"incandescent\" }");
+    assert!(parse(&text).is_ok());
+    let e = parse(&(text + "\n[environment]\nemission = 1\n"))
+        .map(|_| ())
+        .unwrap_err();
+    assert!(e.line == line && e.problem.contains("environment"), "{e}");
+}

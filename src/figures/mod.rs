@@ -12,6 +12,7 @@ pub mod frame;
 pub mod fresnel;
 pub mod lambert;
 pub mod reflect;
+pub mod render;
 pub mod roulette;
 pub mod sampling;
 pub mod shadow;

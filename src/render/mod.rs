@@ -96,8 +96,8 @@ pub enum Progress {
 /// Each pixel has its own generator ([`pixel_rng`]), so the result does not depend on the
 /// number of threads.
 pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
-    let strategy = scene.settings.wavelengths;
-    render_with(scene, spp, progress, &|u| strategy.sample(u))
+    let wavelengths = &scene.settings.wavelengths;
+    render_with(scene, spp, progress, &|u| wavelengths.sample(u))
 }
 // ANCHOR_END: render
 
@@ -273,10 +273,7 @@ pub fn render_file(
     let start = Instant::now();
     let image = render(&scene, scene.settings.spp, progress);
     let seconds = start.elapsed().as_secs_f64();
-    let name = scene::WAVELENGTH_STRATEGIES
-        .iter()
-        .find(|(_, s)| *s == scene.settings.wavelengths)
-        .map_or("?", |(n, _)| n);
+    let name = scene.settings.wavelengths.name();
     let sidecar = Sidecar {
         scene: path.display().to_string(),
         scene_hash: scene.hash,

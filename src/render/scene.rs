@@ -17,8 +17,9 @@ use toml::Spanned;
 use crate::data::DataError;
 use crate::geometry::sphere::Sphere;
 use crate::optics::dispersion::{self, Sellmeier};
+use crate::spectral::emission::{EmissionSampler, WavelengthSample, colour_proposal};
 use crate::spectral::spectrum::{self, Spectrum, Table};
-use crate::spectral::wavelength::Strategy;
+use crate::spectral::wavelength::{N, Strategy, Wavelengths, wrap01};
 use crate::spectral::{cie, emission};
 use crate::transport::shadow::{LightError, QuadLight, SphereLight};
 
@@ -58,15 +59,59 @@ pub struct CameraSpec {
     pub height: u32,
 }
 
+// ANCHOR: wavelength
+/// How a path's wavelengths are drawn.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Wavelength {
+    /// One of the wavelength chapter's strategies.
+    Strategy(Strategy),
+    /// Hero lanes from the colour proposal of the scene's one light (its spectrum times
+    /// `x̄ + ȳ + z̄`, *Importance-sampled emission spectra*), rotated in sample space: lane
+    /// `j` is `P⁻¹((u + j/N) mod 1)` and, alone, has the proposal's density, so each lane
+    /// is weighted by its own `p(λ_j)` as in `hero_visible`. Unbiased because no path
+    /// carries light at a wavelength where the one light emits nothing.
+    Emission(EmissionSampler),
+}
+
+impl Wavelength {
+    /// The wavelengths of one path for `u` in `[0, 1)`.
+    pub fn sample(&self, u: f64) -> Wavelengths {
+        match self {
+            Wavelength::Strategy(s) => s.sample(u),
+            Wavelength::Emission(sampler) => {
+                let lanes: [WavelengthSample; N] =
+                    std::array::from_fn(|j| sampler.sample(wrap01(u + j as f64 / N as f64)));
+                Wavelengths {
+                    lambda: lanes.map(|l| l.nm),
+                    pdf: lanes.map(|l| l.pdf),
+                    hero_pdf: lanes[0].pdf,
+                }
+            }
+        }
+    }
+
+    /// The name the scene file gives it.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Wavelength::Emission(_) => "emission",
+            Wavelength::Strategy(s) => WAVELENGTH_STRATEGIES
+                .iter()
+                .find(|(_, t)| t == s)
+                .map_or("other", |(n, _)| n),
+        }
+    }
+}
+// ANCHOR_END: wavelength
+
 /// How to render.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct RenderSettings {
     /// Samples per pixel, at least 1.
     pub spp: u32,
     /// The seed of every pixel's generator.
     pub seed: u64,
     /// How a path's wavelengths are drawn.
-    pub wavelengths: Strategy,
+    pub wavelengths: Wavelength,
     /// Russian roulette starts after this many bounces.
     pub roulette_depth: u32,
     /// A hard limit on the number of bounces (a safety net; with roulette, paths this long
@@ -539,15 +584,17 @@ impl Checker<'_> {
             None => 0,
         };
         let wavelengths = match &r.wavelengths {
-            None => Strategy::HeroVisible,
+            None => Wavelength::Strategy(Strategy::HeroVisible),
+            // Resolved once the lights are known.
+            Some(w) if w.get_ref() == "emission" => Wavelength::Strategy(Strategy::HeroVisible),
             Some(w) => match WAVELENGTH_STRATEGIES.iter().find(|(n, _)| n == w.get_ref()) {
-                Some((_, s)) => *s,
+                Some((_, s)) => Wavelength::Strategy(*s),
                 None => {
                     let names: Vec<&str> = WAVELENGTH_STRATEGIES.iter().map(|(n, _)| *n).collect();
                     return self.err(
                         w.span(),
                         format!(
-                            "unknown wavelength strategy {:?} (there are: {})",
+                            "unknown wavelength strategy {:?} (there are: {}, emission)",
                             w.get_ref(),
                             names.join(", ")
                         ),
@@ -875,6 +922,33 @@ impl Checker<'_> {
     }
 }
 
+impl Checker<'_> {
+    /// The emission strategy: needs one light with a tabulated spectrum and no environment.
+    fn emission_sampling(
+        &self,
+        span: std::ops::Range<usize>,
+        lights: &[Emitter],
+        environment: bool,
+    ) -> Result<Wavelength, DataError> {
+        let why = match (lights, environment) {
+            (_, true) => "an environment also emits",
+            ([one], false) => match &one.emission {
+                Spectrum::Table(t) => {
+                    return EmissionSampler::new(&colour_proposal(t))
+                        .map(Wavelength::Emission)
+                        .or_else(|e| self.err(span, format!("wavelengths = \"emission\": {e}")));
+                }
+                _ => "its light's spectrum is not a table (a file or a lamp)",
+            },
+            _ => "it needs exactly one light",
+        };
+        self.err(
+            span,
+            format!("wavelengths = \"emission\" cannot be used here: {why}"),
+        )
+    }
+}
+
 /// The largest value of a spectrum above 1, if any (a table's knots, a constant, a
 /// blackbody's peak).
 fn reflectance_above_one(s: &Spectrum) -> Option<f64> {
@@ -991,6 +1065,12 @@ pub fn parse(text: &str, file: &str, dir: &Path) -> Result<Scene, DataError> {
         }
         None => None,
     };
+    let mut settings = settings;
+    if let Some(w) = &raw.render.get_ref().wavelengths
+        && w.get_ref() == "emission"
+    {
+        settings.wavelengths = ck.emission_sampling(w.span(), &lights, environment.is_some())?;
+    }
     if shapes.is_empty() && lights.is_empty() {
         return Err(DataError::new(
             file,

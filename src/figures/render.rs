@@ -1,0 +1,289 @@
+//! The renderer chapter's reference images and speed-against-error measurements: every
+//! canonical scene rendered into `figures/reference/` (EXR with variance, PNG, JSON), a
+//! table of their noise levels, and the `cornell` scene's RMSE against time.
+//!
+//! Unlike the other figures these are not one file per function: a render makes three
+//! files, and the speed series needs the reference. The job still stages everything and
+//! moves it into place only when all of it succeeded.
+
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use super::Settings;
+use super::timing::machine;
+use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::render::image::Image;
+use crate::render::scene::{self, Scene};
+use crate::render::{self, Progress, Sidecar};
+use crate::spectral::display;
+
+/// The canonical scenes: the name of the reference files, and the scene file under
+/// `scenes/`.
+pub const SCENES: [(&str, &str); 11] = [
+    ("cornell", "cornell.toml"),
+    ("cornell-diffuse", "cornell-diffuse.toml"),
+    ("lamps-amber-led", "lamps/amber-led.toml"),
+    ("lamps-incandescent", "lamps/incandescent.toml"),
+    (
+        "lamps-cool-white-fluorescent",
+        "lamps/cool-white-fluorescent.toml",
+    ),
+    (
+        "lamps-low-pressure-sodium",
+        "lamps/low-pressure-sodium.toml",
+    ),
+    (
+        "lamps-high-pressure-sodium",
+        "lamps/high-pressure-sodium.toml",
+    ),
+    ("dispersion", "dispersion.toml"),
+    ("bubble", "bubble.toml"),
+    ("furnace", "furnace.toml"),
+    ("furnace-grey", "furnace-grey.toml"),
+];
+
+/// The samples per pixel of a reference: the scene file's in full mode, a 32nd of it (at
+/// least 4) in quick mode.
+pub fn reference_spp(scene: &Scene, settings: &Settings) -> u32 {
+    if settings.quick {
+        (scene.settings.spp / 32).max(4)
+    } else {
+        scene.settings.spp
+    }
+}
+
+/// The noise of an image: the RMS over pixels of the standard error of a pixel's
+/// luminance, and that divided by the mean luminance. The channels' errors are correlated
+/// (one path makes all three) and the image keeps no covariances, so a pixel's luminance
+/// error is bounded by the weighted sum of its channels' standard errors (exact when they
+/// are perfectly correlated): the levels quoted are upper bounds.
+pub fn noise_level(image: &Image) -> (f64, f64) {
+    let n = image.mean.len() as f64;
+    let se = |v: glam::DVec3| display::LUMA.dot(v.map(|x| x.max(0.0).sqrt()));
+    let rms = (image.var.iter().map(|&v| se(v).powi(2)).sum::<f64>() / n).sqrt();
+    let mean = image
+        .mean
+        .iter()
+        .map(|&m| display::luminance(m))
+        .sum::<f64>()
+        / n;
+    (rms, rms / mean)
+}
+
+/// The mean squared error of `image` against `reference`, less the reference's own mean
+/// variance (an unbiased estimate of the error against the exact image), per channel.
+pub fn mse_against(image: &Image, reference: &Image) -> f64 {
+    let n = 3.0 * image.mean.len() as f64;
+    let d2: f64 = image
+        .mean
+        .iter()
+        .zip(&reference.mean)
+        .map(|(a, b)| (*a - *b).length_squared())
+        .sum();
+    let v: f64 = reference.var.iter().map(|v| v.x + v.y + v.z).sum();
+    (d2 - v) / n
+}
+
+struct Rendered {
+    name: &'static str,
+    scene_file: &'static str,
+    image: Image,
+    sidecar: Sidecar,
+}
+
+fn scenes_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
+}
+
+fn render_one(
+    name: &'static str,
+    file: &'static str,
+    settings: &Settings,
+) -> Result<Rendered, BoxError> {
+    let path = scenes_dir().join(file);
+    let s = scene::load(&path)?;
+    let spp = reference_spp(&s, settings);
+    eprintln!(
+        "  {name}: {}x{}, {spp} spp",
+        s.camera.width, s.camera.height
+    );
+    let (_, image, mut sidecar) = render::render_file(&path, Some(spp), None, Progress::Bar)?;
+    sidecar.scene = format!("scenes/{file}");
+    Ok(Rendered {
+        name,
+        scene_file: file,
+        image,
+        sidecar,
+    })
+}
+
+/// The cornell scene at increasing sample counts: `(spp, seconds, RMSE)` against the
+/// reference (a different seed, so that the errors are independent).
+fn speed_series(reference: &Image, settings: &Settings) -> Result<Vec<(u32, f64, f64)>, BoxError> {
+    let mut s = scene::load(&scenes_dir().join("cornell.toml"))?;
+    s.settings.seed = 1_000_003;
+    let top = if settings.quick { 8 } else { 128 };
+    let mut out = Vec::new();
+    let mut spp = 1;
+    while spp <= top {
+        let start = Instant::now();
+        let image = render::render(&s, spp, Progress::Silent);
+        let seconds = start.elapsed().as_secs_f64();
+        out.push((spp, seconds, mse_against(&image, reference).max(0.0).sqrt()));
+        spp *= 2;
+    }
+    Ok(out)
+}
+
+fn references_md(rendered: &[Rendered]) -> String {
+    let mut md = String::from(
+        "| scene | file | size | spp | seconds | pixel samples / s | RMS standard error of a pixel's luminance | relative to the mean |\n|---|---|---|---:|---:|---:|---:|---:|\n",
+    );
+    for r in rendered {
+        let (rms, rel) = noise_level(&r.image);
+        let samples =
+            f64::from(r.image.width) * f64::from(r.image.height) * f64::from(r.sidecar.spp);
+        let _ = writeln!(
+            md,
+            "| {} | `scenes/{}` | {}x{} | {} | {:.1} | {:.3e} | {:.2e} | {:.2} % |",
+            r.name,
+            r.scene_file,
+            r.image.width,
+            r.image.height,
+            r.sidecar.spp,
+            r.sidecar.seconds,
+            samples / r.sidecar.seconds,
+            rms,
+            100.0 * rel
+        );
+    }
+    let _ = write!(
+        md,
+        "\n*Rendered by `cargo run --release` on {} ({} worker threads).*\n",
+        machine().replace(", single thread", ""),
+        rayon::current_num_threads()
+    );
+    md
+}
+
+fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered) -> String {
+    let pixels = f64::from(reference.image.width) * f64::from(reference.image.height);
+    let mut md = String::from(
+        "| spp | seconds | pixel samples / s | RMSE | RMSE² × seconds |\n|---:|---:|---:|---:|---:|\n",
+    );
+    for &(spp, s, e) in series {
+        let _ = writeln!(
+            md,
+            "| {spp} | {s:.3} | {:.3e} | {e:.3e} | {:.3e} |",
+            pixels * f64::from(spp) / s,
+            e * e * s
+        );
+    }
+    let _ = write!(
+        md,
+        "\n*`cornell`, 256x256, against the reference of {} spp (another seed; its own variance subtracted); {} worker threads on {}.*\n",
+        reference.sidecar.spp,
+        rayon::current_num_threads(),
+        machine().replace(", single thread", "")
+    );
+    md
+}
+
+fn speed_png(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
+    let measured = Series {
+        label: "raylemma, cornell 256x256".into(),
+        points: series.iter().map(|&(_, s, e)| (s, e)).collect(),
+    };
+    let (s0, e0) = (series[0].1, series[0].2);
+    let slope = Series {
+        label: "slope −1/2 (unbiased Monte Carlo)".into(),
+        points: series
+            .iter()
+            .map(|&(_, s, _)| (s, e0 * (s0 / s).sqrt()))
+            .collect(),
+    };
+    plot::line_chart_png(
+        &[Panel {
+            title: "RMSE against render time".into(),
+            x_label: "seconds".into(),
+            y_label: "RMSE (linear sRGB)".into(),
+            x_scale: Scale::Log,
+            y_scale: Scale::Log,
+            series: vec![measured, slope],
+        }],
+        640,
+        420,
+    )
+}
+
+/// The standard error of each pixel's luminance, as a grey image scaled so that the
+/// image's 99th percentile is white.
+fn stderr_png(image: &Image) -> Result<Vec<u8>, BoxError> {
+    let se: Vec<f64> = image
+        .var
+        .iter()
+        .map(|v| display::LUMA.dot(v.map(|x| x.max(0.0).sqrt())))
+        .collect();
+    let mut sorted = se.clone();
+    sorted.sort_by(f64::total_cmp);
+    let top = sorted[(sorted.len() * 99) / 100].max(1e-30);
+    let rgb: Vec<u8> = se
+        .iter()
+        .flat_map(|&s| [display::srgb8(s / top); 3])
+        .collect();
+    plot::encode_png(image.width, image.height, rgb)
+}
+
+/// Renders every canonical scene and the speed series, and moves the results into
+/// `figures/reference/` and `figures/` only when all succeeded.
+///
+/// # Errors
+/// The scene or file that failed; `figures/` is then unchanged.
+pub fn write_references(figures: &Path, settings: &Settings) -> Result<Vec<PathBuf>, BoxError> {
+    let mut rendered = Vec::new();
+    for (name, file) in SCENES {
+        rendered.push(render_one(name, file, settings)?);
+    }
+    eprintln!("  cornell: RMSE against time");
+    let series = speed_series(&rendered[0].image, settings)?;
+    let staging = figures.with_file_name(format!("figures.tmp-render-{}", std::process::id()));
+    let result = (|| -> Result<Vec<PathBuf>, BoxError> {
+        let refs = staging.join("reference");
+        fs::create_dir_all(&refs)?;
+        let mut moves = Vec::new();
+        for r in &rendered {
+            let files = render::write_outputs(&refs, r.name, &r.image, &r.sidecar)?;
+            for f in files {
+                let name = f.file_name().unwrap_or_default().to_owned();
+                moves.push((f, figures.join("reference").join(name)));
+            }
+        }
+        let flat: [(&str, Vec<u8>); 4] = [
+            (
+                "render_references.md",
+                references_md(&rendered).into_bytes(),
+            ),
+            (
+                "render_speed.md",
+                speed_md(&series, &rendered[0]).into_bytes(),
+            ),
+            ("render_error_time.png", speed_png(&series)?),
+            ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
+        ];
+        for (name, bytes) in flat {
+            let p = staging.join(name);
+            fs::write(&p, bytes)?;
+            moves.push((p, figures.join(name)));
+        }
+        fs::create_dir_all(figures.join("reference"))?;
+        for (from, to) in &moves {
+            fs::rename(from, to)
+                .map_err(|e| format!("cannot move {} to {}: {e}", from.display(), to.display()))?;
+        }
+        Ok(moves.into_iter().map(|(_, to)| to).collect())
+    })();
+    let _ = fs::remove_dir_all(&staging);
+    result
+}
