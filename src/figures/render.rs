@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::Settings;
-use super::timing::machine;
+use super::timing::{machine, quick_note};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
 use crate::render::image::Image;
 use crate::render::scene::{self, Scene};
@@ -137,7 +137,7 @@ fn speed_series(reference: &Image, settings: &Settings) -> Result<Vec<(u32, f64,
     Ok(out)
 }
 
-fn references_md(rendered: &[Rendered]) -> String {
+fn references_md(rendered: &[Rendered], settings: &Settings) -> String {
     let mut md = String::from(
         "| scene | file | size | spp | seconds | pixel samples / s | RMS standard error of a pixel's luminance | relative to the mean |\n|---|---|---|---:|---:|---:|---:|---:|\n",
     );
@@ -161,14 +161,15 @@ fn references_md(rendered: &[Rendered]) -> String {
     }
     let _ = write!(
         md,
-        "\n*Rendered by `cargo run --release` on {} ({} worker threads).*\n",
+        "\n*Rendered by `cargo run --release` on {} ({} worker threads){}.*\n",
         machine().replace(", single thread", ""),
-        rayon::current_num_threads()
+        rayon::current_num_threads(),
+        quick_note(settings.quick)
     );
     md
 }
 
-fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered) -> String {
+fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered, settings: &Settings) -> String {
     let pixels = f64::from(reference.image.width) * f64::from(reference.image.height);
     let mut md = String::from(
         "| spp | seconds | pixel samples / s | RMSE | RMSE² × seconds |\n|---:|---:|---:|---:|---:|\n",
@@ -183,10 +184,11 @@ fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered) -> String {
     }
     let _ = write!(
         md,
-        "\n*`cornell`, 256x256, against the reference of {} spp (another seed; its own variance subtracted); {} worker threads on {}.*\n",
+        "\n*`cornell`, 256x256, against the reference of {} spp (another seed; its own variance subtracted); {} worker threads on {}{}.*\n",
         reference.sidecar.spp,
         rayon::current_num_threads(),
-        machine().replace(", single thread", "")
+        machine().replace(", single thread", ""),
+        quick_note(settings.quick)
     );
     md
 }
@@ -263,11 +265,11 @@ pub fn write_references(figures: &Path, settings: &Settings) -> Result<Vec<PathB
         let flat: [(&str, Vec<u8>); 4] = [
             (
                 "render_references.md",
-                references_md(&rendered).into_bytes(),
+                references_md(&rendered, settings).into_bytes(),
             ),
             (
                 "render_speed.md",
-                speed_md(&series, &rendered[0]).into_bytes(),
+                speed_md(&series, &rendered[0], settings).into_bytes(),
             ),
             ("render_error_time.png", speed_png(&series)?),
             ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),

@@ -184,7 +184,7 @@ pub fn compare(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, String> {
                     beyond_95 += 1;
                 }
                 // NaN-safe: a NaN z (impossible after the checks above) would also fail.
-                if !(z.abs() <= z_critical) {
+                if z.abs() > z_critical || z.is_nan() {
                     failures.push((x, y, c, z));
                 }
             }
@@ -221,7 +221,7 @@ pub fn compare(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, String> {
     regions.sort_by(|p, q| q.z.abs().total_cmp(&p.z.abs()));
     let block_failure_count = regions
         .iter()
-        .filter(|r| !(r.z.abs() <= z_critical))
+        .filter(|r| r.z.abs() > z_critical || r.z.is_nan())
         .count();
     let m = pixel_tests as f64;
     Ok(Comparison {

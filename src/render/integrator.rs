@@ -171,6 +171,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
             break;
         };
         let i = match hit.surface {
+            // ANCHOR: hit_light
             Surface::Light(k) => {
                 if scene.emits_towards(k, d) {
                     let w = match bsdf_pdf {
@@ -187,10 +188,12 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                 }
                 break; // lights reflect nothing
             }
+            // ANCHOR_END: hit_light
             Surface::Shape(i) => i,
         };
         let (p, n) = scene.surface_point(i, o, d, hit.t);
         match &scene.materials[scene.shapes[i].material] {
+            // ANCHOR: lambert
             Material::Lambert { reflectance } => {
                 // Shade on the side the ray arrived from (two-sided).
                 let n = if n.dot(d) < 0.0 { n } else { -n };
@@ -232,11 +235,13 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                     beta[j] *= rho[j];
                 }
             }
+            // ANCHOR_END: lambert
             Material::Mirror => {
                 d = reflect(d, n);
                 o = offset_origin(p, n, d);
                 bsdf_pdf = None;
             }
+            // ANCHOR: dielectric
             Material::Dielectric { ior } => {
                 if matches!(ior, Ior::Sellmeier(_)) {
                     // The direction depends on the wavelength: only the hero can follow it.
@@ -254,6 +259,8 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                 o = offset_origin(p, n, d);
                 bsdf_pdf = None;
             }
+            // ANCHOR_END: dielectric
+            // ANCHOR: thin_film
             Material::ThinFilm { ior, thickness } => {
                 let film = Film::new(1.0, *ior, 1.0, thickness.at(p.y));
                 let cos1 = d.dot(n).abs().min(1.0);
@@ -281,8 +288,9 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                 }
                 o = offset_origin(p, n, d);
                 bsdf_pdf = None;
-            }
+            } // ANCHOR_END: thin_film
         }
+        // ANCHOR: roulette
         // Russian roulette on the largest live throughput.
         if depth + 1 >= s.roulette_depth {
             let q = (0..N)
@@ -290,7 +298,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                 .map(|j| beta[j])
                 .fold(0.0, f64::max)
                 .min(1.0);
-            if !(q > 0.0) {
+            if q.is_nan() || q <= 0.0 {
                 break;
             }
             let u = rng.random::<f64>();
@@ -301,6 +309,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                 break;
             }
         }
+        // ANCHOR_END: roulette
     }
     l
 }

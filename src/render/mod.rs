@@ -45,9 +45,9 @@ pub fn pixel_rng(seed: u64, index: u64) -> Rng {
 /// already known).
 pub fn sample_xyz(l: &integrator::Lanes, wl: &Wavelengths) -> DVec3 {
     let mut sum = DVec3::ZERO;
-    for j in 0..N {
-        if wl.pdf[j] > 0.0 {
-            sum += l[j] / wl.pdf[j] * cie::cmf(wl.lambda[j]);
+    for ((&lj, &pdf), &nm) in l.iter().zip(&wl.pdf).zip(&wl.lambda) {
+        if pdf > 0.0 {
+            sum += lj / pdf * cie::cmf(nm);
         }
     }
     sum / (N as f64 * cie::y_integral())

@@ -479,7 +479,7 @@ impl Checker<'_> {
         }
         let s = self.spectrum_kind(&raw, span.clone(), what)?;
         let y = cie::xyz(|nm| s.eval(nm)).y;
-        if !(y > 0.0) {
+        if y.is_nan() || y <= 0.0 {
             return self.err(
                 span,
                 format!(
@@ -980,9 +980,9 @@ pub fn parse(text: &str, file: &str, dir: &Path) -> Result<Scene, DataError> {
         text,
         dir: dir.to_path_buf(),
     };
-    let raw: RawScene = toml::from_str(text).or_else(|e: toml::de::Error| {
+    let raw: RawScene = toml::from_str(text).map_err(|e: toml::de::Error| {
         let line = e.span().map_or(0, |s| ck.line(s));
-        Err(DataError::new(file, line, e.message().to_string()))
+        DataError::new(file, line, e.message().to_string())
     })?;
     let settings = ck.render(&raw.render)?;
     let camera = ck.camera(&raw.camera)?;
