@@ -493,3 +493,11 @@ fn emission_wavelengths_weighted_by_another_pdf_are_rejected() {
     let c = compare(&lamp(None), &wrong, test_alpha()).unwrap();
     assert!(!c.agree(), "a wrong weight passed:\n{}", c.report());
 }
+
+#[test]
+fn sidecar_strings_are_valid_json() {
+    use raylemma::render::json_string;
+    assert_eq!(json_string("plain"), "\"plain\"");
+    assert_eq!(json_string("a\"b\\c\nd"), "\"a\\\"b\\\\c\\u000ad\"");
+    assert_eq!(json_string("λ"), "\"λ\"");
+}

@@ -264,7 +264,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
             Material::ThinFilm { ior, thickness } => {
                 let film = Film::new(1.0, *ior, 1.0, thickness.at(p.y));
                 let cos1 = d.dot(n).abs().min(1.0);
-                let live: Vec<usize> = (0..N).filter(|&j| wl.pdf[j] > 0.0).collect();
+                let live = wl.pdf.iter().filter(|&&p| p > 0.0).count();
                 let resp: [(f64, f64); N] = std::array::from_fn(|j| {
                     if wl.pdf[j] > 0.0 {
                         let r = film.response_cos(wl.lambda[j], cos1);
@@ -275,7 +275,8 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                 });
                 // Reflect with the lanes' mean reflectance P; each lane is weighted by its
                 // own R / P (or T / (1 - P)), which keeps every lane unbiased.
-                let p_r = live.iter().map(|&j| resp[j].0).sum::<f64>() / live.len() as f64;
+                // (Terminated lanes have R = 0 here, so the sum runs over the live ones.)
+                let p_r = resp.iter().map(|r| r.0).sum::<f64>() / live as f64;
                 if rng.random::<f64>() < p_r {
                     d = reflect(d, n);
                     for j in 0..N {

@@ -154,6 +154,21 @@ pub fn render_with(
     image
 }
 
+/// `s` as a JSON string literal: quotes, backslashes and control characters escaped.
+pub fn json_string(s: &str) -> String {
+    let mut out = String::from("\"");
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if u32::from(c) < 0x20 => out.push_str(&format!("\\u{:04x}", u32::from(c))),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
 /// What a render was, for its JSON sidecar.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sidecar {
@@ -178,15 +193,15 @@ impl Sidecar {
     pub fn to_json(&self, image: &Image) -> String {
         let samples = f64::from(image.width) * f64::from(image.height) * f64::from(self.spp);
         format!(
-            "{{\n  \"renderer\": \"raylemma {}\",\n  \"scene\": {:?},\n  \"scene_hash\": \"{:016x}\",\n  \"width\": {},\n  \"height\": {},\n  \"spp\": {},\n  \"seed\": {},\n  \"wavelengths\": {:?},\n  \"seconds\": {:.3},\n  \"threads\": {},\n  \"pixel_samples_per_second\": {:.0}\n}}\n",
+            "{{\n  \"renderer\": \"raylemma {}\",\n  \"scene\": {},\n  \"scene_hash\": \"{:016x}\",\n  \"width\": {},\n  \"height\": {},\n  \"spp\": {},\n  \"seed\": {},\n  \"wavelengths\": {},\n  \"seconds\": {:.3},\n  \"threads\": {},\n  \"pixel_samples_per_second\": {:.0}\n}}\n",
             env!("CARGO_PKG_VERSION"),
-            self.scene,
+            json_string(&self.scene),
             self.scene_hash,
             image.width,
             image.height,
             self.spp,
             self.seed,
-            self.wavelengths,
+            json_string(&self.wavelengths),
             self.seconds,
             self.threads,
             samples / self.seconds.max(1e-9)
