@@ -732,6 +732,9 @@ fn uniform_wavelength_estimate_rejects_the_seed_average() {
         "the seed's average passed: mean {} vs {exact}",
         s.mean
     );
+    // The factor the chapter quotes, ∫ȳ / 470 ≈ 0.23.
+    let factor = raylemma::spectral::cie::y_integral() / (830.0 - 360.0);
+    assert!((factor - 0.23).abs() <= 0.005, "∫ȳ / 470 = {factor}");
 }
 
 // ---------------------------------------------------------------------------------------
