@@ -47,11 +47,12 @@ for entry in "${map[@]}"; do
   file="$1"; shift
   name="$(echo "$file" | tr '/' '_')"
   [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $file: done before"; continue; }
-  tests=()
-  for t in "$@"; do tests+=(--test "$t"); done
+  # -C restricts the build as well as the run to the unit tests and these test files.
+  args=(-C --lib)
+  for t in "$@"; do args+=(-C "--test=$t"); done
   echo "== $file (tests: $*)"
-  cargo mutants --no-shuffle -f "$file" --shard "0/$n" --timeout 300 -o "$out/$name" \
-    -- --lib "${tests[@]}" || true
+  cargo mutants --no-shuffle -f "$file" --shard "0/$n" --baseline skip \
+    --timeout 300 --build-timeout 900 -o "$out/$name" "${args[@]}" || true
 done
 python3 "$here/summary.py" "$out" "$n" > "$root/figures/mutants.md"
 cat "$root/figures/mutants.md"
