@@ -36,6 +36,17 @@ fn r_equals_u_is_rejected() {
         disc_polar_invert,
     );
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+    // The report speaks in the disc's terms: r = u crowds the centre, so the worst cell is
+    // the innermost ring, with more samples than the pdf predicts.
+    let report = v.to_string();
+    let worst = report
+        .lines()
+        .find(|l| l.contains("r^2 in ["))
+        .unwrap_or_default();
+    assert!(
+        worst.contains("r^2 in [0.000,") && worst.contains(" sd)") && worst.contains('+'),
+        "{report}"
+    );
 }
 
 #[test]

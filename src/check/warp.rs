@@ -201,6 +201,80 @@ fn cell_of(domain: Domain, p: DVec3, rows: usize, cols: usize) -> usize {
 }
 // ANCHOR_END: cells
 
+/// Cell `index` of `(rows, cols)` in the domain's own coordinates, for messages: the
+/// interval `x`, the square's `x, y`, the disc's `r^2` (and `r`) and azimuth, the sphere's
+/// `z = cos(theta)` (and `theta`) and azimuth.
+fn describe_cell(domain: Domain, index: usize, rows: usize, cols: usize) -> String {
+    let (i, j) = (index / cols, index % cols);
+    let span = |k: usize, n: usize| (k as f64 / n as f64, (k + 1) as f64 / n as f64);
+    let (a0, a1) = span(i, rows);
+    let (b0, b1) = span(j, cols);
+    let phi = format!("phi in [{:.0}, {:.0}] deg", 360.0 * b0, 360.0 * b1);
+    match domain {
+        Domain::Interval { lo, hi } => {
+            format!(
+                "x in [{:.4}, {:.4}]",
+                lo + a0 * (hi - lo),
+                lo + a1 * (hi - lo)
+            )
+        }
+        Domain::Square => format!("u1 in [{b0:.3}, {b1:.3}], u2 in [{a0:.3}, {a1:.3}]"),
+        Domain::Disc => format!(
+            "r^2 in [{a0:.3}, {a1:.3}] (r in [{:.3}, {:.3}]), {phi}",
+            a0.sqrt(),
+            a1.sqrt()
+        ),
+        Domain::Sphere => {
+            let (z0, z1) = (2.0 * a0 - 1.0, 2.0 * a1 - 1.0);
+            format!(
+                "z = cos(theta) in [{z0:.3}, {z1:.3}] (theta in [{:.1}, {:.1}] deg), {phi}",
+                z1.clamp(-1.0, 1.0).acos().to_degrees(),
+                z0.clamp(-1.0, 1.0).acos().to_degrees()
+            )
+        }
+    }
+}
+
+/// The `k` cells whose counts are furthest from the pdf's prediction, in standard
+/// deviations `(observed - expected) / sqrt(expected)`, described in the domain's terms.
+fn worst_cells(
+    domain: Domain,
+    observed: &[u64],
+    expected: &[f64],
+    cols: usize,
+    k: usize,
+) -> String {
+    let rows = observed.len() / cols;
+    let mut cells: Vec<(usize, f64)> = expected
+        .iter()
+        .zip(observed)
+        .enumerate()
+        .map(|(i, (&e, &o))| {
+            let z = if e > 0.0 {
+                (o as f64 - e) / e.sqrt()
+            } else if o > 0 {
+                f64::INFINITY
+            } else {
+                0.0
+            };
+            (i, z)
+        })
+        .collect();
+    cells.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
+    cells
+        .iter()
+        .take(k)
+        .map(|&(i, z)| {
+            let (o, e) = (observed[i], expected[i]);
+            format!(
+                "\n      {}: {o} samples where the pdf predicts {e:.1} ({:.2}x, {z:+.1} sd)",
+                describe_cell(domain, i, rows, cols),
+                o as f64 / e
+            )
+        })
+        .collect()
+}
+
 /// Azimuth scaled to `[0, 1)`.
 fn phi01(x: f64, y: f64) -> f64 {
     let phi = y.atan2(x);
@@ -419,9 +493,13 @@ fn chi_squared_finding(warp: &dyn Warp, options: &Options) -> Finding {
                 let images = write_failure_images(warp, options, &observed, &expected)
                     .map(|dir| format!("; images in {}", dir.display()))
                     .unwrap_or_default();
+                let (_, cols) = grid(warp.domain(), options.resolution);
                 format!(
-                    "chi^2 = {:.1} with {} degrees of freedom, p = {:.3e}{images}",
-                    result.statistic, result.dof, result.p_value
+                    "chi^2 = {:.1} with {} degrees of freedom, p = {:.3e}; the cells furthest from the pdf:{}{images}",
+                    result.statistic,
+                    result.dof,
+                    result.p_value,
+                    worst_cells(warp.domain(), &observed, &expected, cols, 3)
                 )
             });
         }
@@ -516,7 +594,10 @@ pub fn check(warp: &dyn Warp, options: &Options) -> Verdict {
 }
 
 /// Writes `observed`, `expected` and `difference` PNGs (one pixel block per cell) into
-/// `target/warp-failures/<name>/` and returns that directory.
+/// `warp-failures/<name>/` of the target directory (`CARGO_TARGET_DIR` if set, else the
+/// project's `target/`) and returns that directory. Rows are the cells' first coordinate
+/// (the interval's `x`, the square's `u2`, the disc's `r^2`, the sphere's `z`), increasing
+/// upwards; columns the second (the square's `u1`, the azimuth), increasing to the right.
 fn write_failure_images(
     warp: &dyn Warp,
     options: &Options,
@@ -529,10 +610,11 @@ fn write_failure_images(
         .chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .collect();
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("target")
-        .join("warp-failures")
-        .join(safe);
+    let target = std::env::var_os("CARGO_TARGET_DIR").map_or_else(
+        || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"),
+        PathBuf::from,
+    );
+    let dir = target.join("warp-failures").join(safe);
     std::fs::create_dir_all(&dir).ok()?;
     let max = expected
         .iter()

@@ -263,7 +263,12 @@ pub fn wilson(k: u32, n: u32) -> (f64, f64) {
 /// The brightening of the planted twin: every tabulated reflectance 3 % higher.
 pub const CALIBRATION_BIAS: f64 = 0.03;
 
-fn calibrate(scene: &'static str, side: u32, spp: u32, pairs: u32) -> Result<Calibration, BoxError> {
+fn calibrate(
+    scene: &'static str,
+    side: u32,
+    spp: u32,
+    pairs: u32,
+) -> Result<Calibration, BoxError> {
     use crate::render::compare::compare;
     use crate::render::scene::Material;
     use crate::spectral::spectrum::Spectrum;
@@ -272,7 +277,10 @@ fn calibrate(scene: &'static str, side: u32, spp: u32, pairs: u32) -> Result<Cal
     s.camera.height = side;
     let mut bright = s.clone();
     for m in &mut bright.materials {
-        if let Material::Lambert { reflectance: Spectrum::Table(t) } = m {
+        if let Material::Lambert {
+            reflectance: Spectrum::Table(t),
+        } = m
+        {
             *t = t.scaled(1.0 + CALIBRATION_BIAS);
         }
     }
@@ -292,7 +300,15 @@ fn calibrate(scene: &'static str, side: u32, spp: u32, pairs: u32) -> Result<Cal
         false_alarms += u32::from(!same.agree());
         detected += u32::from(!compare(&ia, &ic, 0.01)?.agree());
     }
-    Ok(Calibration { scene, side, spp, pairs, false_alarms, detected, mean_z2: z2 / f64::from(pairs) })
+    Ok(Calibration {
+        scene,
+        side,
+        spp,
+        pairs,
+        false_alarms,
+        detected,
+        mean_z2: z2 / f64::from(pairs),
+    })
 }
 
 fn calibration_md(settings: &Settings) -> Result<String, BoxError> {
@@ -360,7 +376,10 @@ pub fn write_references(figures: &Path, settings: &Settings) -> Result<Vec<PathB
             }
         }
         let flat: [(&str, Vec<u8>); 5] = [
-            ("render_compare_calibration.md", calibration_md(settings)?.into_bytes()),
+            (
+                "render_compare_calibration.md",
+                calibration_md(settings)?.into_bytes(),
+            ),
             (
                 "render_references.md",
                 references_md(&rendered, settings).into_bytes(),
