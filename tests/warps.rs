@@ -148,8 +148,24 @@ fn writes_images_on_failure() {
     );
     let message = chi2_message(&v);
     assert!(message.contains("images in"), "{message}");
-    let dir =
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/warp-failures/images_demo");
+    // The folder the message names: under CARGO_TARGET_DIR if set, else target/.
+    let named = message
+        .rsplit("images in ")
+        .next()
+        .unwrap_or_default()
+        .trim();
+    let dir = std::path::Path::new(named);
+    assert!(dir.ends_with("warp-failures/images_demo"), "{message}");
+    let expected = std::env::var_os("CARGO_TARGET_DIR").map_or_else(
+        || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
+        std::path::PathBuf::from,
+    );
+    assert!(
+        dir.starts_with(&expected),
+        "{} is not under {}",
+        dir.display(),
+        expected.display()
+    );
     for f in ["observed.png", "expected.png", "difference.png"] {
         assert!(dir.join(f).is_file(), "{f} missing");
     }

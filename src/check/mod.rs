@@ -30,6 +30,11 @@ pub struct Finding {
     pub worst: Option<(f64, f64)>,
     /// The first counterexample, described so a student can reproduce it.
     pub example: Option<String>,
+    /// For a quantitative claim, the counterexample with the largest error (when it is not
+    /// the first): the case that shows best how far off an implementation is.
+    pub worst_example: Option<String>,
+    /// The error of `worst_example`.
+    worst_failure: f64,
 }
 
 impl Finding {
@@ -42,6 +47,8 @@ impl Finding {
             failures: 0,
             worst: None,
             example: None,
+            worst_example: None,
+            worst_failure: f64::NEG_INFINITY,
         }
     }
 
@@ -65,7 +72,26 @@ impl Finding {
             None => error,
         };
         self.worst = Some((worst, bound));
-        self.record(error <= bound, describe);
+        if error <= bound {
+            self.record(true, describe);
+            return;
+        }
+        // A failure: describe it once, as the first and/or the worst counterexample.
+        let first = self.example.is_none();
+        let new_worst = !first
+            && (error > self.worst_failure || error.is_nan())
+            && !self.worst_failure.is_nan();
+        if first || new_worst {
+            let text = describe();
+            if first {
+                self.example = Some(text);
+            } else {
+                self.worst_example = Some(text);
+            }
+            self.worst_failure = error;
+        }
+        self.cases += 1;
+        self.failures += 1;
     }
 
     /// A claim passes when it was tried at least once and never violated: a check that
@@ -140,6 +166,9 @@ impl fmt::Display for Verdict {
             if let Some(example) = &f.example {
                 writeln!(out, "         first failure: {example}")?;
             }
+            if let Some(example) = &f.worst_example {
+                writeln!(out, "         worst failure: {example}")?;
+            }
         }
         Ok(())
     }
@@ -188,6 +217,29 @@ mod tests {
         assert!(!f.passed());
         assert!(f.worst.is_some_and(|(w, _)| w.is_nan()));
         assert_eq!(f.example.as_deref(), Some("nan"));
+    }
+
+    #[test]
+    fn the_worst_failure_is_kept_beside_the_first() {
+        let mut f = Finding::new("x", "claim");
+        for (e, what) in [
+            (3.0, "first"),
+            (9.0, "worst"),
+            (5.0, "middle"),
+            (0.5, "fine"),
+        ] {
+            f.measure(e, 2.0, || what.into());
+        }
+        assert_eq!((f.cases, f.failures), (4, 3));
+        assert_eq!(f.example.as_deref(), Some("first"));
+        assert_eq!(f.worst_example.as_deref(), Some("worst"));
+        let mut v = Verdict::new("demo");
+        v.findings.push(f);
+        assert!(v.to_string().contains("worst failure: worst"), "{v}");
+        // One failure: no separate worst case.
+        let mut g = Finding::new("y", "claim");
+        g.measure(3.0, 2.0, || "only".into());
+        assert!(g.worst_example.is_none());
     }
 
     #[test]

@@ -441,16 +441,18 @@ pub mod check {
         let mut tir = Finding::new("tir", "R = 1 past the critical angle");
         let mut energy = Finding::new(
             "energy",
-            "R + T = 1, T from the transmission amplitudes, within 64 eps (1 + 1/min(cos_i, cos_t))",
+            "R + T = 1, T from the transmission amplitudes, within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
         );
         let mut reciprocity = Finding::new(
             "reciprocity",
-            "R(cos_i; n1 -> n2) = R(cos_t; n2 -> n1), within 64 eps (1 + 1/min(cos_i, cos_t))",
+            "R(cos_i; n1 -> n2) = R(cos_t; n2 -> n1), within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
         );
         for &(n1, n2) in &PAIRS {
             for &cos_i in &sweep_cosines() {
                 let r = f(cos_i, n1, n2);
-                let show = || format!("f({cos_i:e}, {n1}, {n2}) = {r:e}");
+                let angle = cos_i.abs().min(1.0).acos().to_degrees();
+                let show =
+                    || format!("f({cos_i:e}, {n1}, {n2}) = {r:e} (theta_i = {angle:.3} deg)");
                 range.record(r.is_finite() && (0.0..=1.0).contains(&r), show);
                 let c = cos_i.abs();
                 if c >= 1.0 {
@@ -465,13 +467,27 @@ pub mod check {
                     grazing.measure((r - 1.0).abs(), VALUE_BOUND, show);
                 }
                 match independent_transmittance(cos_i, n1, n2) {
-                    None => tir.measure((r - 1.0).abs(), VALUE_BOUND, show),
+                    None => tir.measure((r - 1.0).abs(), VALUE_BOUND, || {
+                        let critical = (n2 / n1).asin().to_degrees();
+                        format!(
+                            "{}: past the critical angle {critical:.3} deg from {n1} into {n2}, R must be 1",
+                            show()
+                        )
+                    }),
                     // Subnormal cosines would overflow the beam factor: skip them here.
                     Some((cos_t, t)) if c > 1e-100 && cos_t > 0.0 => {
                         let unit = f64::EPSILON * (1.0 + 1.0 / c.min(cos_t));
-                        energy.measure((r + t - 1.0).abs() / unit, BALANCE_BOUND, show);
+                        energy.measure((r + t - 1.0).abs() / unit, BALANCE_BOUND, || {
+                            format!("{}: R = {r:.6e}, T = {t:.6e}, R + T - 1 = {:.3e}", show(), r + t - 1.0)
+                        });
                         let back = f(cos_t, n2, n1);
-                        reciprocity.measure((r - back).abs() / unit, BALANCE_BOUND, show);
+                        reciprocity.measure((r - back).abs() / unit, BALANCE_BOUND, || {
+                            format!(
+                                "{}, but from the other side f({cos_t:e}, {n2}, {n1}) = {back:e} (theta_t = {:.3} deg)",
+                                show(),
+                                cos_t.acos().to_degrees()
+                            )
+                        });
                     }
                     Some(_) => {}
                 }
