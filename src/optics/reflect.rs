@@ -254,8 +254,17 @@ pub mod check {
             let show = || format!("w_i = {:?}, n = {:?} gave w_o = {w_o:?}", c.w_i, c.n);
             finite_.record(finite(w_o), show);
             let cos_i = -c.w_i.dot(c.m);
-            unit.measure((w_o.length() - 1.0).abs() / EPS, UNIT_BOUND, show);
-            angles.measure((w_o.dot(c.m) - cos_i).abs() / EPS, ANGLE_BOUND, show);
+            unit.measure((w_o.length() - 1.0).abs() / EPS, UNIT_BOUND, || {
+                format!("{}: |w_o| = {:.17}", show(), w_o.length())
+            });
+            angles.measure((w_o.dot(c.m) - cos_i).abs() / EPS, ANGLE_BOUND, || {
+                format!(
+                    "{}: w_o.m = {:.12} but cos_i = {:.12} (the mirror keeps the angle to the normal)",
+                    show(),
+                    w_o.dot(c.m),
+                    cos_i
+                )
+            });
             plane.measure(off_plane(w_o, c.w_i, c.m) / EPS, ANGLE_BOUND, show);
             let other = f(c.w_i, -c.n);
             side.measure((other - w_o).length() / EPS, ANGLE_BOUND, show);
@@ -326,21 +335,43 @@ pub mod check {
                 continue;
             };
             finite_.record(finite(w_t), show);
-            unit.measure((w_t.length() - 1.0).abs() / EPS, UNIT_BOUND, show);
-            let snell_error = (n1 * sin_i - n2 * sine(w_t, c.m)).abs() / n1.max(n2);
-            snell.measure(snell_error / EPS, ANGLE_BOUND, show);
+            unit.measure((w_t.length() - 1.0).abs() / EPS, UNIT_BOUND, || {
+                format!("{}: |w_t| = {:.17}", show(), w_t.length())
+            });
+            let sin_t = sine(w_t, c.m);
+            let snell_error = (n1 * sin_i - n2 * sin_t).abs() / n1.max(n2);
+            snell.measure(snell_error / EPS, ANGLE_BOUND, || {
+                format!(
+                    "{}: n1 sin_i = {:.12}, n2 sin_t = {:.12} (Snell wants them equal; sin_t should be {:.12})",
+                    show(),
+                    n1 * sin_i,
+                    n2 * sin_t,
+                    n1 * sin_i / n2
+                )
+            });
             far.record(w_t.dot(c.m) <= ANGLE_BOUND * EPS, show);
             plane.measure(off_plane(w_t, c.w_i, c.m) / EPS, ANGLE_BOUND, show);
             if n1 == n2 {
-                matched.measure((w_t - c.w_i).length() / EPS, ANGLE_BOUND, show);
+                matched.measure((w_t - c.w_i).length() / EPS, ANGLE_BOUND, || {
+                    format!("{}: expected w_i itself", show())
+                });
             }
             // The round trip is ill-conditioned at grazing incidence: skip cos_i < 1e-6.
             if cos_i >= 1e-6 {
-                let error = match f(-w_t, c.n, n2, n1) {
+                let back = f(-w_t, c.n, n2, n1);
+                let error = match back {
                     Refraction::Transmitted(back) => (back + c.w_i).length() * cos_i / EPS,
                     Refraction::TotalInternalReflection => f64::INFINITY,
                 };
-                reverse.measure(error, REVERSE_BOUND, show);
+                reverse.measure(error, REVERSE_BOUND, || match back {
+                    Refraction::TotalInternalReflection => format!(
+                        "{}: sending -w_t back from {n2} into {n1} gave total internal reflection (infinite error); light retraces its path",
+                        show()
+                    ),
+                    Refraction::Transmitted(b) => {
+                        format!("{}: sending -w_t back gave {b:?}, expected -w_i = {:?}", show(), -c.w_i)
+                    }
+                });
             }
         }
         let mut verdict = Verdict::new("refraction");
