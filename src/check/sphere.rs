@@ -219,7 +219,18 @@ fn nearest_root<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize)
         let case = Case::<R>::new(origin, dir, center, radius);
         let got = f.intersect(&case.ray, &case.sphere, R::lit(t_min));
         let want = expected.map(|s| t_c + s * w);
-        let describe = || case.describe(t_min, got, &format!("{want:?}"));
+        let which = [
+            "origin outside, sphere ahead: the entry (near root) is the answer",
+            "origin inside: the exit (far root) is the answer",
+            "t_min between the roots: the far root is the answer",
+            "sphere behind the origin: no hit",
+        ][i % 4];
+        let describe = || {
+            format!(
+                "{which}; {}",
+                case.describe(t_min, got, &format!("{want:?}"))
+            )
+        };
         match (got, want) {
             (None, None) => finding.record(true, describe),
             (Some(t), Some(t_star)) => {
