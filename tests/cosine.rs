@@ -96,7 +96,7 @@ fn grazing_samples_keep_a_positive_pdf() {
                 let weight = w.z / cosine_pdf(w);
                 assert!(
                     (weight - 1.0 / FRAC_1_PI).abs() <= 1e-9,
-                    "{name}: cos/pdf = {weight}"
+                    "{name}: cos(theta) / pdf = {weight} at {w:?}; with pdf = cos(theta)/pi it must be pi"
                 );
             }
         }

@@ -399,9 +399,15 @@ fn reflectance_is_the_same_from_both_sides() {
                 fresnel_dielectric(cos_o, 1.0, n),
                 fresnel_dielectric(cos_in, n, 1.0),
             );
-            assert!((a - b).abs() <= 64.0 * unit, "{n} {k}");
+            assert!(
+                (a - b).abs() <= 64.0 * unit,
+                "exact Fresnel: R = {a} entering index {n} at {k} deg, but {b} leaving it at the matching angle"
+            );
             let (a, b) = (schlick(cos_o, 1.0, n), schlick(cos_in, n, 1.0));
-            assert!((a - b).abs() <= 64.0 * unit, "{n} {k}");
+            assert!(
+                (a - b).abs() <= 64.0 * unit,
+                "Schlick: R = {a} entering index {n} at {k} deg, but {b} leaving it at the matching angle"
+            );
         }
     }
 }

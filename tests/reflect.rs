@@ -98,7 +98,10 @@ fn seed_refraction_components_are_right() {
             let perp_i = w_i - w_i.dot(n) * n;
             let perp_t = n1 / n2 * perp_i;
             let seed = perp_t - (1.0 - perp_t.length_squared()).sqrt() * n;
-            assert!((seed - w_t).length() < 8.0 * EPS, "{n1} {n2} {degrees}");
+            assert!(
+                (seed - w_t).length() < 8.0 * EPS,
+                "{n1} -> {n2} at {degrees} deg: w_t = {w_t:?}, the seed's perpendicular/parallel split gives {seed:?}"
+            );
         }
     }
 }
@@ -197,7 +200,7 @@ fn snell_law_on_constructed_angles() {
             let w_t = transmitted(result);
             assert!(
                 (w_t - expected).length() < 8.0 * EPS,
-                "{n1}->{n2} {degrees}"
+                "{n1} -> {n2} at {degrees} deg: w_t = {w_t:?}, Snell's angle asin({sin_t}) gives {expected:?}"
             );
         }
     }
@@ -276,7 +279,11 @@ fn refraction_is_reversible() {
                 continue;
             };
             let back = transmitted(refract(-w_t, n, n2, n1));
-            assert!((back + w_i).length() < 16.0 * EPS, "{n1}->{n2} {degrees}");
+            assert!(
+                (back + w_i).length() < 16.0 * EPS,
+                "{n1} -> {n2} at {degrees} deg: refracting -w_t back gave {back:?}, expected -w_i = {:?}",
+                -w_i
+            );
         }
     }
 }
