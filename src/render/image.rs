@@ -75,22 +75,9 @@ impl Welford {
 }
 // ANCHOR_END: welford
 
-/// What went wrong reading or writing an image file.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ImageError {
-    /// The file.
-    pub path: PathBuf,
-    /// The problem.
-    pub problem: String,
-}
-
-impl std::fmt::Display for ImageError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.path.display(), self.problem)
-    }
-}
-
-impl std::error::Error for ImageError {}
+/// What went wrong reading or writing an image file: the path and the reason. The display
+/// chapter's PNG error serves every image file (it says no more than that).
+pub type ImageError = display::PngError;
 
 /// A temporary name beside `path`, so that a file is written whole and renamed into place.
 pub fn temporary_beside(path: &Path) -> PathBuf {

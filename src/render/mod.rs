@@ -243,12 +243,7 @@ pub fn write_outputs(
     };
     let written = image
         .write_exr(&staged[0])
-        .and_then(|()| {
-            image.write_png(&staged[1], 0.0).map_err(|e| ImageError {
-                path: e.path,
-                problem: e.problem,
-            })
-        })
+        .and_then(|()| image.write_png(&staged[1], 0.0))
         .and_then(|()| {
             std::fs::write(&staged[2], sidecar.to_json(image)).map_err(|e| ImageError {
                 path: staged[2].clone(),
