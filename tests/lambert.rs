@@ -96,6 +96,24 @@ fn reciprocity() {
     }
 }
 
+#[test]
+fn the_brdf_is_zero_unless_both_directions_are_above_the_surface() {
+    // (Found by mutation testing: `&&` replaced by `||` passed every other test, since the
+    // albedo quadrature and the estimators only ever ask for directions above the surface.)
+    let (up, down) = (
+        DVec3::new(0.3, 0.1, 0.9).normalize(),
+        DVec3::new(0.2, -0.4, -0.8).normalize(),
+    );
+    assert_eq!(lambert_brdf(RHO, up, up), RHO / PI);
+    for (wi, wo) in [(up, down), (down, up), (down, down)] {
+        assert_eq!(
+            lambert_brdf(RHO, wi, wo),
+            0.0,
+            "f({wi}, {wo}) must be 0: light cannot cross the surface"
+        );
+    }
+}
+
 /// The hand-derived exact answers of both environments agree with quadrature.
 #[test]
 fn environments_exact_answers_match_quadrature() {

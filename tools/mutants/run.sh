@@ -2,10 +2,11 @@
 # Mutation testing of the derivation modules (sampling, optics, spectral, transport) with
 # cargo-mutants: does some test fail when the code is changed?
 #
-#   tools/mutants/run.sh [N]      (default N = 40)
+#   tools/mutants/run.sh [N [SHARD...]]      (default N = 40, SHARD = 0)
 #
-# Every source file is mutated with cargo-mutants' systematic sample `--shard 0/N` (every
-# N-th mutant of the file, about 1/N of all), and each mutant is tested with the file's own
+# Every source file is mutated with cargo-mutants' systematic samples `--shard K/N` for each
+# SHARD K (every N-th mutant of the file, starting at the K-th: about 1/N of all per shard),
+# and each mutant is tested with the file's own
 # chapter tests plus the library's unit tests (`cargo test --lib --test CHAPTER`), not the
 # whole suite: that is what a student sees, and it keeps one mutant under a minute on 2
 # cores. The full run (N = 1) is some 3600 mutants, days on this machine. The summary,
@@ -15,6 +16,9 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 n="${1:-40}"
+shift || true
+shards=("${@:-0}")
+[ "${#shards[@]}" -gt 0 ] || shards=(0)
 out="${OUT:-/tmp/raylemma-mutants}"
 command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
 mkdir -p "$out"
@@ -42,17 +46,19 @@ map=(
   "src/transport/shadow.rs shadow"
 )
 cd "$root"
+for shard in "${shards[@]}"; do
 for entry in "${map[@]}"; do
   set -- $entry
   file="$1"; shift
-  name="$(echo "$file" | tr '/' '_')"
-  [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $file: done before"; continue; }
+  name="$(echo "$file" | tr '/' '_').s$shard"
+  [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $file shard $shard: done before"; continue; }
   # -C restricts the build as well as the run to the unit tests and these test files.
   args=(-C --lib)
   for t in "$@"; do args+=(-C "--test=$t"); done
-  echo "== $file (tests: $*)"
-  cargo mutants --no-shuffle -f "$file" --shard "0/$n" --baseline skip \
+  echo "== $file shard $shard/$n (tests: $*)"
+  cargo mutants --no-shuffle -f "$file" --shard "$shard/$n" --baseline skip \
     --timeout 300 --build-timeout 900 -o "$out/$name" "${args[@]}" || true
+done
 done
 python3 "$here/summary.py" "$out" "$n" > "$root/figures/mutants.md"
 cat "$root/figures/mutants.md"

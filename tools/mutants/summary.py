@@ -46,7 +46,8 @@ viable = caught + miss + to
 lo, hi = wilson(caught + to, viable)
 print(f"| **all four** | {viable} | {caught} | {miss} | {to} | {tot['Unviable']} | {100*(caught+to)/max(viable,1):.0f} % | {100*lo:.0f}–{100*hi:.0f} % |")
 print()
-print(f"*cargo-mutants, every {n}-th mutant of each file (`--shard 0/{n}`), each tested with its chapter's test file and the unit tests; a timeout counts as caught (the mutant made a test loop). Regenerate with `tools/mutants/run.sh {n}`.*")
+shards = sorted({d.rsplit(".s", 1)[1] for d in os.listdir(out) if ".s" in d}, key=int) or ["0"]
+print(f"*cargo-mutants, {len(shards)} of every {n} mutants of each file (`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's test file and the unit tests; a timeout counts as caught (the mutant made a test loop). Regenerate with `tools/mutants/run.sh {n} {' '.join(shards)}`.*")
 print()
 if missed:
     print("Surviving mutants:")
