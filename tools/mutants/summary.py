@@ -20,7 +20,7 @@ for d in sorted(os.listdir(out)):
         groups[group][summary] += 1
         if summary == "MissedMutant":
             line = m.get("span", {}).get("start", {}).get("line", "?")
-            missed.append(f"`{file}:{line}`: {m.get('name') or m.get('replacement', '')}")
+            missed.append(m.get("name") or f"{file}:{line}: {m.get('replacement', '')}")
 
 def wilson(k, t, z=1.96):
     if t == 0:
@@ -53,4 +53,4 @@ if missed:
     print("Surviving mutants:")
     print()
     for m in missed:
-        print(f"- {m}")
+        print(f"- `{m}`")
