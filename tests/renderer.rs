@@ -60,6 +60,20 @@ struct Fit {
     pixels: usize,
 }
 
+impl Fit {
+    /// Passes when no block and not the overall mean is beyond the critical value.
+    #[track_caller]
+    fn assert_exact(&self, what: &str) {
+        assert!(
+            self.worst <= self.critical && self.mean_z <= self.critical,
+            "{what}: worst block |z| = {}, overall mean |z| = {}, critical {}",
+            self.worst,
+            self.mean_z,
+            self.critical
+        );
+    }
+}
+
 fn fit(image: &Image, which: impl Fn(u32, u32) -> bool, expected: DVec3) -> Fit {
     const B: u32 = 8;
     let bw = image.width.div_ceil(B);
@@ -103,28 +117,14 @@ fn white_furnace(sampler: raylemma::render::WavelengthSampler) -> Fit {
 fn white_furnace_is_exact_within_noise() {
     let f = white_furnace(&|u| Strategy::HeroVisible.sample(u));
     assert_eq!(f.pixels, 48 * 48);
-    assert!(
-        f.worst <= f.critical && f.mean_z <= f.critical,
-        "white furnace: worst pixel |z| = {}, image mean |z| = {}, critical {}",
-        f.worst,
-        f.mean_z,
-        f.critical
-    );
+    f.assert_exact("white furnace");
 }
 
 #[test]
 fn white_furnace_accepts_every_unbiased_wavelength_strategy() {
     // The one-wavelength, uniform and balance-heuristic strategies, through the same test.
     for strategy in [Strategy::Uniform, Strategy::Visible, Strategy::HeroBalance] {
-        let f = white_furnace(&|u| strategy.sample(u));
-        assert!(
-            f.worst <= f.critical && f.mean_z <= f.critical,
-            "{}: worst |z| = {}, mean |z| = {}, critical {}",
-            strategy.name(),
-            f.worst,
-            f.mean_z,
-            f.critical
-        );
+        white_furnace(&|u| strategy.sample(u)).assert_exact(strategy.name());
     }
 }
 
@@ -185,15 +185,8 @@ fn grey_furnace_is_exact_within_noise() {
         inside.pixels,
         outside.pixels
     );
-    for (what, f) in [("on the sphere", &inside), ("on the environment", &outside)] {
-        assert!(
-            f.worst <= f.critical && f.mean_z <= f.critical,
-            "grey furnace, pixels {what}: worst |z| = {}, mean |z| = {}, critical {}",
-            f.worst,
-            f.mean_z,
-            f.critical
-        );
-    }
+    inside.assert_exact("grey furnace, pixels on the sphere");
+    outside.assert_exact("grey furnace, pixels on the environment");
 }
 
 #[test]
