@@ -623,7 +623,6 @@ impl Checker<'_> {
     }
 
     fn camera(&self, c: &Spanned<RawCamera>) -> Result<CameraSpec, DataError> {
-        let span = c.span();
         let c = c.get_ref();
         let position = self.vec3(&c.position, "camera position")?;
         let look_at = self.vec3(&c.look_at, "camera look_at")?;
@@ -655,7 +654,6 @@ impl Checker<'_> {
                 format!("resolution {w} x {h}: each side must be in 1..={MAX_RESOLUTION}"),
             );
         }
-        let _ = span;
         Ok(CameraSpec {
             position,
             look_at,
