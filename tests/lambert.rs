@@ -112,6 +112,15 @@ fn the_brdf_is_zero_unless_both_directions_are_above_the_surface() {
             "f({wi}, {wo}) must be 0: light cannot cross the surface"
         );
     }
+    // Exactly in the tangent plane is not above it (a second mutant, `>=` for `>`).
+    let tangent = DVec3::X;
+    for (wi, wo) in [(tangent, up), (up, tangent)] {
+        assert_eq!(
+            lambert_brdf(RHO, wi, wo),
+            0.0,
+            "f({wi}, {wo}): a grazing direction is not above the surface"
+        );
+    }
 }
 
 /// The hand-derived exact answers of both environments agree with quadrature.
