@@ -169,6 +169,13 @@ fn unknown_keys_types_and_names_are_refused() {
         "wavelengths = \"rainbow\"",
         &["rainbow", "hero-visible"],
     );
+    // Keys of the other kind of shape, or of another material type.
+    refused_at("edge2 = [10, 0, 0]", "radius = 2", &["quad", "radius"]);
+    refused_at(
+        "glass = {",
+        "glass = { type = \"dielectric\", ior = 1.5, reflectance = 0.5 }",
+        &["dielectric material", "reflectance"],
+    );
 }
 
 #[test]

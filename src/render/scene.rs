@@ -371,6 +371,21 @@ impl Checker<'_> {
         }
     }
 
+    /// Refuses the first of `keys` that is given: `(name, its span if present)`.
+    fn refuse_keys<'k>(
+        &self,
+        keys: impl IntoIterator<Item = &'k (&'k str, Option<std::ops::Range<usize>>)>,
+        what: &str,
+        kind: &str,
+    ) -> Result<(), DataError> {
+        for (key, span) in keys {
+            if let Some(span) = span {
+                return self.err(span.clone(), format!("{what}: a {kind} has no key `{key}`"));
+            }
+        }
+        Ok(())
+    }
+
     fn required<'b, T>(
         &self,
         x: &'b Option<Spanned<T>>,
@@ -692,16 +707,11 @@ impl Checker<'_> {
             ("thickness_nm", m.thickness_nm.as_ref().map(Spanned::span)),
             ("y_range", m.y_range.as_ref().map(Spanned::span)),
         ];
-        for (key, s) in given {
-            if let Some(s) = s
-                && !allowed.contains(&key)
-            {
-                return self.err(
-                    s,
-                    format!("{what}: a {} material has no key `{key}`", m.kind.get_ref()),
-                );
-            }
-        }
+        self.refuse_keys(
+            given.iter().filter(|(key, _)| !allowed.contains(key)),
+            &what,
+            &format!("{} material", m.kind.get_ref()),
+        )?;
         let ior = |x: &Spanned<f64>| -> Result<f64, DataError> {
             let n = self.finite(x, &format!("{what}: ior"))?;
             if n > 0.0 {
@@ -901,22 +911,18 @@ impl Checker<'_> {
             ("material", s.material.as_ref().map(Spanned::span)),
             ("emission", s.emission.as_ref().map(Spanned::span)),
         ];
-        let wrong: Vec<_> = match kind {
-            "sphere" => quad.iter().collect(),
-            _ => sphere.iter().collect(),
+        let wrong = if kind == "sphere" {
+            &quad[..]
+        } else {
+            &sphere[..]
         };
-        for (key, sp) in wrong
-            .into_iter()
-            .chain(other.iter().filter(|(k, _)| *k != extra))
-        {
-            if let Some(sp) = sp {
-                return self.err(
-                    sp.clone(),
-                    format!("{what}: a {kind} has no key `{key}` here"),
-                );
-            }
-        }
-        Ok(())
+        self.refuse_keys(
+            wrong
+                .iter()
+                .chain(other.iter().filter(|(k, _)| *k != extra)),
+            what,
+            kind,
+        )
     }
 }
 
@@ -1006,13 +1012,8 @@ pub fn parse(text: &str, file: &str, dir: &Path) -> Result<Scene, DataError> {
                 let (c, r) = ck.sphere(s, span.clone(), &what)?;
                 Geometry::Sphere(Sphere::new(c, r))
             }
-            "quad" => Geometry::Quad(ck.quad(s, span.clone(), &what)?),
-            other => {
-                return ck.err(
-                    s.kind.span(),
-                    format!("unknown shape type {other:?} (there are: sphere, quad)"),
-                );
-            }
+            // keys_for has refused any other type.
+            _ => Geometry::Quad(ck.quad(s, span.clone(), &what)?),
         };
         let m = ck.required(&s.material, span, "material")?;
         let Some(material) = names.iter().position(|n| n == m.get_ref()) else {
@@ -1045,13 +1046,7 @@ pub fn parse(text: &str, file: &str, dir: &Path) -> Result<Scene, DataError> {
                         .or_else(|e| ck.err(span.clone(), format!("{what}: {e}")))?,
                 )
             }
-            "quad" => LightShape::Quad(ck.quad(l, span.clone(), &what)?),
-            other => {
-                return ck.err(
-                    l.kind.span(),
-                    format!("unknown light type {other:?} (there are: sphere, quad)"),
-                );
-            }
+            _ => LightShape::Quad(ck.quad(l, span.clone(), &what)?),
         };
         let e = ck.required(&l.emission, span, "emission")?;
         let emission = ck.spectrum(e, &spectra, &format!("{what} emission"))?;
