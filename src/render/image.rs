@@ -11,7 +11,7 @@
 //! writes the same six channels to be compared by `raylemma compare`.
 
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use exr::prelude::{
     AnyChannel, AnyChannels, Encoding, FlatSamples, Image as ExrImage, Layer, LayerAttributes,
@@ -19,7 +19,7 @@ use exr::prelude::{
 };
 use glam::DVec3;
 
-use crate::spectral::display;
+use crate::spectral::display::{self, temporary_beside};
 
 /// The channel names of an image file, in the order of [`Image::mean`] then
 /// [`Image::var`].
@@ -78,14 +78,6 @@ impl Welford {
 /// What went wrong reading or writing an image file: the path and the reason. The display
 /// chapter's PNG error serves every image file (it says no more than that).
 pub type ImageError = display::PngError;
-
-/// A temporary name beside `path`, so that a file is written whole and renamed into place.
-pub fn temporary_beside(path: &Path) -> PathBuf {
-    let mut name = std::ffi::OsString::from(".");
-    name.push(path.file_name().unwrap_or_default());
-    name.push(format!(".tmp-{}", std::process::id()));
-    path.with_file_name(name)
-}
 
 impl Image {
     /// The pixel index of `(x, y)`.

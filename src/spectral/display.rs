@@ -249,6 +249,15 @@ impl std::fmt::Display for PngError {
 
 impl std::error::Error for PngError {}
 
+/// A hidden temporary name beside `path` (`.NAME.tmp-PID`), so that a file is written whole
+/// and then renamed over `path`: every image file of the project is written this way.
+pub fn temporary_beside(path: &Path) -> PathBuf {
+    let mut name = std::ffi::OsString::from(".");
+    name.push(path.file_name().unwrap_or_default());
+    name.push(format!(".tmp-{}", std::process::id()));
+    path.with_file_name(name)
+}
+
 // ANCHOR: write_png
 /// Writes `rgb8` (`3 w h` bytes, row-major, sRGB-encoded) as a PNG at `path`. The image
 /// is encoded in memory, written to a temporary file beside `path` and renamed over it,
@@ -275,13 +284,10 @@ pub fn write_png(path: &Path, w: u32, h: u32, rgb8: &[u8]) -> Result<(), PngErro
     image
         .write_to(&mut bytes, image::ImageFormat::Png)
         .map_err(|e| err(format!("cannot encode the PNG: {e}")))?;
-    let name = path
-        .file_name()
-        .ok_or_else(|| err("the path has no file name".into()))?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(format!(".tmp-{}", std::process::id()));
-    let tmp = path.with_file_name(tmp_name);
+    if path.file_name().is_none() {
+        return Err(err("the path has no file name".into()));
+    }
+    let tmp = temporary_beside(path);
     let written = fs::File::create(&tmp)
         .and_then(|mut f| {
             f.write_all(bytes.get_ref())?;
