@@ -50,7 +50,7 @@ pub fn outputs() -> Vec<Output> {
 }
 
 /// The illuminants of `data/` with their published chromaticities (CIE 015:2018, 2°):
-/// `(name, file, x, y)`. The same values are asserted in `tests/colour.rs`.
+/// `(name, file, x, y)`. The same values are asserted in `tests/book/spectral/colour.rs`.
 pub const ILLUMINANTS: [(&str, &str, f64, f64); 6] = [
     ("A", "cie_illuminant_A.csv", 0.44758, 0.40745),
     ("D65", "cie_illuminant_D65.csv", 0.31272, 0.32903),

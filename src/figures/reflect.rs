@@ -25,7 +25,7 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-/// Seeds of the checker runs (shared with `tests/reflect.rs`).
+/// Seeds of the checker runs (shared with `tests/book/optics/reflect.rs`).
 pub const REFLECTION_SEED: u64 = 1;
 /// Seed of the refraction checker runs.
 pub const REFRACTION_SEED: u64 = 2;

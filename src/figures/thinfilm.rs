@@ -268,7 +268,7 @@ fn seed_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
         md,
         "\n*The seed's formula: s-polarised coefficients, real cosines, and −2 r12 r23 cos φ in the \
          denominator. The other columns: the library (`Film::response`), checked against a transfer \
-         matrix in `tests/thinfilm.rs`. Quarter-wave maximum for the soap film: {:.4}.*",
+         matrix in `tests/book/optics/thinfilm.rs`. Quarter-wave maximum for the soap film: {:.4}.*",
         quarter_wave_reflectance(SOAP.0, SOAP.1, SOAP.2)
     )?;
     Ok(md.into_bytes())
@@ -312,7 +312,7 @@ fn precision_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
         md,
         "\n*Glass of n1 = {n1} under a film of n2 = {n2} on a substrate of n3 = {n3}, at 550 nm, at \
          angles approaching the film's critical angle (30°). The rearranged sum agrees with the \
-         transfer matrix to 1e-12 (`tests/thinfilm.rs`).*"
+         transfer matrix to 1e-12 (`tests/book/optics/thinfilm.rs`).*"
     )?;
     Ok(md.into_bytes())
 }

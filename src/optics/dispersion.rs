@@ -1,6 +1,6 @@
 //! Dispersion: the Sellmeier equation, a prism, and the rainbow.
 //!
-//! Chapter: *Dispersion* (`chapters/optics/dispersion.md`); tests: `tests/dispersion.rs`.
+//! Chapter: *Dispersion* (`chapters/optics/dispersion.md`); tests: `tests/book/optics/dispersion.rs`.
 //!
 //! The Sellmeier coefficients live in `data/sellmeier.csv`, with their sources. They are
 //! embedded in the library ([`catalogue`]) so that nothing depends on the working

@@ -1,7 +1,7 @@
 //! Thin-film interference: the Airy sum of the multiple reflections inside one film.
 //!
 //! Chapter: *Thin-film interference* (`chapters/optics/thinfilm.md`); tests:
-//! `tests/thinfilm.rs`.
+//! `tests/book/optics/thinfilm.rs`.
 //!
 //! Three media: the ambient (index `n1`, where the light comes from), the film (`n2`,
 //! thickness `d`) and the substrate (`n3`). All indices are real (lossless media); the

@@ -1,0 +1,76 @@
+//! Tests of chapter *Coursework*: the verdict a checker returns, as a student reads it
+//! (a claim with no cases fails, a NaN error fails and stays visible, the worst failure is
+//! reported beside the first) and `max_abs`, which keeps a NaN.
+
+use raylemma::check::{Finding, Verdict, max_abs};
+
+#[test]
+fn max_abs_keeps_a_nan_wherever_it_is() {
+    assert_eq!(max_abs([]), 0.0);
+    assert_eq!(max_abs([1.0, -3.0, 2.0]), 3.0);
+    for i in 0..3 {
+        let mut xs = [1.0, 2.0, 3.0];
+        xs[i] = f64::NAN;
+        assert!(max_abs(xs).is_nan(), "NaN at {i} dropped");
+        // What it replaces: glam drops a NaN in all but the last component.
+        let dropped = glam::DVec3::from_array(xs).max_element();
+        assert_eq!(dropped.is_nan(), i == 2);
+    }
+}
+
+#[test]
+fn nan_errors_fail_and_stay_visible() {
+    let mut f = Finding::new("x", "claim");
+    f.measure(1.0, 2.0, String::new);
+    assert!(f.passed());
+    f.measure(f64::NAN, 2.0, || "nan".into());
+    f.measure(0.5, 2.0, String::new);
+    assert!(!f.passed());
+    assert!(f.worst.is_some_and(|(w, _)| w.is_nan()));
+    assert_eq!(f.example.as_deref(), Some("nan"));
+}
+
+#[test]
+fn the_worst_failure_is_kept_beside_the_first() {
+    let mut f = Finding::new("x", "claim");
+    for (e, what) in [
+        (3.0, "first"),
+        (9.0, "worst"),
+        (5.0, "middle"),
+        (0.5, "fine"),
+    ] {
+        f.measure(e, 2.0, || what.into());
+    }
+    assert_eq!((f.cases, f.failures), (4, 3));
+    assert_eq!(f.example.as_deref(), Some("first"));
+    assert_eq!(f.worst_example.as_deref(), Some("worst"));
+    let mut v = Verdict::new("demo");
+    v.findings.push(f);
+    assert!(v.to_string().contains("worst failure: worst"), "{v}");
+    // One failure: no separate worst case.
+    let mut g = Finding::new("y", "claim");
+    g.measure(3.0, 2.0, || "only".into());
+    assert!(g.worst_example.is_none());
+}
+
+#[test]
+fn a_check_with_no_cases_fails() {
+    assert!(!Finding::new("x", "claim").passed());
+    assert!(!Verdict::new("nothing").passed());
+}
+
+#[test]
+fn report_names_failures() {
+    let mut v = Verdict::new("demo");
+    let mut f = Finding::new("bad", "never exceeds 1");
+    f.measure(3.0, 1.0, || "case 7".into());
+    v.findings.push(f);
+    let text = v.to_string();
+    assert!(
+        text.starts_with("FAIL: demo")
+            && text.contains("[FAIL] bad")
+            && text.contains("case 7"),
+        "{text}"
+    );
+    assert!(v.failed("bad"));
+}

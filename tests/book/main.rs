@@ -1,0 +1,55 @@
+//! The book's tests: one module per chapter, in the book's order, compiled into one test
+//! binary (one link of the library instead of one per chapter).
+//!
+//! A chapter's tests run on their own with its module path as the filter, for example
+//! `cargo test --test book sampling::disc` or `cargo test --test book geometry::sphere`.
+
+mod coursework;
+
+mod geometry {
+    mod sphere;
+}
+
+mod checking {
+    mod statistics;
+    mod warps;
+}
+
+mod sampling {
+    mod cosine;
+    mod disc;
+    mod frame;
+    mod importance;
+    mod sphere;
+    mod tabulated;
+}
+
+mod optics {
+    mod dispersion;
+    mod fresnel;
+    mod reflect;
+    mod specular;
+    mod thinfilm;
+}
+
+mod transport {
+    mod lambert;
+    mod roulette;
+    mod shadow;
+}
+
+mod spectral {
+    mod colour;
+    mod display;
+    mod emission;
+    mod upsample;
+    mod wavelength;
+}
+
+mod renderer {
+    mod renderer;
+    mod scene;
+}
+
+/// The command line: subcommands end to end, their errors and exit statuses.
+mod cli;
