@@ -8,8 +8,8 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::figures::timing::uniform_inputs;
 use raylemma::spectral::emission::{EmissionSampler, lamps, uniform_wavelength};
+use raylemma::workload::uniform_inputs;
 
 fn emission(c: &mut Criterion) {
     let us = uniform_inputs(4096);

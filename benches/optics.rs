@@ -2,7 +2,7 @@
 //! Schlick*: ns per call of `reflect` and `refract`, and ns per reflectance of the exact
 //! Fresnel formula, Schlick's approximation and the Chebyshev fit, entering and leaving
 //! glass, over the same 4096 cosines that `cargo run --release` times for the book
-//! (`raylemma::figures::fresnel::timing_cosines`).
+//! (`raylemma::workload::timing_cosines`).
 //!
 //! Run with `cargo bench --bench optics`.
 
@@ -10,10 +10,10 @@ use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
-use raylemma::figures::fresnel::timing_cosines;
 use raylemma::optics::fresnel::{FresnelFit, fresnel_dielectric, schlick, schlick_seed};
 use raylemma::optics::reflect::{Refraction, reflect, refract};
 use raylemma::rng;
+use raylemma::workload::timing_cosines;
 
 /// One method over the batch; generic so that it is inlined (no indirect call).
 fn bench_one(

@@ -1,16 +1,16 @@
 //! Criterion benchmark of the chapter *Ray-sphere intersection*: ns per intersection for
 //! the textbook and the stable form, in f32 and f64, over the same 4096 rays that
-//! `cargo run --release` times for the book (`raylemma::figures::sphere::timing_rays`).
+//! `cargo run --release` times for the book (`raylemma::workload::timing_rays`).
 //!
 //! Run with `cargo bench --bench sphere`.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::figures::sphere::timing_rays;
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
 use raylemma::geometry::{Ray, Sphere};
 use raylemma::real::Real;
+use raylemma::workload::timing_rays;
 
 type Intersect<R> = fn(&Ray<R>, &Sphere<R>, R) -> Option<R>;
 

@@ -9,10 +9,8 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::figures::frame::timing_normals;
-use raylemma::figures::tabulated::{TIMING_BINS, timing_tables};
-use raylemma::figures::timing::uniform_inputs;
 use raylemma::sampling::frame::{Frame, frisvad};
+use raylemma::workload::{TIMING_BINS, timing_normals, timing_tables, uniform_inputs};
 
 fn tabulated(c: &mut Criterion) {
     let us = uniform_inputs(4096);

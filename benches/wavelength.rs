@@ -7,8 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::figures::timing::uniform_inputs;
 use raylemma::spectral::wavelength::Strategy;
+use raylemma::workload::uniform_inputs;
 
 fn lanes(c: &mut Criterion) {
     let us = uniform_inputs(4096);

@@ -16,14 +16,15 @@
 //!   RGB-to-spectrum upsampling.
 //! * [`transport`]: Lambertian reflectance, Russian roulette, shadow-ray pdfs.
 //! * [`render`]: the reference renderer: scenes, the spectral path tracer, images, compare.
-//! * [`figures`]: the code that draws the book's figures and tables.
+//! * [`workload`]: the fixed inputs that the speed tables and the benches both time.
+//!
+//! The code that draws the book's figures is its own crate (`tools/figures/`), which this
+//! library never depends on.
 
 pub mod check;
 pub mod data;
-pub mod figures;
 pub mod geometry;
 pub mod optics;
-pub mod plot;
 pub mod real;
 pub mod render;
 pub mod rng;
@@ -31,3 +32,4 @@ pub mod sampling;
 pub mod spectral;
 pub mod stats;
 pub mod transport;
+pub mod workload;

@@ -1,12 +1,15 @@
-//! `raylemma`: regenerates the book's figures and builds the book.
+//! `raylemma`: renders and compares scenes; regenerates the book's figures and builds the
+//! book.
 //!
-//! `cargo run --release` with no subcommand does both; see `--help`.
+//! `cargo run --release` with no subcommand regenerates the figures and reference images
+//! and builds the book; see `--help`. The figures and the book are made by two tools of
+//! this workspace (`tools/figures/`, `tools/book/`), which this program runs with cargo,
+//! so that the library never compiles their dependencies.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 use clap::{Parser, Subcommand};
-use raylemma::figures::{self, Settings};
 use raylemma::render::{self, compare, image::Image};
 
 /// Regenerate raylemma's figures and build its book.
@@ -74,52 +77,56 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn run_figures(settings: &Settings, only: Option<&str>) -> Result<(), String> {
-    let dir = root().join("figures");
-    eprintln!("raylemma: regenerating figures into {}", dir.display());
-    let written = figures::write_all(&dir, settings, only).map_err(|e| e.to_string())?;
-    eprintln!(
-        "raylemma: wrote {} files into {}",
-        written.len(),
-        dir.display()
-    );
-    Ok(())
-}
-
-fn run_references(settings: &Settings) -> Result<(), String> {
-    let dir = root().join("figures");
-    eprintln!(
-        "raylemma: rendering the reference images into {}",
-        dir.join("reference").display()
-    );
-    let written = figures::render::write_references(&dir, settings).map_err(|e| e.to_string())?;
-    eprintln!("raylemma: wrote {} files", written.len());
-    Ok(())
-}
-
-/// Builds the book with the `raylemma-book` tool of this workspace, compiling it first if
-/// needed (cargo shows its own progress; the first build takes a few minutes).
-fn run_book() -> Result<(), String> {
+/// Runs the workspace tool `package` (`raylemma-figures` or `raylemma-book`) with `args`,
+/// compiling it first if needed (cargo shows its own progress).
+fn run_tool(package: &str, args: &[&str]) -> Result<(), String> {
     let root = root();
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
-    eprintln!("raylemma: building the book tool (the first build compiles mdBook and KaTeX)");
     let status = Command::new(&cargo)
-        .args(["run", "--release", "-p", "raylemma-book", "--", "--root"])
+        .args(["run", "--release", "--quiet", "-p", package, "--"])
+        .args(args)
+        .arg("--root")
         .arg(&root)
         .current_dir(&root)
         .status()
         .map_err(|e| format!("cannot start {}: {e}", Path::new(&cargo).display()))?;
     if status.success() {
-        eprintln!(
-            "raylemma: open {} in a browser",
-            root.join("book").join("index.html").display()
-        );
         Ok(())
     } else {
-        Err(format!(
-            "the book build failed ({status}); book/ was left as it was"
-        ))
+        Err(format!("{package} failed ({status})"))
     }
+}
+
+/// Regenerates the figures (all, or those whose name contains `only`).
+fn run_figures(quick: bool, only: Option<&str>) -> Result<(), String> {
+    let mut args = vec!["figures"];
+    if let Some(name) = only {
+        args.extend(["--only", name]);
+    }
+    if quick {
+        args.push("--quick");
+    }
+    run_tool("raylemma-figures", &args)
+}
+
+/// Renders the reference images.
+fn run_references(quick: bool) -> Result<(), String> {
+    let mut args = vec!["references"];
+    if quick {
+        args.push("--quick");
+    }
+    run_tool("raylemma-figures", &args)
+}
+
+/// Builds the book (the first build compiles mdBook and KaTeX, a few minutes).
+fn run_book() -> Result<(), String> {
+    eprintln!("raylemma: building the book tool (the first build compiles mdBook and KaTeX)");
+    run_tool("raylemma-book", &[]).map_err(|e| format!("{e}; book/ was left as it was"))?;
+    eprintln!(
+        "raylemma: open {} in a browser",
+        root().join("book").join("index.html").display()
+    );
+    Ok(())
 }
 
 fn run_render(
@@ -173,13 +180,13 @@ fn run_compare(a: &Path, b: &Path, alpha: f64, diff: Option<&Path>) -> Result<bo
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let settings = Settings { quick: cli.quick };
+    let quick = cli.quick;
     let result = match &cli.command {
-        None => run_figures(&settings, None)
-            .and_then(|()| run_references(&settings))
+        None => run_figures(quick, None)
+            .and_then(|()| run_references(quick))
             .and_then(|()| run_book()),
-        Some(Cmd::References) => run_references(&settings),
-        Some(Cmd::Figures { only }) => run_figures(&settings, only.as_deref()),
+        Some(Cmd::References) => run_references(quick),
+        Some(Cmd::Figures { only }) => run_figures(quick, only.as_deref()),
         Some(Cmd::Book) => run_book(),
         Some(Cmd::Render {
             scene,

@@ -432,3 +432,32 @@ pub fn far_spheres(f: &impl SphereIntersector<f32>) -> Verdict {
     }
     verdict
 }
+
+/// Rays leaving a sphere from a point on its surface, with `t_min = 0` as the seed
+/// prescribes: the fraction that "hits" the sphere again at a tiny `t`.
+pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, rays: usize, seed: u64) -> f64 {
+    let mut rng = rng::seeded(seed);
+    let mut hits = 0;
+    for _ in 0..rays {
+        let radius = log_uniform(&mut rng, 1e-1, 1e1);
+        let center = DVec3::new(
+            uniform(&mut rng, -10.0, 10.0),
+            uniform(&mut rng, -10.0, 10.0),
+            uniform(&mut rng, -10.0, 10.0),
+        );
+        let u = rng::unit_vector(&mut rng);
+        let mut dir = rng::unit_vector(&mut rng);
+        if dir.dot(u) < 0.0 {
+            dir = -dir; // outward
+        }
+        let ray = Ray::<R>::new(R::narrow3(center + u * radius), R::narrow3(dir));
+        let sphere = Sphere::<R>::new(R::narrow3(center), R::lit(radius));
+        if f.intersect(&ray, &sphere, R::zero()).is_some() {
+            hits += 1;
+        }
+    }
+    hits as f64 / rays as f64
+}
+
+/// Seed of the self-intersection measurement (shared with its test).
+pub const SELF_HIT_SEED: u64 = 0x5e1f;

@@ -182,6 +182,11 @@ pub mod check {
 
     const EPS: f64 = f64::EPSILON;
 
+    /// The seed of the reflection checker's cases in the book's tests and tables.
+    pub const REFLECTION_SEED: u64 = 1;
+    /// The seed of the refraction checker's cases in the book's tests and tables.
+    pub const REFRACTION_SEED: u64 = 2;
+
     /// One incident direction: the light's direction `w_i`, the normal `m` facing it
     /// (`w_i . m <= 0`), and the normal `n` handed to the routine (`m` or `-m`).
     #[derive(Clone, Copy, Debug)]

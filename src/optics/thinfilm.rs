@@ -19,7 +19,10 @@
 
 use std::f64::consts::PI;
 
+use glam::DVec3;
 use num_complex::Complex64;
+
+use crate::spectral::{cie, spectrum};
 
 /// A single film between two half-spaces.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -333,3 +336,15 @@ pub fn quarter_wave_reflectance(n1: f64, n2: f64, n3: f64) -> f64 {
 pub fn incoherent_reflectance(r12: f64, r23: f64) -> f64 {
     (r12 + r23 - 2.0 * r12 * r23) / (1.0 - r12 * r23)
 }
+
+// ANCHOR: film_colour
+/// The colour of the light a film reflects at normal incidence under daylight: the XYZ of
+/// `R(λ) D65(λ)`, relative to the XYZ of D65 itself (so a perfect mirror has `Y = 1`),
+/// in linear sRGB. Chapters *Thin-film interference* and *Spectra and CIE colour*.
+pub fn film_colour(film: &Film) -> DVec3 {
+    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
+    let white = cie::xyz(|nm| d65.eval(nm)).y;
+    let xyz = cie::xyz(|nm| film.reflectance(nm, 0.0) * d65.eval(nm)) / white;
+    cie::xyz_to_linear_srgb(xyz)
+}
+// ANCHOR_END: film_colour

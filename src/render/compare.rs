@@ -273,3 +273,35 @@ pub fn difference_rgb8(a: &Image, b: &Image, z_critical: f64) -> Vec<u8> {
     }
     out
 }
+
+/// The noise of an image: the RMS over pixels of the standard error of a pixel's
+/// luminance, and that divided by the mean luminance. The channels' errors are correlated
+/// (one path makes all three) and the image keeps no covariances, so a pixel's luminance
+/// error is bounded by the weighted sum of its channels' standard errors (exact when they
+/// are perfectly correlated): the levels quoted are upper bounds.
+pub fn noise_level(image: &Image) -> (f64, f64) {
+    let n = image.mean.len() as f64;
+    let se = |v: DVec3| display::LUMA.dot(v.map(|x| x.max(0.0).sqrt()));
+    let rms = (image.var.iter().map(|&v| se(v).powi(2)).sum::<f64>() / n).sqrt();
+    let mean = image
+        .mean
+        .iter()
+        .map(|&m| display::luminance(m))
+        .sum::<f64>()
+        / n;
+    (rms, rms / mean)
+}
+
+/// The mean squared error of `image` against `reference`, less the reference's own mean
+/// variance (an unbiased estimate of the error against the exact image), per channel.
+pub fn mse_against(image: &Image, reference: &Image) -> f64 {
+    let n = 3.0 * image.mean.len() as f64;
+    let d2: f64 = image
+        .mean
+        .iter()
+        .zip(&reference.mean)
+        .map(|(a, b)| (*a - *b).length_squared())
+        .sum();
+    let v: f64 = reference.var.iter().map(|v| v.x + v.y + v.z).sum();
+    (d2 - v) / n
+}

@@ -628,3 +628,30 @@ impl PiecewiseLinear1D {
         self.cdf[i + 1] - self.cdf[i]
     }
 }
+
+// ANCHOR: emission
+/// A made-up fluorescent-lamp spectrum on 380–780 nm in 1 nm bins: a broad phosphor
+/// continuum, three narrow lines (436, 546 and 611 nm), nothing below 400 nm or from
+/// 720 nm on (a filter), and a notch filter that blocks 575–590 nm.
+pub fn emission_values() -> Vec<f64> {
+    (380..780)
+        .map(|nm| {
+            let l = f64::from(nm) + 0.5; // bin centre
+            if !(400.0..720.0).contains(&l) || (575.0..590.0).contains(&l) {
+                return 0.0;
+            }
+            let continuum = 0.6 * (-((l - 600.0) / 90.0).powi(2)).exp();
+            let line = |centre: f64, width: f64, height: f64| {
+                height * (-((l - centre) / width).powi(2)).exp()
+            };
+            continuum + line(436.0, 0.8, 8.0) + line(546.0, 1.2, 20.0) + line(611.0, 1.5, 10.0)
+        })
+        .collect()
+}
+// ANCHOR_END: emission
+
+/// The table of [`emission_values`], 380–780 nm.
+pub fn emission_table() -> Piecewise1D {
+    Piecewise1D::uniform(380.0, 780.0, &emission_values())
+        .unwrap_or_else(|e| panic!("the emission table is valid: {e}"))
+}

@@ -259,3 +259,17 @@ pub fn xyz_to_linear_srgb(xyz: DVec3) -> DVec3 {
 pub fn xyz_to_linear_srgb_matrix() -> DMat3 {
     srgb_matrices().1
 }
+
+/// Krystek's rational approximation of the Planckian locus (Color Res. Appl. 10, 38, 1985):
+/// the chromaticity of a blackbody at `t` kelvin (1000 K to 15 000 K), in CIE 1960 `(u, v)`
+/// converted to `(x, y)` by `x = 3u / (2u - 8v + 4)`, `y = 2v / (2u - 8v + 4)`. A published
+/// fit, independent of this module's integrals: the colour chapter checks the exact
+/// Planckian chromaticities against it.
+pub fn krystek(t: f64) -> DVec2 {
+    let u = (0.860_117_757 + 1.541_182_54e-4 * t + 1.286_412_12e-7 * t * t)
+        / (1.0 + 8.424_202_35e-4 * t + 7.081_451_63e-7 * t * t);
+    let v = (0.317_398_726 + 4.228_062_45e-5 * t + 4.204_816_91e-8 * t * t)
+        / (1.0 - 2.897_418_16e-5 * t + 1.614_560_53e-7 * t * t);
+    let d = 2.0 * u - 8.0 * v + 4.0;
+    DVec2::new(3.0 * u / d, 2.0 * v / d)
+}

@@ -20,8 +20,8 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
-use super::cie;
 use super::spectrum::{Table, builtin};
+use super::{cie, display};
 use crate::data::DataError;
 use crate::sampling::tabulated::{PiecewiseLinear1D, TableError};
 
@@ -330,3 +330,25 @@ pub fn write_lamp_images(dir: &Path) -> Result<Vec<PathBuf>, String> {
         })
         .collect()
 }
+
+/// The XYZ of a lamp, normalised to `Y = 1`.
+pub fn xyz_unit(t: &Table) -> DVec3 {
+    let xyz = cie::xyz(|nm| t.eval(nm));
+    xyz / xyz.y
+}
+
+// ANCHOR: display
+/// A display colour for a swatch: linear sRGB of the lamp at `Y = 1`, negative
+/// components clipped to 0 (out of gamut), scaled so that the largest component is 1,
+/// then encoded with the exact sRGB transfer function ([`display::srgb8`], chapter *From
+/// spectrum to display*).
+pub fn swatch_rgb8(t: &Table) -> [u8; 3] {
+    let rgb = cie::xyz_to_linear_srgb(xyz_unit(t)).max(DVec3::ZERO);
+    let rgb = rgb / rgb.max_element();
+    [
+        display::srgb8(rgb.x),
+        display::srgb8(rgb.y),
+        display::srgb8(rgb.z),
+    ]
+}
+// ANCHOR_END: display

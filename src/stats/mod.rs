@@ -13,6 +13,8 @@
 //!   or another sample; exact p-values for `n <= 1000` (Marsaglia, Tsang & Wang 2003).
 //! * [`ttest::one_sample`], [`ttest::welch`]: Student's and Welch's t-tests of means, on
 //!   running [`ttest::Summary`] values (Welford).
+//! * [`binomial::wilson`]: the Wilson interval of a rate (false alarms, power).
+//! * [`null`]: experiments in which each test's null is true, for its calibration.
 //!
 //! Every test returns `Result<_, StatsError>`: malformed input (a NaN sample, samples
 //! where the pdf is zero, a pdf that does not integrate to 1) is an error that names the
@@ -32,9 +34,11 @@
 //! dependent tests Šidák's level is still valid for the usual positively dependent cases,
 //! and Bonferroni's `SUITE_ALPHA / m`, smaller still, is valid always.)
 
+pub mod binomial;
 pub mod chi2;
 pub mod error;
 pub mod ks;
+pub mod null;
 pub mod ttest;
 
 pub use error::StatsError;

@@ -47,7 +47,7 @@ mod spectral {
 }
 
 mod renderer {
-    mod renderer;
+    mod render;
     mod scene;
 }
 

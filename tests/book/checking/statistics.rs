@@ -6,10 +6,10 @@
 //! and accepts the true one at the same seed. The power and acceptance tests are
 //! themselves statistical tests of the suite, at the suite's per-test level.
 
-use raylemma::figures::stats::{NULL_CASES, NullCase, standard_normal};
 use raylemma::rng;
 use raylemma::stats::chi2::{pearson, upper_tail};
 use raylemma::stats::ks::{self, kolmogorov_cdf, kolmogorov_sf, smirnov_upper_tail};
+use raylemma::stats::null::{NULL_CASES, NullCase, standard_normal};
 use raylemma::stats::ttest::{self, Summary, two_sided_p, welch};
 use raylemma::stats::{SUITE_ALPHA, SUITE_TESTS, StatsError, sidak, test_alpha};
 

@@ -7,7 +7,7 @@
 use glam::{DVec3, Vec3};
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
 use raylemma::check::sphere::{self as check, SILHOUETTE_BAND, T_ERROR_BOUND};
-use raylemma::figures::sphere::{SELF_HIT_SEED, self_hit_rate};
+use raylemma::check::sphere::{SELF_HIT_SEED, self_hit_rate};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook, nearest_root_above};
 use raylemma::geometry::{Ray, Sphere};
 use raylemma::real::Real;

@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
-use raylemma::figures::reflect::{REFLECTION_SEED, REFRACTION_SEED};
+use raylemma::optics::reflect::check::{REFLECTION_SEED, REFRACTION_SEED};
 use raylemma::optics::reflect::{Refraction, check, critical_angle, planted, reflect, refract};
 
 /// Random cases per checker run.

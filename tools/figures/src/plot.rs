@@ -14,7 +14,7 @@ use plotters::style::{FontStyle, register_font};
 /// A boxed error, for figure code.
 pub type BoxError = Box<dyn Error + Send + Sync>;
 
-static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
 /// Registers the embedded font as plotters' `sans-serif` (once per process).

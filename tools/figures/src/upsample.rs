@@ -7,10 +7,10 @@ use glam::DVec3;
 use super::{Output, Settings, timing};
 use crate::plot::{BoxError, Panel, Scale, Series};
 use crate::plot::{Legend, ranged_chart_png};
-use crate::rng;
-use crate::spectral::display::delta_e;
-use crate::spectral::upsample::*;
-use crate::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
+use raylemma::rng;
+use raylemma::spectral::display::delta_e;
+use raylemma::spectral::upsample::*;
+use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {

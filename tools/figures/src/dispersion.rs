@@ -3,11 +3,11 @@
 use std::fmt::Write as _;
 
 use super::{Output, Settings};
-use crate::optics::dispersion::{
+use crate::plot::{BoxError, Panel, Scale, Series};
+use raylemma::optics::dispersion::{
     self as disp, FUSED_SILICA, LINE_C_NM, LINE_D_NM, LINE_F_NM, N_BK7, PrismPath, RENDER_RANGE_NM,
     WATER,
 };
-use crate::plot::{BoxError, Panel, Scale, Series};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {

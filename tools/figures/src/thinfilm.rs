@@ -6,12 +6,13 @@ use num_complex::Complex64;
 use plotters::prelude::*;
 
 use super::{Output, Settings};
-use crate::optics::thinfilm::{
-    Film, airy_r, cos_theta, interface, phase, quarter_wave_reflectance, seed_reflectance,
-};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
 use crate::plot::{Legend, ranged_chart_png};
-use crate::spectral::{cie, display, spectrum};
+use raylemma::optics::thinfilm::{
+    Film, airy_r, cos_theta, film_colour, interface, phase, quarter_wave_reflectance,
+    seed_reflectance,
+};
+use raylemma::spectral::display;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -316,18 +317,6 @@ fn precision_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     )?;
     Ok(md.into_bytes())
 }
-
-// ANCHOR: film_colour
-/// The colour of the light a film reflects at normal incidence under daylight: the XYZ of
-/// `R(λ) D65(λ)`, relative to the XYZ of D65 itself (so a perfect mirror has `Y = 1`),
-/// in linear sRGB. Chapters *Thin-film interference* and *Spectra and CIE colour*.
-pub fn film_colour(film: &Film) -> glam::DVec3 {
-    let d65 = spectrum::builtin("cie_illuminant_D65.csv");
-    let white = cie::xyz(|nm| d65.eval(nm)).y;
-    let xyz = cie::xyz(|nm| film.reflectance(nm, 0.0) * d65.eval(nm)) / white;
-    cie::xyz_to_linear_srgb(xyz)
-}
-// ANCHOR_END: film_colour
 
 /// Colour strips against thickness, one per film, each scaled so that its brightest
 /// thickness has `Y = 0.9`, brought into gamut and encoded by the display chapter's rules.

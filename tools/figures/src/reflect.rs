@@ -5,9 +5,10 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use super::{Output, Settings};
-use crate::check::Verdict;
-use crate::optics::reflect::{Refraction, check, planted, reflect, refract};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use raylemma::check::Verdict;
+use raylemma::optics::reflect::check::{REFLECTION_SEED, REFRACTION_SEED};
+use raylemma::optics::reflect::{Refraction, check, planted, reflect, refract};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -24,11 +25,6 @@ pub fn outputs() -> Vec<Output> {
         },
     ]
 }
-
-/// Seeds of the checker runs (shared with `tests/book/optics/reflect.rs`).
-pub const REFLECTION_SEED: u64 = 1;
-/// Seed of the refraction checker runs.
-pub const REFRACTION_SEED: u64 = 2;
 
 type Reflector = fn(DVec3, DVec3) -> DVec3;
 type Refractor = fn(DVec3, DVec3, f64, f64) -> Refraction;

@@ -7,11 +7,11 @@ use rand::RngExt;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError};
-use crate::rng;
-use crate::spectral::emission::*;
-use crate::spectral::spectrum::Table;
-use crate::spectral::{cie, display};
-use crate::stats::ttest::Summary;
+use raylemma::rng;
+use raylemma::spectral::cie;
+use raylemma::spectral::emission::*;
+use raylemma::spectral::spectrum::Table;
+use raylemma::stats::ttest::Summary;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -117,28 +117,6 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     })
 }
 
-/// The XYZ of a lamp, normalised to `Y = 1`.
-fn xyz_unit(t: &Table) -> DVec3 {
-    let xyz = cie::xyz(|nm| t.eval(nm));
-    xyz / xyz.y
-}
-
-// ANCHOR: display
-/// A display colour for a swatch: linear sRGB of the lamp at `Y = 1`, negative
-/// components clipped to 0 (out of gamut), scaled so that the largest component is 1,
-/// then encoded with the exact sRGB transfer function ([`display::srgb8`], chapter *From
-/// spectrum to display*).
-pub fn swatch_rgb8(t: &Table) -> [u8; 3] {
-    let rgb = cie::xyz_to_linear_srgb(xyz_unit(t)).max(DVec3::ZERO);
-    let rgb = rgb / rgb.max_element();
-    [
-        display::srgb8(rgb.x),
-        display::srgb8(rgb.y),
-        display::srgb8(rgb.z),
-    ]
-}
-// ANCHOR_END: display
-
 fn swatches_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
     let lamps = lamps();
@@ -196,7 +174,7 @@ fn planckian_locus() -> Vec<(f64, glam::DVec2)> {
         .rev()
         .map(|mired| {
             let kelvin = 1e6 / f64::from(mired);
-            let xyz = cie::xyz(|nm| crate::spectral::spectrum::planck(nm, kelvin));
+            let xyz = cie::xyz(|nm| raylemma::spectral::spectrum::planck(nm, kelvin));
             (
                 kelvin,
                 uv(glam::DVec2::new(xyz.x, xyz.y) / xyz.element_sum()),
@@ -340,7 +318,7 @@ fn drawing_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
 
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
-    let us = timing::uniform_inputs(4096);
+    let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();
     writeln!(
         md,

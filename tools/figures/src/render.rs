@@ -14,10 +14,12 @@ use std::time::Instant;
 use super::Settings;
 use super::timing::{machine, quick_note};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::render::image::Image;
-use crate::render::scene::{self, Scene};
-use crate::render::{self, Progress, Sidecar};
-use crate::spectral::display;
+use raylemma::render::compare::{mse_against, noise_level};
+use raylemma::render::image::Image;
+use raylemma::render::scene::{self, Scene};
+use raylemma::render::{self, Progress, Sidecar};
+use raylemma::spectral::display;
+use raylemma::stats::binomial::wilson;
 
 /// The canonical scenes: the name of the reference files, and the scene file under
 /// `scenes/`.
@@ -54,38 +56,6 @@ pub fn reference_spp(scene: &Scene, settings: &Settings) -> u32 {
     }
 }
 
-/// The noise of an image: the RMS over pixels of the standard error of a pixel's
-/// luminance, and that divided by the mean luminance. The channels' errors are correlated
-/// (one path makes all three) and the image keeps no covariances, so a pixel's luminance
-/// error is bounded by the weighted sum of its channels' standard errors (exact when they
-/// are perfectly correlated): the levels quoted are upper bounds.
-pub fn noise_level(image: &Image) -> (f64, f64) {
-    let n = image.mean.len() as f64;
-    let se = |v: glam::DVec3| display::LUMA.dot(v.map(|x| x.max(0.0).sqrt()));
-    let rms = (image.var.iter().map(|&v| se(v).powi(2)).sum::<f64>() / n).sqrt();
-    let mean = image
-        .mean
-        .iter()
-        .map(|&m| display::luminance(m))
-        .sum::<f64>()
-        / n;
-    (rms, rms / mean)
-}
-
-/// The mean squared error of `image` against `reference`, less the reference's own mean
-/// variance (an unbiased estimate of the error against the exact image), per channel.
-pub fn mse_against(image: &Image, reference: &Image) -> f64 {
-    let n = 3.0 * image.mean.len() as f64;
-    let d2: f64 = image
-        .mean
-        .iter()
-        .zip(&reference.mean)
-        .map(|(a, b)| (*a - *b).length_squared())
-        .sum();
-    let v: f64 = reference.var.iter().map(|v| v.x + v.y + v.z).sum();
-    (d2 - v) / n
-}
-
 struct Rendered {
     name: &'static str,
     scene_file: &'static str,
@@ -93,8 +63,8 @@ struct Rendered {
     sidecar: Sidecar,
 }
 
-fn scenes_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
+fn scenes_dir(settings: &Settings) -> PathBuf {
+    settings.root.join("scenes")
 }
 
 fn render_one(
@@ -102,7 +72,7 @@ fn render_one(
     file: &'static str,
     settings: &Settings,
 ) -> Result<Rendered, BoxError> {
-    let path = scenes_dir().join(file);
+    let path = scenes_dir(settings).join(file);
     let s = scene::load(&path)?;
     let spp = reference_spp(&s, settings);
     eprintln!(
@@ -122,7 +92,7 @@ fn render_one(
 /// The cornell scene at increasing sample counts: `(spp, seconds, RMSE)` against the
 /// reference (a different seed, so that the errors are independent).
 fn speed_series(reference: &Image, settings: &Settings) -> Result<Vec<(u32, f64, f64)>, BoxError> {
-    let mut s = scene::load(&scenes_dir().join("cornell.toml"))?;
+    let mut s = scene::load(&scenes_dir(settings).join("cornell.toml"))?;
     s.settings.seed = 1_000_003;
     let top = if settings.quick { 8 } else { 128 };
     let mut out = Vec::new();
@@ -251,28 +221,20 @@ struct Calibration {
     mean_z2: f64,
 }
 
-/// The Wilson 95 % interval of `k` successes in `n` trials.
-pub fn wilson(k: u32, n: u32) -> (f64, f64) {
-    let (k, n, z) = (f64::from(k), f64::from(n), 1.96f64);
-    let p = k / n;
-    let c = (p + z * z / (2.0 * n)) / (1.0 + z * z / n);
-    let h = z * (p * (1.0 - p) / n + z * z / (4.0 * n * n)).sqrt() / (1.0 + z * z / n);
-    ((c - h).max(0.0), (c + h).min(1.0))
-}
-
 /// The brightening of the planted twin: every tabulated reflectance 3 % higher.
 pub const CALIBRATION_BIAS: f64 = 0.03;
 
 fn calibrate(
+    settings: &Settings,
     scene: &'static str,
     side: u32,
     spp: u32,
     pairs: u32,
 ) -> Result<Calibration, BoxError> {
-    use crate::render::compare::compare;
-    use crate::render::scene::Material;
-    use crate::spectral::spectrum::Spectrum;
-    let mut s = scene::load(&scenes_dir().join(scene))?;
+    use raylemma::render::compare::compare;
+    use raylemma::render::scene::Material;
+    use raylemma::spectral::spectrum::Spectrum;
+    let mut s = scene::load(&scenes_dir(settings).join(scene))?;
     s.camera.width = side;
     s.camera.height = side;
     let mut bright = s.clone();
@@ -314,10 +276,10 @@ fn calibrate(
 fn calibration_md(settings: &Settings) -> Result<String, BoxError> {
     let pairs = if settings.quick { 4 } else { 60 };
     let rows = [
-        calibrate("cornell-diffuse.toml", 64, 64, pairs)?,
-        calibrate("cornell-diffuse.toml", 64, 256, pairs)?,
-        calibrate("cornell.toml", 64, 64, pairs)?,
-        calibrate("cornell.toml", 64, 256, pairs)?,
+        calibrate(settings, "cornell-diffuse.toml", 64, 64, pairs)?,
+        calibrate(settings, "cornell-diffuse.toml", 64, 256, pairs)?,
+        calibrate(settings, "cornell.toml", 64, 64, pairs)?,
+        calibrate(settings, "cornell.toml", 64, 256, pairs)?,
     ];
     let mut md = String::from(
         "| scene | size | spp | pairs | false alarms (nominal 1 %) | 95 % interval | mean z² | 3 % brighter detected |\n|---|---|---:|---:|---:|---:|---:|---:|\n",

@@ -8,11 +8,13 @@ use glam::DVec3;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng;
-use crate::spectral::cie;
-use crate::spectral::spectrum::{Spectrum, builtin};
-use crate::spectral::wavelength::{N, SEED_BAND, SeedBand, Strategy, seed_band, seed_band_weight};
-use crate::stats::ttest::Summary;
+use raylemma::rng;
+use raylemma::spectral::cie;
+use raylemma::spectral::spectrum::{Spectrum, builtin};
+use raylemma::spectral::wavelength::{
+    N, SEED_BAND, SeedBand, Strategy, seed_band, seed_band_weight,
+};
+use raylemma::stats::ttest::Summary;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -302,7 +304,7 @@ fn seed_bias_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
-    let us = timing::uniform_inputs(4096);
+    let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();
     writeln!(md, "| strategy | ns to generate the {N} lanes |")?;
     writeln!(md, "|---|---:|")?;

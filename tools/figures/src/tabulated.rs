@@ -6,11 +6,12 @@ use rand::RngExt;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError};
-use crate::rng;
-use crate::sampling::tabulated::{
-    ONE_MINUS_EPSILON, Piecewise1D, PiecewiseLinear1D, segment_cdf, segment_inverse,
+use raylemma::rng;
+use raylemma::sampling::tabulated::{
+    ONE_MINUS_EPSILON, Piecewise1D, emission_table, emission_values, segment_cdf, segment_inverse,
 };
-use crate::stats::{StatsError, chi2, ks, test_alpha};
+use raylemma::stats::{StatsError, chi2, ks, test_alpha};
+use raylemma::workload::{TIMING_BINS, timing_tables};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -36,33 +37,6 @@ pub fn outputs() -> Vec<Output> {
             make: speed_md,
         },
     ]
-}
-
-// ANCHOR: emission
-/// A made-up fluorescent-lamp spectrum on 380–780 nm in 1 nm bins: a broad phosphor
-/// continuum, three narrow lines (436, 546 and 611 nm), nothing below 400 nm or from
-/// 720 nm on (a filter), and a notch filter that blocks 575–590 nm.
-pub fn emission_values() -> Vec<f64> {
-    (380..780)
-        .map(|nm| {
-            let l = f64::from(nm) + 0.5; // bin centre
-            if !(400.0..720.0).contains(&l) || (575.0..590.0).contains(&l) {
-                return 0.0;
-            }
-            let continuum = 0.6 * (-((l - 600.0) / 90.0).powi(2)).exp();
-            let line = |centre: f64, width: f64, height: f64| {
-                height * (-((l - centre) / width).powi(2)).exp()
-            };
-            continuum + line(436.0, 0.8, 8.0) + line(546.0, 1.2, 20.0) + line(611.0, 1.5, 10.0)
-        })
-        .collect()
-}
-// ANCHOR_END: emission
-
-/// The table of [`emission_values`], 380–780 nm.
-pub fn emission_table() -> Piecewise1D {
-    Piecewise1D::uniform(380.0, 780.0, &emission_values())
-        .unwrap_or_else(|e| panic!("the emission table is valid: {e}"))
 }
 
 fn histogram_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
@@ -324,25 +298,9 @@ fn precision_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-/// Table sizes of the speed table and the benchmark.
-pub const TIMING_BINS: [usize; 4] = [16, 256, 4096, 65536];
-
-/// A random table of `bins` bins on `[0, 1]`, in both forms (the linear one with
-/// `bins + 1` knots), for timing.
-pub fn timing_tables(bins: usize) -> (Piecewise1D, PiecewiseLinear1D) {
-    let mut rng = rng::seeded(0x71b + bins as u64);
-    let values: Vec<f64> = (0..=bins).map(|_| 0.1 + rng.random::<f64>()).collect();
-    let constant = Piecewise1D::uniform(0.0, 1.0, &values[..bins]);
-    let linear = PiecewiseLinear1D::uniform(0.0, 1.0, &values);
-    match (constant, linear) {
-        (Ok(c), Ok(l)) => (c, l),
-        _ => unreachable!("positive random values on a valid grid"),
-    }
-}
-
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 201 };
-    let us = timing::uniform_inputs(4096);
+    let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();
     writeln!(
         md,

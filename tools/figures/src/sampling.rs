@@ -1,7 +1,7 @@
 //! Figures and tables of the chapters *Checking a sampler*, *Uniform sphere and
 //! hemisphere*, *The unit disc* and *Cosine-weighted hemisphere*.
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::hint::black_box;
 
@@ -9,13 +9,13 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::{Output, Settings, timing};
-use crate::check::warp::{self, Domain, Options, RngWarp, SquareWarp, Warp};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng::{self, Rng};
-use crate::sampling::cosine::*;
-use crate::sampling::disc::*;
-use crate::sampling::sphere::*;
-use crate::stats;
+use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp, Warp, planted};
+use raylemma::rng::{self, Rng};
+use raylemma::sampling::cosine::*;
+use raylemma::sampling::disc::*;
+use raylemma::sampling::sphere::*;
+use raylemma::stats;
 
 /// The outputs of these chapters.
 pub fn outputs() -> Vec<Output> {
@@ -136,45 +136,6 @@ fn correct_samplers() -> Vec<Boxed> {
     ]
 }
 
-// ANCHOR: planted
-/// The planted bugs every sampler check must reject.
-pub fn planted_bugs() -> Vec<Boxed> {
-    vec![
-        square_warp(
-            "disc, r = u",
-            Domain::Disc,
-            |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
-            disc_pdf,
-        ),
-        square_warp(
-            "sphere, theta uniform (missing sin theta)",
-            Domain::Sphere,
-            |u| {
-                let (t, p) = (PI * u.x, TAU * u.y);
-                DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
-            },
-            sphere_pdf,
-        ),
-        square_warp(
-            "cosine^1.1 lobe claimed as cosine",
-            Domain::Sphere,
-            |u| {
-                let z = (1.0 - u.x).powf(1.0 / 2.1);
-                let r = (1.0 - z * z).max(0.0).sqrt();
-                DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z)
-            },
-            cosine_pdf,
-        ),
-        square_warp(
-            "uniform hemisphere claimed as cosine",
-            Domain::Sphere,
-            |u| hemisphere_flip(sphere_inverse_cdf(u), DVec3::Z),
-            cosine_pdf,
-        ),
-    ]
-}
-// ANCHOR_END: planted
-
 /// The chi-squared p-value of `w` with `samples` samples on a 21-row grid. An error
 /// (which none of the figure's samplers should produce) is a NaN p-value, which every
 /// table shows and no rate counts as a rejection.
@@ -252,9 +213,9 @@ fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 /// The f32 columns of the methods table for the sampler called `name`: worst norm error
 /// and worst relative error of `z`, in units of `f32::EPSILON` ("—" where not defined).
 fn single_precision(name: &str) -> (String, String) {
-    use crate::check::single::{norm_error, square_points, z_error};
-    use crate::sampling::{cosine, sphere};
     use glam::{DVec2, Vec2, Vec3};
+    use raylemma::check::single::{norm_error, square_points, z_error};
+    use raylemma::sampling::{cosine, sphere};
     type F32 = fn(Vec2) -> Vec3;
     type F64 = fn(DVec2) -> DVec3;
     let points = square_points(200_000, 0xF32);
@@ -271,7 +232,7 @@ fn single_precision(name: &str) -> (String, String) {
         ),
         "sphere, Gaussian" | "sphere, rejection" => {
             let mut r = rng::seeded(0x5F33);
-            let worst = crate::check::max_abs((0..200_000).map(|_| {
+            let worst = raylemma::check::max_abs((0..200_000).map(|_| {
                 let v = rng::unit_vector(&mut r).as_vec3()
                     * 10f32.powf(rng::uniform(&mut r, -30.0, 30.0) as f32);
                 sphere::single::normalize_robust(v).map_or(f64::NAN, |w| {
@@ -307,7 +268,11 @@ fn power_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         "| planted bug | rejected at n = 10 000 | n = 100 000 | n = 1 000 000 |"
     )?;
     writeln!(md, "|---|---:|---:|---:|")?;
-    for bug in planted_bugs() {
+    for bug in planted::all()
+        .into_iter()
+        .map(|w| Box::new(w) as Boxed)
+        .collect::<Vec<_>>()
+    {
         let rates: Vec<String> = sizes
             .iter()
             .map(|&n| {

@@ -1,29 +1,8 @@
-//! The book's figures and generated tables, and the job that writes them to `figures/`.
+//! The job that writes the book's figures and generated tables to `figures/`.
 //!
-//! Each chapter module here owns the figures of one chapter. Every output is produced
+//! Each chapter module of this crate owns the figures of one chapter. Every output is produced
 //! into a staging directory first; only when *all* outputs succeeded are they moved into
 //! `figures/` (one rename per file), so a failed run leaves the previous figures intact.
-
-pub mod colour;
-pub mod dispersion;
-pub mod display;
-pub mod emission;
-pub mod frame;
-pub mod fresnel;
-pub mod lambert;
-pub mod reflect;
-pub mod render;
-pub mod roulette;
-pub mod sampling;
-pub mod shadow;
-pub mod specular;
-pub mod sphere;
-pub mod stats;
-pub mod tabulated;
-pub mod thinfilm;
-pub mod timing;
-pub mod upsample;
-pub mod wavelength;
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -31,12 +10,18 @@ use std::path::{Path, PathBuf};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::plot::BoxError;
+use crate::{
+    colour, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette, sampling,
+    shadow, specular, sphere, stats, tabulated, thinfilm, upsample, wavelength,
+};
 
 /// Options shared by all figures.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Settings {
     /// Fewer samples and shorter timings (for CI); the figures keep their shape.
     pub quick: bool,
+    /// The project root: `scenes/`, `data/` and `figures/` are found under it.
+    pub root: PathBuf,
 }
 
 /// One output file of the figure job.
@@ -150,4 +135,89 @@ fn commit(outputs: &[Output], staging: &Path, dir: &Path) -> Result<Vec<PathBuf>
         written.push(target);
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use std::fs;
+
+    use super::*;
+
+    fn settings() -> Settings {
+        Settings {
+            quick: true,
+            root: PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../.."),
+        }
+    }
+
+    #[test]
+    fn unknown_figure_name_is_reported_with_the_list() {
+        let dir =
+            std::env::temp_dir().join(format!("raylemma-figures-only-{}", std::process::id()));
+        let err = write_all(&dir, &settings(), Some("no_such_figure"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("no_such_figure") && err.contains("sphere_far_error.png"),
+            "{err}"
+        );
+        assert!(!dir.exists(), "nothing is written for an unknown name");
+    }
+
+    fn good(_: &Settings) -> Result<Vec<u8>, BoxError> {
+        Ok(b"new".to_vec())
+    }
+
+    fn bad(_: &Settings) -> Result<Vec<u8>, BoxError> {
+        Err("planted failure".into())
+    }
+
+    #[test]
+    fn a_failed_figure_leaves_the_previous_figures_intact() {
+        let dir =
+            std::env::temp_dir().join(format!("raylemma-figures-test-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        fs::create_dir_all(&dir).unwrap();
+        fs::write(dir.join("a.md"), "old").unwrap();
+        let outputs = [
+            Output {
+                file: "a.md",
+                what: "good",
+                make: good,
+            },
+            Output {
+                file: "b.md",
+                what: "bad",
+                make: bad,
+            },
+        ];
+        let err = write_outputs(&dir, &outputs, &settings())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("b.md") && err.contains("planted failure"),
+            "{err}"
+        );
+        assert_eq!(fs::read_to_string(dir.join("a.md")).unwrap(), "old");
+        assert!(!dir.join("b.md").exists());
+        // And when every output succeeds, all are written.
+        let ok = [Output {
+            file: "a.md",
+            what: "good",
+            make: good,
+        }];
+        write_outputs(&dir, &ok, &settings()).unwrap();
+        assert_eq!(fs::read_to_string(dir.join("a.md")).unwrap(), "new");
+        let leftovers: Vec<_> = fs::read_dir(dir.parent().unwrap())
+            .unwrap()
+            .filter_map(Result::ok)
+            .filter(|e| {
+                e.file_name()
+                    .to_string_lossy()
+                    .starts_with(&format!("raylemma-figures-test-{}.tmp", std::process::id()))
+            })
+            .collect();
+        assert!(leftovers.is_empty(), "staging directory left behind");
+        fs::remove_dir_all(&dir).unwrap();
+    }
 }

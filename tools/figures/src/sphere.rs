@@ -6,12 +6,13 @@ use std::hint::black_box;
 use glam::DVec3;
 
 use super::{Output, Settings, timing};
-use crate::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
-use crate::geometry::sphere::{intersect_stable, intersect_textbook};
-use crate::geometry::{Ray, Sphere};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::real::Real;
-use crate::rng;
+use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
+use raylemma::check::sphere::{SELF_HIT_SEED, self_hit_rate};
+use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
+use raylemma::geometry::{Ray, Sphere};
+use raylemma::real::Real;
+use raylemma::workload::timing_rays;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -205,35 +206,6 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::encode_png(width, height, buffer)
 }
 
-/// Rays leaving a sphere from a point on its surface, with `t_min = 0` as the seed
-/// prescribes: the fraction that "hits" the sphere again at a tiny `t`.
-pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, rays: usize, seed: u64) -> f64 {
-    let mut rng = rng::seeded(seed);
-    let mut hits = 0;
-    for _ in 0..rays {
-        let radius = rng::log_uniform(&mut rng, 1e-1, 1e1);
-        let center = DVec3::new(
-            rng::uniform(&mut rng, -10.0, 10.0),
-            rng::uniform(&mut rng, -10.0, 10.0),
-            rng::uniform(&mut rng, -10.0, 10.0),
-        );
-        let u = rng::unit_vector(&mut rng);
-        let mut dir = rng::unit_vector(&mut rng);
-        if dir.dot(u) < 0.0 {
-            dir = -dir; // outward
-        }
-        let ray = Ray::<R>::new(R::narrow3(center + u * radius), R::narrow3(dir));
-        let sphere = Sphere::<R>::new(R::narrow3(center), R::lit(radius));
-        if f.intersect(&ray, &sphere, R::zero()).is_some() {
-            hits += 1;
-        }
-    }
-    hits as f64 / rays as f64
-}
-
-/// Seed of the self-intersection measurement (shared with its test).
-pub const SELF_HIT_SEED: u64 = 0x5e1f;
-
 fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let rays = if settings.quick { 20_000 } else { 200_000 };
     let mut md = String::new();
@@ -289,23 +261,6 @@ fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     }
     md.push_str("```\n");
     Ok(md.into_bytes())
-}
-
-/// Rays for timing: from 5 radii away towards random points within 1.4 radii of a unit
-/// sphere's centre, so that about half of them hit.
-pub fn timing_rays<R: Real>(n: usize) -> (Vec<Ray<R>>, Sphere<R>) {
-    let mut rng = rng::seeded(0x7157);
-    let rays = (0..n)
-        .map(|_| {
-            let origin = rng::unit_vector(&mut rng) * 5.0;
-            let target = rng::unit_vector(&mut rng) * 1.4 * rng::uniform(&mut rng, 0.0, 1.0).cbrt();
-            Ray::new(R::narrow3(origin), R::narrow3(target - origin))
-        })
-        .collect();
-    (
-        rays,
-        Sphere::new(R::v3(R::zero(), R::zero(), R::zero()), R::one()),
-    )
 }
 
 fn time_form<R: Real>(f: fn(&Ray<R>, &Sphere<R>, R) -> Option<R>, quick: bool) -> (f64, f64) {

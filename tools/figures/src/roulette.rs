@@ -4,9 +4,9 @@ use std::fmt::Write as _;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng;
-use crate::stats::ttest::{self, Summary};
-use crate::transport::roulette::*;
+use raylemma::rng;
+use raylemma::stats::ttest::{self, Summary};
+use raylemma::transport::roulette::*;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {

@@ -6,11 +6,11 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Settings, timing};
-use crate::check::warp::square_point;
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng;
-use crate::stats::ttest::Summary;
-use crate::transport::shadow::{
+use raylemma::check::warp::square_point;
+use raylemma::rng;
+use raylemma::stats::ttest::Summary;
+use raylemma::transport::shadow::{
     Heuristic, Light, QuadLight, SphereCone, SphereLight, Strategy, estimate_irradiance,
     sphere_irradiance,
 };

@@ -17,6 +17,8 @@
 //! integral is not 1. On a chi-squared failure it writes observed, expected and
 //! difference images a student can open.
 
+pub mod planted;
+
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 

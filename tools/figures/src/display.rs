@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
 use crate::plot::{Legend, ranged_chart_png};
-use crate::spectral::display::*;
+use raylemma::spectral::display::*;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {

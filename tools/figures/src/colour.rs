@@ -9,9 +9,11 @@ use plotters::prelude::*;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, PALETTE, Panel, Scale, Series};
-use crate::spectral::cie::{self, chromaticity, cmf, cmf_fit, xyz, xyz_to_linear_srgb, xyz_with};
-use crate::spectral::spectrum::{self, planck};
-use crate::spectral::{LAMBDA_MAX, LAMBDA_MIN};
+use raylemma::spectral::cie::{
+    self, chromaticity, cmf, cmf_fit, krystek, xyz, xyz_to_linear_srgb, xyz_with,
+};
+use raylemma::spectral::spectrum::{self, planck};
+use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -343,9 +345,9 @@ fn fit_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 41 };
     // Wavelengths as a renderer draws them: uniform over the range, not on the knots.
-    let mut r = crate::rng::seeded(0xC0);
+    let mut r = raylemma::rng::seeded(0xC0);
     let nms: Vec<f64> = (0..4096)
-        .map(|_| crate::rng::uniform(&mut r, LAMBDA_MIN, LAMBDA_MAX))
+        .map(|_| raylemma::rng::uniform(&mut r, LAMBDA_MIN, LAMBDA_MAX))
         .collect();
     let batch = |f: fn(f64) -> DVec3| {
         let nms = &nms;
@@ -393,17 +395,6 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         timing::machine()
     )?;
     Ok(md.into_bytes())
-}
-
-/// Krystek's rational approximation of the Planckian locus (Color Res. Appl. 10, 38, 1985),
-/// CIE 1960 (u, v), converted to (x, y).
-pub fn krystek(t: f64) -> DVec2 {
-    let u = (0.860_117_757 + 1.541_182_54e-4 * t + 1.286_412_12e-7 * t * t)
-        / (1.0 + 8.424_202_35e-4 * t + 7.081_451_63e-7 * t * t);
-    let v = (0.317_398_726 + 4.228_062_45e-5 * t + 4.204_816_91e-8 * t * t)
-        / (1.0 - 2.897_418_16e-5 * t + 1.614_560_53e-7 * t * t);
-    let d = 2.0 * u - 8.0 * v + 4.0;
-    DVec2::new(3.0 * u / d, 2.0 * v / d)
 }
 
 fn planck_md(_: &Settings) -> Result<Vec<u8>, BoxError> {

@@ -5,10 +5,10 @@ use std::fmt::Write as _;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Settings};
-use crate::optics::specular::*;
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng;
-use crate::stats::ttest::Summary;
+use raylemma::optics::specular::*;
+use raylemma::rng;
+use raylemma::stats::ttest::Summary;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {

@@ -7,9 +7,9 @@ use glam::{DVec2, DVec3};
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng;
-use crate::stats::ttest::{self, Summary};
-use crate::transport::lambert::*;
+use raylemma::rng;
+use raylemma::stats::ttest::{self, Summary};
+use raylemma::transport::lambert::*;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {

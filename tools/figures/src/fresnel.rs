@@ -4,12 +4,13 @@ use std::fmt::Write as _;
 use std::hint::black_box;
 
 use super::{Output, Settings, timing};
-use crate::optics::fresnel::{
+use crate::plot::{self, BoxError, Panel, Scale, Series};
+use raylemma::optics::fresnel::{
     ErrorStats, FresnelFit, SWEEP_ANGLES, approximation_error, check, fresnel_dielectric,
     fresnel_polarized, fresnel_transmittance, planted, schlick, schlick_seed,
 };
-use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::rng;
+use raylemma::rng;
+use raylemma::workload::timing_cosines;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -272,12 +273,6 @@ struct Timed {
     error: (f64, f64),
 }
 
-/// Cosines for timing: 4096 uniform in `[0, 1]`, seeded.
-pub fn timing_cosines(n: usize) -> Vec<f64> {
-    let mut rng = rng::seeded(0xf7e5);
-    (0..n).map(|_| rng::uniform(&mut rng, 0.0, 1.0)).collect()
-}
-
 /// Generic, so that each method is inlined into its own loop (no indirect call).
 fn time(f: impl Fn(f64) -> f64, cosines: &[f64], reps: usize) -> f64 {
     timing::median_ns_per_item(cosines.len(), reps, || {
@@ -367,7 +362,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let cosines = timing_cosines(4096);
     let tir_share = cosines
         .iter()
-        .filter(|&&c| crate::optics::fresnel::cos_transmitted(c, 1.5, 1.0).is_none())
+        .filter(|&&c| raylemma::optics::fresnel::cos_transmitted(c, 1.5, 1.0).is_none())
         .count() as f64
         / cosines.len() as f64;
     let mut md = String::new();

@@ -38,14 +38,6 @@ pub fn machine() -> String {
     format!("{cpu}, {cores} cores, single thread")
 }
 
-/// `n` uniform numbers in `[0, 1)` from a fixed seed: the inputs of the speed tables and
-/// benches that time a function of one uniform number (tabulated, wavelength, emission).
-pub fn uniform_inputs(n: usize) -> Vec<f64> {
-    use rand::RngExt as _;
-    let mut rng = crate::rng::seeded(0x7157);
-    (0..n).map(|_| rng.random::<f64>()).collect()
-}
-
 /// Median nanoseconds per call of `f` over `inputs` (see [`median_ns_per_item`]); the
 /// results are summed so that the optimiser cannot drop the calls.
 pub fn median_ns_per_input(inputs: &[f64], reps: usize, f: impl Fn(f64) -> f64) -> f64 {

@@ -1,0 +1,158 @@
+//! Experiments in which the null hypothesis of a test is true by construction. Chapter:
+//! *Statistical tests* (`chapters/checking/statistics.md`).
+//!
+//! A test is calibrated when, with the null true, its p-value is uniform on `[0, 1]`. Each
+//! [`NullCase`] draws such data with its own seed; the test suite checks that the p-values
+//! of many runs are uniform, and the book's calibration table counts how often each test
+//! rejects at the suite's level.
+
+use glam::DVec2;
+use rayon::prelude::*;
+
+use crate::rng::{self, Rng};
+use crate::sampling::sphere::box_muller;
+use crate::stats::{StatsError, chi2, ks, ttest};
+
+/// A standard normal deviate: the first of the two of the Box–Muller transform
+/// ([`box_muller`], chapter *Uniform sphere and hemisphere*) of two uniforms.
+pub fn standard_normal(rng: &mut Rng) -> f64 {
+    let u1 = rng::uniform(rng, 0.0, 1.0);
+    let u2 = rng::uniform(rng, 0.0, 1.0);
+    box_muller(DVec2::new(u1, u2)).0
+}
+
+/// One experiment in which the null hypothesis of a test is true by construction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NullCase {
+    /// Pearson's chi-squared: 1000 draws into 16 cells of geometric probabilities
+    /// `∝ 0.7^i` (the sparsest cells are pooled), against their exact expectations.
+    Chi2,
+    /// One-sample KS, exact p-value: 100 uniform samples against the uniform CDF.
+    KsExact,
+    /// One-sample KS, asymptotic p-value: 5000 exponential samples against the
+    /// exponential CDF.
+    KsAsymptotic,
+    /// Two-sample KS: 200 and 301 standard normal samples.
+    KsTwoSample,
+    /// Student's one-sample t-test: 10 standard normal samples against mean 0.
+    StudentT,
+    /// Welch's t-test: 10 and 40 standard normal samples.
+    Welch,
+}
+
+/// Every experiment, in the order of the figure and the table.
+pub const NULL_CASES: [NullCase; 6] = [
+    NullCase::Chi2,
+    NullCase::KsExact,
+    NullCase::KsAsymptotic,
+    NullCase::KsTwoSample,
+    NullCase::StudentT,
+    NullCase::Welch,
+];
+
+/// Cells and draws of the [`NullCase::Chi2`] experiment.
+const CHI2_CELLS: usize = 16;
+const CHI2_DRAWS: u64 = 1000;
+
+impl NullCase {
+    /// Short name of the test.
+    pub fn test(self) -> &'static str {
+        match self {
+            Self::Chi2 => "Pearson χ²",
+            Self::KsExact => "KS, exact p",
+            Self::KsAsymptotic => "KS, asymptotic p",
+            Self::KsTwoSample => "KS, two samples",
+            Self::StudentT => "Student t",
+            Self::Welch => "Welch t",
+        }
+    }
+
+    /// The experiment, in words.
+    pub fn experiment(self) -> &'static str {
+        match self {
+            Self::Chi2 => "1000 draws into 16 cells with P ∝ 0.7^i, against N·P",
+            Self::KsExact => "100 uniform samples against the uniform CDF",
+            Self::KsAsymptotic => "5000 exponential samples against the exponential CDF",
+            Self::KsTwoSample => "200 against 301 normal samples",
+            Self::StudentT => "mean of 10 normal samples against 0",
+            Self::Welch => "mean of 10 against mean of 40 normal samples",
+        }
+    }
+
+    fn index(self) -> u64 {
+        NULL_CASES.iter().position(|&c| c == self).unwrap_or(0) as u64
+    }
+
+    /// The p-value of one run of the experiment, with its own seed.
+    ///
+    /// # Errors
+    /// Only if a test rejects its input, which for these well-formed inputs is a bug.
+    pub fn p_value(self, seed: u64) -> Result<f64, StatsError> {
+        let mut rng = rng::seeded(0x5747_0000_0000 + (self.index() << 32) + seed);
+        let normals = |rng: &mut Rng, n: usize| -> Vec<f64> {
+            (0..n).map(|_| standard_normal(rng)).collect()
+        };
+        Ok(match self {
+            Self::Chi2 => {
+                let (observed, expected) = geometric_counts(&mut rng);
+                chi2::pearson(&observed, &expected, 5.0)?.p_value
+            }
+            Self::KsExact => {
+                let xs: Vec<f64> = (0..100).map(|_| rng::uniform(&mut rng, 0.0, 1.0)).collect();
+                ks::one_sample(&xs, |x| x.clamp(0.0, 1.0))?.p_value
+            }
+            Self::KsAsymptotic => {
+                let xs: Vec<f64> = (0..5000)
+                    .map(|_| -(1.0 - rng::uniform(&mut rng, 0.0, 1.0)).ln())
+                    .collect();
+                ks::one_sample(&xs, |x| -(-x.max(0.0)).exp_m1())?.p_value
+            }
+            Self::KsTwoSample => {
+                let a = normals(&mut rng, 200);
+                let b = normals(&mut rng, 301);
+                ks::two_sample(&a, &b)?.p_value
+            }
+            Self::StudentT => {
+                let s = ttest::Summary::of(normals(&mut rng, 10));
+                ttest::one_sample(&s, 0.0)?.p_value
+            }
+            Self::Welch => {
+                let a = ttest::Summary::of(normals(&mut rng, 10));
+                let b = ttest::Summary::of(normals(&mut rng, 40));
+                ttest::welch(&a, &b)?.p_value
+            }
+        })
+    }
+
+    /// The p-values of runs `0..runs`, in parallel.
+    ///
+    /// # Errors
+    /// As [`NullCase::p_value`].
+    pub fn p_values(self, runs: u64) -> Result<Vec<f64>, StatsError> {
+        (0..runs).into_par_iter().map(|s| self.p_value(s)).collect()
+    }
+}
+
+/// Counts of [`NullCase::Chi2`]: `CHI2_DRAWS` draws by inversion into cells with
+/// probabilities `∝ 0.7^i`, and the expected counts `N P_i`.
+fn geometric_counts(rng: &mut Rng) -> (Vec<u64>, Vec<f64>) {
+    let weights: Vec<f64> = (0..CHI2_CELLS).map(|i| 0.7f64.powi(i as i32)).collect();
+    let total: f64 = weights.iter().sum();
+    let mut cumulative = Vec::with_capacity(CHI2_CELLS);
+    let mut acc = 0.0;
+    for w in &weights {
+        acc += w / total;
+        cumulative.push(acc);
+    }
+    let mut observed = vec![0u64; CHI2_CELLS];
+    for _ in 0..CHI2_DRAWS {
+        let u = rng::uniform(rng, 0.0, 1.0);
+        let cell = cumulative.partition_point(|&c| c <= u).min(CHI2_CELLS - 1);
+        observed[cell] += 1;
+    }
+    let expected = weights
+        .iter()
+        .map(|w| CHI2_DRAWS as f64 * w / total)
+        .collect();
+    (observed, expected)
+}
