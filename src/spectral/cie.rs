@@ -260,7 +260,8 @@ pub fn xyz_to_linear_srgb_matrix() -> DMat3 {
     srgb_matrices().1
 }
 
-/// Krystek's rational approximation of the Planckian locus (Color Res. Appl. 10, 38, 1985):
+/// M. Krystek, *An algorithm to calculate correlated colour temperature*, Color Research
+/// and Application 10(1), 38-40 (1985): a rational approximation of the Planckian locus,
 /// the chromaticity of a blackbody at `t` kelvin (1000 K to 15 000 K), in CIE 1960 `(u, v)`
 /// converted to `(x, y)` by `x = 3u / (2u - 8v + 4)`, `y = 2v / (2u - 8v + 4)`. A published
 /// fit, independent of this module's integrals: the colour chapter checks the exact

@@ -511,18 +511,6 @@ fn illuminant_a_is_a_2856_k_planckian() {
     assert!(err > 4e-3, "the λ⁴ Planck lands on A: {wrong}");
 }
 
-/// M. Krystek, *An algorithm to calculate correlated colour temperature*, Color Research
-/// and Application 10(1), 38-40 (1985): a rational approximation of the Planckian locus in
-/// the CIE 1960 (u, v) plane, 1000-15000 K. Returns (x, y).
-fn krystek(t: f64) -> DVec2 {
-    let u = (0.860_117_757 + 1.541_182_54e-4 * t + 1.286_412_12e-7 * t * t)
-        / (1.0 + 8.424_202_35e-4 * t + 7.081_451_63e-7 * t * t);
-    let v = (0.317_398_726 + 4.228_062_45e-5 * t + 4.204_816_91e-8 * t * t)
-        / (1.0 - 2.897_418_16e-5 * t + 1.614_560_53e-7 * t * t);
-    let d = 2.0 * u - 8.0 * v + 4.0;
-    DVec2::new(3.0 * u / d, 2.0 * v / d)
-}
-
 #[test]
 fn planckian_locus_matches_krystek() {
     // D65's correlated colour temperature is 6504 K; 2000-10000 K covers the lamps of the
