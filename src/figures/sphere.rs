@@ -6,12 +6,15 @@ use std::hint::black_box;
 use glam::DVec3;
 
 use super::{Output, Settings, timing};
+use crate::check::Real;
 use crate::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
 use crate::geometry::sphere::{intersect_stable, intersect_textbook};
-use crate::geometry::{Ray, Sphere};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::real::Real;
 use crate::rng;
+use crate::single::geometry::sphere::{
+    intersect_stable as stable32, intersect_textbook as textbook32,
+};
+use crate::single::geometry::{Ray, Sphere};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -47,13 +50,6 @@ pub fn outputs() -> Vec<Output> {
             make: speed_md,
         },
     ]
-}
-
-fn textbook32(r: &Ray<f32>, s: &Sphere<f32>, t: f32) -> Option<f32> {
-    intersect_textbook(r, s, t)
-}
-fn stable32(r: &Ray<f32>, s: &Sphere<f32>, t: f32) -> Option<f32> {
-    intersect_stable(r, s, t)
 }
 
 /// Distances of the figure: 1.8 to 1e5 radii, four per decade (the bundle's origins
@@ -152,7 +148,7 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let d_hat = DVec3::new(0.48, -0.6, 0.64).normalize();
     let (e1, e2) = d_hat.any_orthonormal_pair();
     let center = DVec3::new(1.25, -0.5, 2.0);
-    let sphere = Sphere::<f32>::new(f32::narrow3(center), 1.0);
+    let sphere = Sphere::new(f32::narrow3(center), 1.0);
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
         root.fill(&WHITE)?;
@@ -167,7 +163,7 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
                     for j in 0..n {
                         let x = -1.25 + 2.5 * (f64::from(i) + 0.5) / f64::from(n);
                         let y = -1.25 + 2.5 * (f64::from(j) + 0.5) / f64::from(n);
-                        let ray = Ray::<f32>::new(
+                        let ray = Ray::new(
                             f32::narrow3(center - d_hat * distance + e1 * x + e2 * y),
                             f32::narrow3(d_hat),
                         );
@@ -222,9 +218,9 @@ pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, rays: usize, seed: 
         if dir.dot(u) < 0.0 {
             dir = -dir; // outward
         }
-        let ray = Ray::<R>::new(R::narrow3(center + u * radius), R::narrow3(dir));
-        let sphere = Sphere::<R>::new(R::narrow3(center), R::lit(radius));
-        if f.intersect(&ray, &sphere, R::zero()).is_some() {
+        let ray = R::ray(center + u * radius, dir);
+        let sphere = R::sphere(center, radius);
+        if f.intersect(&ray, &sphere, R::ZERO).is_some() {
             hits += 1;
         }
     }
@@ -246,22 +242,22 @@ fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         (
             "textbook",
             "f32",
-            self_hit_rate(&intersect_textbook::<f32>, rays, SELF_HIT_SEED),
+            self_hit_rate(&textbook32, rays, SELF_HIT_SEED),
         ),
         (
             "stable",
             "f32",
-            self_hit_rate(&intersect_stable::<f32>, rays, SELF_HIT_SEED),
+            self_hit_rate(&stable32, rays, SELF_HIT_SEED),
         ),
         (
             "textbook",
             "f64",
-            self_hit_rate(&intersect_textbook::<f64>, rays, SELF_HIT_SEED),
+            self_hit_rate(&intersect_textbook, rays, SELF_HIT_SEED),
         ),
         (
             "stable",
             "f64",
-            self_hit_rate(&intersect_stable::<f64>, rays, SELF_HIT_SEED),
+            self_hit_rate(&intersect_stable, rays, SELF_HIT_SEED),
         ),
     ];
     for (form, precision, rate) in rows {
@@ -278,10 +274,10 @@ fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let cases = if settings.quick { 2_000 } else { 20_000 };
     let mut md = String::from("```text\n");
     for verdict in [
-        check::sphere_intersection(&intersect_stable::<f32>, cases),
-        check::sphere_intersection(&intersect_textbook::<f32>, cases),
-        check::sphere_intersection(&intersect_stable::<f64>, cases),
-        check::sphere_intersection(&intersect_textbook::<f64>, cases),
+        check::sphere_intersection(&stable32, cases),
+        check::sphere_intersection(&textbook32, cases),
+        check::sphere_intersection(&intersect_stable, cases),
+        check::sphere_intersection(&intersect_textbook, cases),
         check::far_spheres(&stable32),
         check::far_spheres(&textbook32),
     ] {
@@ -293,32 +289,29 @@ fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 
 /// Rays for timing: from 5 radii away towards random points within 1.4 radii of a unit
 /// sphere's centre, so that about half of them hit.
-pub fn timing_rays<R: Real>(n: usize) -> (Vec<Ray<R>>, Sphere<R>) {
+pub fn timing_rays<R: Real>(n: usize) -> (Vec<R::Ray>, R::Sphere) {
     let mut rng = rng::seeded(0x7157);
     let rays = (0..n)
         .map(|_| {
             let origin = rng::unit_vector(&mut rng) * 5.0;
             let target = rng::unit_vector(&mut rng) * 1.4 * rng::uniform(&mut rng, 0.0, 1.0).cbrt();
-            Ray::new(R::narrow3(origin), R::narrow3(target - origin))
+            R::ray(origin, target - origin)
         })
         .collect();
-    (
-        rays,
-        Sphere::new(R::v3(R::zero(), R::zero(), R::zero()), R::one()),
-    )
+    (rays, R::sphere(DVec3::ZERO, 1.0))
 }
 
-fn time_form<R: Real>(f: fn(&Ray<R>, &Sphere<R>, R) -> Option<R>, quick: bool) -> (f64, f64) {
+fn time_form<R: Real>(f: fn(&R::Ray, &R::Sphere, R) -> Option<R>, quick: bool) -> (f64, f64) {
     let (rays, sphere) = timing_rays::<R>(4096);
     let hits = rays
         .iter()
-        .filter(|r| f(r, &sphere, R::zero()).is_some())
+        .filter(|r| f(r, &sphere, R::ZERO).is_some())
         .count();
     let reps = if quick { 5 } else { 201 };
     let ns = timing::median_ns_per_item(rays.len(), reps, || {
         let mut count = 0u64;
         for ray in &rays {
-            if f(black_box(ray), black_box(&sphere), R::zero()).is_some() {
+            if f(black_box(ray), black_box(&sphere), R::ZERO).is_some() {
                 count += 1;
             }
         }
@@ -330,8 +323,8 @@ fn time_form<R: Real>(f: fn(&Ray<R>, &Sphere<R>, R) -> Option<R>, quick: bool) -
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let q = settings.quick;
     let rows = [
-        ("textbook", "f32", time_form::<f32>(intersect_textbook, q)),
-        ("stable", "f32", time_form::<f32>(intersect_stable, q)),
+        ("textbook", "f32", time_form::<f32>(textbook32, q)),
+        ("stable", "f32", time_form::<f32>(stable32, q)),
         ("textbook", "f64", time_form::<f64>(intersect_textbook, q)),
         ("stable", "f64", time_form::<f64>(intersect_stable, q)),
     ];
