@@ -1,6 +1,7 @@
 //! The two floating-point precisions the derivations are written for.
 //!
-//! The geometry (`geometry::{ray, sphere}`) is written once, in plain Rust, with these
+//! The geometry (`geometry::{ray, sphere}`) and the samplers and frames
+//! (`sampling::{sphere, disc, cosine, frame}`) are written once, in plain Rust, with these
 //! names:
 //!
 //! * `Float`: the scalar, `f64` or `f32`;
@@ -14,16 +15,18 @@
 //! scope as `precision`. A literal such as `1.0` takes the type of `Float` from its
 //! context, so no line of a derivation names a precision. The files are compiled twice:
 //!
-//! * with [`double`], at their usual paths: `crate::geometry`, which the renderer and most
-//!   of the book use;
-//! * with [`single`], as the `f32` twins under [`crate::single`]: `crate::single::geometry`,
-//!   declared in `src/single.rs` with `#[path]` pointing at the same files.
+//! * with [`double`], at their usual paths: `crate::geometry`, `crate::sampling::sphere`,
+//!   …, which the renderer and most of the book use;
+//! * with [`single`], as the `f32` twins under [`crate::single`]:
+//!   `crate::single::geometry`, `crate::single::sampling::sphere`, …, declared in
+//!   `src/single.rs` with `#[path]` pointing at the same files.
 //!
-//! A dual file refers to another one relatively (`super::Ray`), so each twin uses its own
-//! twin. The sphere checker compares the two precisions through the
+//! A dual file refers to another one relatively (`super::disc::disc_concentric`), so each
+//! twin calls its own twin. The sphere checker compares the two precisions through the
 //! trait [`crate::check::Real`].
 
-/// Double precision: `f64`, `DVec2`, `DVec3`. The precision of `crate::geometry`.
+/// Double precision: `f64`, `DVec2`, `DVec3`. The precision of `crate::geometry` and
+/// `crate::sampling`.
 pub mod double {
     /// The scalar.
     pub type Float = f64;

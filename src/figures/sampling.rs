@@ -254,6 +254,7 @@ fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 fn single_precision(name: &str) -> (String, String) {
     use crate::check::single::{norm_error, square_points, z_error};
     use crate::sampling::{cosine, sphere};
+    use crate::single::sampling as single;
     use glam::{DVec2, Vec2, Vec3};
     type F32 = fn(Vec2) -> Vec3;
     type F64 = fn(DVec2) -> DVec3;
@@ -266,7 +267,7 @@ fn single_precision(name: &str) -> (String, String) {
     };
     match name {
         "sphere, inverse CDF" | "hemisphere, flipped inverse CDF" => both(
-            sphere::single::sphere_inverse_cdf,
+            single::sphere::sphere_inverse_cdf,
             sphere::sphere_inverse_cdf,
         ),
         "sphere, Gaussian" | "sphere, rejection" => {
@@ -274,21 +275,21 @@ fn single_precision(name: &str) -> (String, String) {
             let worst = crate::check::max_abs((0..200_000).map(|_| {
                 let v = rng::unit_vector(&mut r).as_vec3()
                     * 10f32.powf(rng::uniform(&mut r, -30.0, 30.0) as f32);
-                sphere::single::normalize_robust(v).map_or(f64::NAN, |w| {
+                single::sphere::normalize_robust(v).map_or(f64::NAN, |w| {
                     (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
                 })
             }));
             (format!("{worst:.2}"), "—".into())
         }
         "cosine, seed angles" => both(
-            cosine::single::cosine_seed_angles,
+            single::cosine::cosine_seed_angles,
             cosine::cosine_seed_angles,
         ),
         "cosine, seed Cartesian" => both(
-            cosine::single::cosine_seed_cartesian,
+            single::cosine::cosine_seed_cartesian,
             cosine::cosine_seed_cartesian,
         ),
-        "cosine, Malley (concentric)" => both(cosine::single::cosine_malley, cosine::cosine_malley),
+        "cosine, Malley (concentric)" => both(single::cosine::cosine_malley, cosine::cosine_malley),
         _ => ("—".into(), "—".into()),
     }
 }
