@@ -7,7 +7,8 @@
 //! * `Float`: the scalar, `f64` or `f32`;
 //! * `V2`, `V3`: its glam vectors, `DVec2`, `DVec3` or `Vec2`, `Vec3`;
 //! * `consts`: its mathematical constants, `std::f64::consts` or `std::f32::consts`
-//!   (so `consts::TAU` is `τ` rounded to the module's precision).
+//!   (so `consts::TAU` is `τ` rounded to the module's precision);
+//! * `widen`: a `V3` converted to `DVec3`, exactly, for errors measured in `f64`.
 //!
 //! Each of those files begins with `use super::precision::{Float, V2, V3, consts};` (or
 //! the names it needs): it
@@ -32,6 +33,11 @@ pub mod double {
     pub type Float = f64;
     pub use glam::{DVec2 as V2, DVec3 as V3};
     pub use std::f64::consts;
+
+    /// `v` as a `DVec3`: the identity.
+    pub fn widen(v: V3) -> glam::DVec3 {
+        v
+    }
 }
 
 /// Single precision: `f32`, `Vec2`, `Vec3`. The precision of the twins in
@@ -41,4 +47,9 @@ pub mod single {
     pub type Float = f32;
     pub use glam::{Vec2 as V2, Vec3 as V3};
     pub use std::f32::consts;
+
+    /// `v` widened to a `DVec3` (exact: every `f32` is an `f64`).
+    pub fn widen(v: V3) -> glam::DVec3 {
+        v.as_dvec3()
+    }
 }
