@@ -47,6 +47,10 @@ mod spectral {
 }
 
 mod renderer {
+    #[expect(
+        clippy::module_inception,
+        reason = "the part and its chapter share the name: renderer::renderer"
+    )]
     mod renderer;
     mod scene;
 }
