@@ -1,4 +1,5 @@
-//! Rays, `P(t) = O + t D`. Written once for both precisions (see [`crate::precision`]).
+//! Rays, `P(t) = O + t D`. Chapter: *Ray-sphere intersection* (`chapters/geometry/sphere.md`).
+//! Written once for both precisions (see [`crate::precision`]).
 
 use super::precision::{Float, V3};
 
