@@ -7,12 +7,12 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use raylemma::check::Real;
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
-use raylemma::geometry::{Ray, Sphere};
-use raylemma::real::Real;
+use raylemma::single::geometry::sphere as single;
 use raylemma::workload::timing_rays;
 
-type Intersect<R> = fn(&Ray<R>, &Sphere<R>, R) -> Option<R>;
+type Intersect<R> = fn(&<R as Real>::Ray, &<R as Real>::Sphere, R) -> Option<R>;
 
 fn bench_form<R: Real>(c: &mut Criterion, name: &str, f: Intersect<R>) {
     let (rays, sphere) = timing_rays::<R>(4096);
@@ -22,7 +22,7 @@ fn bench_form<R: Real>(c: &mut Criterion, name: &str, f: Intersect<R>) {
         b.iter(|| {
             let mut hits = 0u32;
             for ray in &rays {
-                hits += u32::from(f(black_box(ray), black_box(&sphere), R::zero()).is_some());
+                hits += u32::from(f(black_box(ray), black_box(&sphere), R::ZERO).is_some());
             }
             hits
         });
@@ -31,8 +31,8 @@ fn bench_form<R: Real>(c: &mut Criterion, name: &str, f: Intersect<R>) {
 }
 
 fn sphere(c: &mut Criterion) {
-    bench_form::<f32>(c, "textbook", intersect_textbook);
-    bench_form::<f32>(c, "stable", intersect_stable);
+    bench_form::<f32>(c, "textbook", single::intersect_textbook);
+    bench_form::<f32>(c, "stable", single::intersect_stable);
     bench_form::<f64>(c, "textbook", intersect_textbook);
     bench_form::<f64>(c, "stable", intersect_stable);
 }

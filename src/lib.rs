@@ -4,7 +4,8 @@
 //! checked numerically. Each module is one concept and one chapter of the book
 //! (`chapters/`), and has one test file (`tests/`).
 //!
-//! * [`real`]: the two precisions the geometry is written for.
+//! * [`precision`]: the two precisions (`f64`, `f32`) the geometry, samplers and frames
+//!   are written for; [`single`] holds their `f32` twins.
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
 //! * [`data`]: errors of data files (file, line, problem).
@@ -25,10 +26,11 @@ pub mod check;
 pub mod data;
 pub mod geometry;
 pub mod optics;
-pub mod real;
+pub mod precision;
 pub mod render;
 pub mod rng;
 pub mod sampling;
+pub mod single;
 pub mod spectral;
 pub mod stats;
 pub mod transport;

@@ -5,8 +5,7 @@
 use glam::DVec3;
 use rand::RngExt as _;
 
-use crate::geometry::{Ray, Sphere};
-use crate::real::Real;
+use crate::check::Real;
 use crate::rng;
 use crate::sampling::tabulated::{Piecewise1D, PiecewiseLinear1D};
 
@@ -19,19 +18,16 @@ pub fn uniform_inputs(n: usize) -> Vec<f64> {
 
 /// Rays for timing: from 5 radii away towards random points within 1.4 radii of a unit
 /// sphere's centre, so that about half of them hit.
-pub fn timing_rays<R: Real>(n: usize) -> (Vec<Ray<R>>, Sphere<R>) {
+pub fn timing_rays<R: Real>(n: usize) -> (Vec<R::Ray>, R::Sphere) {
     let mut rng = rng::seeded(0x7157);
     let rays = (0..n)
         .map(|_| {
             let origin = rng::unit_vector(&mut rng) * 5.0;
             let target = rng::unit_vector(&mut rng) * 1.4 * rng::uniform(&mut rng, 0.0, 1.0).cbrt();
-            Ray::new(R::narrow3(origin), R::narrow3(target - origin))
+            R::ray(origin, target - origin)
         })
         .collect();
-    (
-        rays,
-        Sphere::new(R::v3(R::zero(), R::zero(), R::zero()), R::one()),
-    )
+    (rays, R::sphere(DVec3::ZERO, 1.0))
 }
 
 /// Cosines for timing: 4096 uniform in `[0, 1]`, seeded.

@@ -9,9 +9,12 @@
 //! and on planted bugs (which must fail), so a student's implementation is held to exactly
 //! the standard the book's code is.
 
+mod real;
 pub mod single;
 pub mod sphere;
 pub mod warp;
+
+pub use real::Real;
 
 use std::fmt;
 

@@ -8,23 +8,23 @@
 
 use glam::DVec3;
 
-use super::{Finding, Verdict};
-use crate::geometry::{Ray, Sphere};
-use crate::real::Real;
+use super::{Finding, Real, Verdict};
 use crate::rng::{self, Rng, log_uniform, uniform};
+use crate::single::geometry::{Ray, Sphere};
 
 /// Anything that intersects a ray with a sphere: returns the smallest `t > t_min` with
 /// `|O + tD - C| = r`, or `None`.
 ///
-/// Implemented for every `Fn(&Ray<R>, &Sphere<R>, R) -> Option<R>`, so a plain function
-/// such as `raylemma::geometry::sphere::intersect_stable::<f32>` is an intersector.
+/// Implemented for every `Fn(&R::Ray, &R::Sphere, R) -> Option<R>`, so a plain function
+/// such as `raylemma::single::geometry::sphere::intersect_stable` (`f32`) or
+/// `raylemma::geometry::sphere::intersect_stable` (`f64`) is an intersector.
 pub trait SphereIntersector<R: Real> {
     /// The first intersection beyond `t_min`.
-    fn intersect(&self, ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> Option<R>;
+    fn intersect(&self, ray: &R::Ray, sphere: &R::Sphere, t_min: R) -> Option<R>;
 }
 
-impl<R: Real, F: Fn(&Ray<R>, &Sphere<R>, R) -> Option<R>> SphereIntersector<R> for F {
-    fn intersect(&self, ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> Option<R> {
+impl<R: Real, F: Fn(&R::Ray, &R::Sphere, R) -> Option<R>> SphereIntersector<R> for F {
+    fn intersect(&self, ray: &R::Ray, sphere: &R::Sphere, t_min: R) -> Option<R> {
         self(ray, sphere, t_min)
     }
 }
@@ -45,32 +45,35 @@ pub const SEED: u64 = 0x5eed_5fe7e;
 
 /// A constructed case: a ray, a sphere, and their widened (`f64`) values.
 struct Case<R: Real> {
-    ray: Ray<R>,
-    sphere: Sphere<R>,
+    ray: R::Ray,
+    sphere: R::Sphere,
     /// `eps (|O| + |C| + r)`: one unit of error for this case.
     unit: f64,
 }
 
 impl<R: Real> Case<R> {
     fn new(origin: DVec3, dir: DVec3, center: DVec3, radius: f64) -> Self {
-        let ray = Ray::new(R::narrow3(origin), R::narrow3(dir));
-        let sphere = Sphere::new(R::narrow3(center), R::lit(radius));
-        let eps = R::epsilon().wide();
+        let ray = R::ray(origin, dir);
+        let sphere = R::sphere(center, radius);
+        let eps = R::EPSILON.wide();
         let unit = eps
-            * (R::wide3(ray.origin).length()
-                + R::wide3(sphere.center).length()
-                + sphere.radius.wide());
+            * (R::wide3(R::origin(&ray)).length()
+                + R::wide3(R::center(&sphere)).length()
+                + R::radius(&sphere).wide());
         Self { ray, sphere, unit }
     }
 
     fn dir_len(&self) -> f64 {
-        R::wide3(self.ray.dir).length()
+        R::wide3(R::dir(&self.ray)).length()
     }
 
     fn describe(&self, t_min: f64, got: Option<R>, expected: &str) -> String {
         format!(
             "ray O={:?} D={:?}, sphere C={:?} r={}, t_min={t_min:e}: got {got:?}, expected {expected}",
-            self.ray.origin, self.ray.dir, self.sphere.center, self.sphere.radius
+            R::origin(&self.ray),
+            R::dir(&self.ray),
+            R::center(&self.sphere),
+            R::radius(&self.sphere)
         )
     }
 }
@@ -122,14 +125,14 @@ fn hits<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize) -> Find
         let t_star = log_uniform(rng, 0.1, 10.0) * radius / dir.length();
         let origin = center + u * radius - dir * t_star;
         let case = Case::<R>::new(origin, dir, center, radius);
-        let got = f.intersect(&case.ray, &case.sphere, R::zero());
+        let got = f.intersect(&case.ray, &case.sphere, R::ZERO);
         let describe = || case.describe(0.0, got, &format!("t = {t_star:e}"));
         match got {
             Some(t) => {
                 let t_err = (t.wide() - t_star).abs() * case.dir_len() / case.unit;
-                let p = R::wide3(case.ray.at(t));
-                let c = R::wide3(case.sphere.center);
-                let off = ((p - c).length() - case.sphere.radius.wide()).abs() / case.unit;
+                let p = R::wide3(R::at(&case.ray, t));
+                let c = R::wide3(R::center(&case.sphere));
+                let off = ((p - c).length() - R::radius(&case.sphere).wide()).abs() / case.unit;
                 finding.measure(t_err.max(off), T_ERROR_BOUND.max(ON_SPHERE_BOUND), describe);
             }
             None => finding.record(false, describe),
@@ -177,8 +180,8 @@ fn tangents<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize) -> 
         let t_star = log_uniform(rng, 0.1, 10.0) * radius / dir.length();
         let origin = center + u * radius - dir * t_star;
         let case = Case::<R>::new(origin, dir, center, radius);
-        let got = f.intersect(&case.ray, &case.sphere, R::zero());
-        let bound = 4.0 * R::epsilon().wide().sqrt() / R::epsilon().wide();
+        let got = f.intersect(&case.ray, &case.sphere, R::ZERO);
+        let bound = 4.0 * R::EPSILON.wide().sqrt() / R::EPSILON.wide();
         let describe = || case.describe(0.0, got, &format!("none, or t near {t_star:e}"));
         match got {
             Some(t) => {
@@ -302,7 +305,7 @@ fn direction_scale<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usi
         let origin = center + u * radius - dir * t_star;
         let s = scales[i % scales.len()];
         let case = Case::<R>::new(origin, dir * s, center, radius);
-        let got = f.intersect(&case.ray, &case.sphere, R::zero());
+        let got = f.intersect(&case.ray, &case.sphere, R::ZERO);
         let want = t_star / s;
         let describe = || case.describe(0.0, got, &format!("t = {want:e}"));
         match got {
@@ -349,7 +352,7 @@ pub fn far_sphere(f: &impl SphereIntersector<f32>, distance: f64, grid: usize) -
     let mut rng = rng::seeded(SEED ^ distance.to_bits());
     let d_hat = rng::unit_vector(&mut rng);
     let (e1, e2) = d_hat.any_orthonormal_pair();
-    let sphere = Sphere::<f32>::new(f32::narrow3(FAR_CENTER), 1.0);
+    let sphere = Sphere::new(FAR_CENTER.as_vec3(), 1.0);
     let c = FAR_CENTER;
     let mut row = FarRow {
         distance,
@@ -363,12 +366,12 @@ pub fn far_sphere(f: &impl SphereIntersector<f32>, distance: f64, grid: usize) -
         for j in 0..grid {
             let x = -1.25 + 2.5 * (i as f64 + 0.5) / grid as f64;
             let y = -1.25 + 2.5 * (j as f64 + 0.5) / grid as f64;
-            let ray = Ray::<f32>::new(
-                f32::narrow3(c - d_hat * distance + e1 * x + e2 * y),
-                f32::narrow3(d_hat),
+            let ray = Ray::new(
+                (c - d_hat * distance + e1 * x + e2 * y).as_vec3(),
+                d_hat.as_vec3(),
             );
             // The exact geometry of the rounded ray, in f64.
-            let (o, d) = (f32::wide3(ray.origin), f32::wide3(ray.dir));
+            let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
             let fo = o - c;
             let a = d.dot(d);
             let t_c = -fo.dot(d) / a;
@@ -450,9 +453,9 @@ pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, rays: usize, seed: 
         if dir.dot(u) < 0.0 {
             dir = -dir; // outward
         }
-        let ray = Ray::<R>::new(R::narrow3(center + u * radius), R::narrow3(dir));
-        let sphere = Sphere::<R>::new(R::narrow3(center), R::lit(radius));
-        if f.intersect(&ray, &sphere, R::zero()).is_some() {
+        let ray = R::ray(center + u * radius, dir);
+        let sphere = R::sphere(center, radius);
+        if f.intersect(&ray, &sphere, R::ZERO).is_some() {
             hits += 1;
         }
     }

@@ -12,22 +12,26 @@
 //!
 //! Both return the smallest root strictly greater than the caller's `t_min`, or `None`.
 //! Neither ever returns NaN: a NaN discriminant or root counts as a miss.
+//!
+//! Written once for both precisions (see [`crate::precision`]): `Float` and `V3` are
+//! `f64` and `DVec3` in `raylemma::geometry::sphere`, `f32` and `Vec3` in its twin
+//! `raylemma::single::geometry::sphere`.
 
-use crate::geometry::Ray;
-use crate::real::Real;
+use super::Ray;
+use super::precision::{Float, V3};
 
 /// A sphere with centre `center` and radius `radius` (> 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sphere<R: Real> {
+pub struct Sphere {
     /// The centre `C`.
-    pub center: R::V3,
+    pub center: V3,
     /// The radius `r`.
-    pub radius: R,
+    pub radius: Float,
 }
 
-impl<R: Real> Sphere<R> {
+impl Sphere {
     /// A sphere of centre `center` and radius `radius`.
-    pub fn new(center: R::V3, radius: R) -> Self {
+    pub fn new(center: V3, radius: Float) -> Self {
         Self { center, radius }
     }
 }
@@ -38,13 +42,13 @@ impl<R: Real> Sphere<R> {
 /// With `f = O - C`, `a = D.D`, `b = D.f` (half the linear coefficient) and
 /// `c = f.f - r^2`, the roots are `t = (-b -+ sqrt(b^2 - a c)) / a`.
 /// The ray hits iff the discriminant `b^2 - a c >= 0`.
-pub fn intersect_textbook<R: Real>(ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> Option<R> {
+pub fn intersect_textbook(ray: &Ray, sphere: &Sphere, t_min: Float) -> Option<Float> {
     let f = ray.origin - sphere.center;
-    let a = R::dot(ray.dir, ray.dir);
-    let b = R::dot(ray.dir, f);
-    let c = R::dot(f, f) - sphere.radius * sphere.radius;
+    let a = ray.dir.dot(ray.dir);
+    let b = ray.dir.dot(f);
+    let c = f.dot(f) - sphere.radius * sphere.radius;
     let discriminant = b * b - a * c;
-    if discriminant.is_nan() || discriminant < R::zero() {
+    if discriminant.is_nan() || discriminant < 0.0 {
         return None; // a miss (or a NaN discriminant)
     }
     let root = discriminant.sqrt();
@@ -63,17 +67,17 @@ pub fn intersect_textbook<R: Real>(ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -
 ///   from a squared *distance* instead of a difference of two huge squares;
 /// * `q = b' + sign(b') sqrt(a (r^2 - l.l))` adds two numbers of the same sign, and the
 ///   roots are `t = c / q` and `t = q / a` (their product is `c / a`, Vieta).
-pub fn intersect_stable<R: Real>(ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> Option<R> {
+pub fn intersect_stable(ray: &Ray, sphere: &Sphere, t_min: Float) -> Option<Float> {
     let f = ray.origin - sphere.center;
-    let a = R::dot(ray.dir, ray.dir);
-    let b = -R::dot(f, ray.dir);
+    let a = ray.dir.dot(ray.dir);
+    let b = -f.dot(ray.dir);
     let r2 = sphere.radius * sphere.radius;
     let l = f + ray.dir * (b / a);
-    let delta = r2 - R::dot(l, l);
-    if delta.is_nan() || delta < R::zero() {
+    let delta = r2 - l.dot(l);
+    if delta.is_nan() || delta < 0.0 {
         return None; // the line passes farther than r from the centre (or NaN)
     }
-    let c = R::dot(f, f) - r2;
+    let c = f.dot(f) - r2;
     let q = b + (a * delta).sqrt().copysign(b);
     let (t0, t1) = (c / q, q / a);
     let (t_near, t_far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
@@ -84,7 +88,7 @@ pub fn intersect_stable<R: Real>(ray: &Ray<R>, sphere: &Sphere<R>, t_min: R) -> 
 // ANCHOR: nearest_root
 /// The first intersection along the ray: the smaller root if it lies beyond `t_min`,
 /// else the larger one, else none. NaN roots fail every comparison and are skipped.
-pub fn nearest_root_above<R: Real>(t_near: R, t_far: R, t_min: R) -> Option<R> {
+pub fn nearest_root_above(t_near: Float, t_far: Float, t_min: Float) -> Option<Float> {
     if t_near > t_min {
         Some(t_near)
     } else if t_far > t_min {

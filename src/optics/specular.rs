@@ -109,7 +109,7 @@ pub struct FurnacePath {
 /// `F` (Fresnel) and refraction with `1 - F`, so the weight `F / F` is 1. A correct
 /// specular BSDF returns radiance exactly 1 for every path that hits the sphere.
 pub fn furnace_path(
-    ray: Ray<f64>,
+    ray: Ray,
     material: Material,
     cosine: CosineTerm,
     rng: &mut Rng,
@@ -160,7 +160,7 @@ pub fn furnace_path(
 
 /// A ray from 3 radii away aimed at a uniformly random point of the sphere's silhouette
 /// disc, so that it hits.
-pub fn furnace_camera_ray(rng: &mut Rng) -> Ray<f64> {
+pub fn furnace_camera_ray(rng: &mut Rng) -> Ray {
     let origin = rng::unit_vector(rng) * 3.0;
     let (t, b) = (-origin.normalize()).any_orthonormal_pair();
     let r = rng::uniform(rng, 0.0, 1.0).sqrt() * 0.999;

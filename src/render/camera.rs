@@ -42,7 +42,7 @@ impl Camera {
 
     /// The ray through the point `(x + jitter.x, y + jitter.y)` of the image, in pixels
     /// from its top-left corner (a box filter when `jitter` is uniform in the unit square).
-    pub fn ray(&self, x: u32, y: u32, jitter: DVec2) -> Ray<f64> {
+    pub fn ray(&self, x: u32, y: u32, jitter: DVec2) -> Ray {
         let sx = 2.0 * (f64::from(x) + jitter.x) / f64::from(self.width) - 1.0;
         let sy = 1.0 - 2.0 * (f64::from(y) + jitter.y) / f64::from(self.height);
         let d = self.forward + sx * self.right + sy * self.up;

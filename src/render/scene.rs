@@ -192,7 +192,7 @@ pub enum Material {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Geometry {
     /// A sphere.
-    Sphere(Sphere<f64>),
+    Sphere(Sphere),
     /// A parallelogram `corner + a e1 + b e2`, `a, b` in `[0, 1]` (the light chapter's
     /// [`QuadLight`] serves as its geometry; a scattering quad is seen from both sides).
     Quad(QuadLight),

@@ -5,69 +5,53 @@
 //! to be the same distribution: the seed's inverse CDF in angles, its Cartesian form, and
 //! Malley's method (lift a uniform disc sample onto the hemisphere), here with the
 //! concentric disc map.
+//!
+//! Written once for both precisions (see [`crate::precision`]): `Float`, `V2`, `V3` are
+//! `f64`, `DVec2`, `DVec3` in `raylemma::sampling::cosine` and `f32`, `Vec2`, `Vec3` in its
+//! twin `raylemma::single::sampling::cosine`.
 
-use std::f64::consts::FRAC_1_PI;
+use super::disc::disc_concentric;
+use super::precision::{Float, V2, V3, consts};
 
-use glam::{DVec2, DVec3};
-
-use crate::sampling::disc::disc_concentric;
-
-/// The constructions of this chapter, written once for both precisions: `$t` is `f64` or
-/// `f32` and `$V2`, `$V3` its glam vectors. Expanded here for `f64`, and in [`single`] for
-/// `f32`.
-macro_rules! precision {
-    ($t:ident, $V2:ident, $V3:ident) => {
-        // ANCHOR: seed_angles
-        /// The seed's inverse CDF in angles: `F(theta) = (1 - cos 2 theta) / 2`, so
-        /// `theta = acos(1 - 2 u1) / 2`, and `phi = 2 pi u2`.
-        pub fn cosine_seed_angles(u: $V2) -> $V3 {
-            let theta = (1.0 - 2.0 * u.x).acos() / 2.0;
-            let phi = std::$t::consts::TAU * u.y;
-            $V3::new(
-                theta.sin() * phi.cos(),
-                theta.sin() * phi.sin(),
-                theta.cos(),
-            )
-        }
-        // ANCHOR_END: seed_angles
-
-        // ANCHOR: seed_cartesian
-        /// The seed's Cartesian form, from the half-angle identities: `sin theta = sqrt(u1)`,
-        /// `cos theta = sqrt(1 - u1)`. For `u1 < 1`, `z > 0`.
-        pub fn cosine_seed_cartesian(u: $V2) -> $V3 {
-            let (s, phi) = (u.x.sqrt(), std::$t::consts::TAU * u.y);
-            $V3::new(s * phi.cos(), s * phi.sin(), (1.0 - u.x).sqrt())
-        }
-        // ANCHOR_END: seed_cartesian
-
-        // ANCHOR: malley
-        /// Malley's method: a uniform point `(x, y)` of the disc lifted to `z = sqrt(1 - r^2)`.
-        ///
-        /// Near the rim, `1 - x^2 - y^2` loses every digit (and can round below zero: NaN). The
-        /// concentric map's radius is `r = max(|2u1 - 1|, |2u2 - 1|)`, so the distance to the rim
-        /// is known exactly from `u`: `1 - r = 2 min(u1, 1 - u1, u2, 1 - u2)`, and
-        /// `z = sqrt((1 - r)(1 + r))` stays positive for every `u` inside the square.
-        pub fn cosine_malley(u: $V2) -> $V3 {
-            let p = disc_concentric(u);
-            let to_rim = 2.0 * u.x.min(1.0 - u.x).min(u.y).min(1.0 - u.y);
-            let z = (to_rim * (2.0 - to_rim)).max(0.0).sqrt();
-            $V3::new(p.x, p.y, z)
-        }
-        // ANCHOR_END: malley
-    };
+// ANCHOR: seed_angles
+/// The seed's inverse CDF in angles: `F(theta) = (1 - cos 2 theta) / 2`, so
+/// `theta = acos(1 - 2 u1) / 2`, and `phi = 2 pi u2`.
+pub fn cosine_seed_angles(u: V2) -> V3 {
+    let theta = (1.0 - 2.0 * u.x).acos() / 2.0;
+    let phi = consts::TAU * u.y;
+    V3::new(
+        theta.sin() * phi.cos(),
+        theta.sin() * phi.sin(),
+        theta.cos(),
+    )
 }
+// ANCHOR_END: seed_angles
 
-precision!(f64, DVec2, DVec3);
-
-/// The same functions in single precision (`f32`, `Vec2`, `Vec3`): the book measures
-/// the same formulas in both precisions, and a renderer written in `f32` can use them.
-pub mod single {
-    use crate::sampling::disc::single::disc_concentric;
-    use glam::{Vec2, Vec3};
-    precision!(f32, Vec2, Vec3);
+// ANCHOR: seed_cartesian
+/// The seed's Cartesian form, from the half-angle identities: `sin theta = sqrt(u1)`,
+/// `cos theta = sqrt(1 - u1)`. For `u1 < 1`, `z > 0`.
+pub fn cosine_seed_cartesian(u: V2) -> V3 {
+    let (s, phi) = (u.x.sqrt(), consts::TAU * u.y);
+    V3::new(s * phi.cos(), s * phi.sin(), (1.0 - u.x).sqrt())
 }
+// ANCHOR_END: seed_cartesian
+
+// ANCHOR: malley
+/// Malley's method: a uniform point `(x, y)` of the disc lifted to `z = sqrt(1 - r^2)`.
+///
+/// Near the rim, `1 - x^2 - y^2` loses every digit (and can round below zero: NaN). The
+/// concentric map's radius is `r = max(|2u1 - 1|, |2u2 - 1|)`, so the distance to the rim
+/// is known exactly from `u`: `1 - r = 2 min(u1, 1 - u1, u2, 1 - u2)`, and
+/// `z = sqrt((1 - r)(1 + r))` stays positive for every `u` inside the square.
+pub fn cosine_malley(u: V2) -> V3 {
+    let p = disc_concentric(u);
+    let to_rim = 2.0 * u.x.min(1.0 - u.x).min(u.y).min(1.0 - u.y);
+    let z = (to_rim * (2.0 - to_rim)).max(0.0).sqrt();
+    V3::new(p.x, p.y, z)
+}
+// ANCHOR_END: malley
 
 /// The cosine-weighted density `max(z, 0) / pi`, per steradian.
-pub fn cosine_pdf(w: DVec3) -> f64 {
-    w.z.max(0.0) * FRAC_1_PI
+pub fn cosine_pdf(w: V3) -> Float {
+    w.z.max(0.0) * consts::FRAC_1_PI
 }

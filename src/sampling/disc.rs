@@ -2,85 +2,71 @@
 //!
 //! Both maps are area-preserving warps from the unit square with pdf `1 / pi`; they differ
 //! in how much they stretch the square's cells, which matters for stratified samples.
-
-use std::f64::consts::{FRAC_PI_4, PI, TAU};
+//!
+//! Written once for both precisions (see [`crate::precision`]): `Float`, `V2`, `V3` are
+//! `f64`, `DVec2`, `DVec3` in `raylemma::sampling::disc` and `f32`, `Vec2`, `Vec3` in its
+//! twin `raylemma::single::sampling::disc`.
 
 use glam::{DVec2, DVec3};
 
+use super::precision::{Float, V2, V3, consts};
+
 /// Density of a uniform point on the unit disc, per unit area.
-pub const DISC_PDF: f64 = 1.0 / PI;
+pub const DISC_PDF: Float = 1.0 / consts::PI;
 
-/// The maps of this chapter, written once for both precisions: `$t` is `f64` or `f32` and
-/// `$V2`, `$V3` its glam vectors. Expanded here for `f64`, and in [`single`] for `f32`.
-macro_rules! precision {
-    ($t:ident, $V2:ident, $V3:ident) => {
-        // ANCHOR: polar
-        /// The polar map: `r = sqrt(u1)` (the inverse of the radial CDF `r^2`), `phi = 2 pi u2`.
-        pub fn disc_polar(u: $V2) -> $V3 {
-            let r = u.x.sqrt();
-            let phi = std::$t::consts::TAU * u.y;
-            $V3::new(r * phi.cos(), r * phi.sin(), 0.0)
-        }
-        // ANCHOR_END: polar
+// ANCHOR: polar
+/// The polar map: `r = sqrt(u1)` (the inverse of the radial CDF `r^2`), `phi = 2 pi u2`.
+pub fn disc_polar(u: V2) -> V3 {
+    let r = u.x.sqrt();
+    let phi = consts::TAU * u.y;
+    V3::new(r * phi.cos(), r * phi.sin(), 0.0)
+}
+// ANCHOR_END: polar
 
-        // ANCHOR: concentric
-        /// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
-        /// concentric circles, each square's wedge to a sector of equal angle.
-        /// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
-        /// `r = a.y` and `phi = pi/2 - (pi/4) a.x / a.y`.
-        pub fn disc_concentric(u: $V2) -> $V3 {
-            let a = 2.0 * u - $V2::ONE;
-            if a == $V2::ZERO {
-                return $V3::ZERO;
-            }
-            let (r, phi) = if a.x.abs() > a.y.abs() {
-                (a.x, std::$t::consts::FRAC_PI_4 * (a.y / a.x))
-            } else {
-                (
-                    a.y,
-                    std::$t::consts::FRAC_PI_2 - std::$t::consts::FRAC_PI_4 * (a.x / a.y),
-                )
-            };
-            $V3::new(r * phi.cos(), r * phi.sin(), 0.0)
-        }
-        // ANCHOR_END: concentric
+// ANCHOR: concentric
+/// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
+/// concentric circles, each square's wedge to a sector of equal angle.
+/// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
+/// `r = a.y` and `phi = pi/2 - (pi/4) a.x / a.y`.
+pub fn disc_concentric(u: V2) -> V3 {
+    let a = 2.0 * u - V2::ONE;
+    if a == V2::ZERO {
+        return V3::ZERO;
+    }
+    let (r, phi) = if a.x.abs() > a.y.abs() {
+        (a.x, consts::FRAC_PI_4 * (a.y / a.x))
+    } else {
+        (a.y, consts::FRAC_PI_2 - consts::FRAC_PI_4 * (a.x / a.y))
     };
+    V3::new(r * phi.cos(), r * phi.sin(), 0.0)
 }
-
-precision!(f64, DVec2, DVec3);
-
-/// The same functions in single precision (`f32`, `Vec2`, `Vec3`): the book measures
-/// the same formulas in both precisions, and a renderer written in `f32` can use them.
-pub mod single {
-    use glam::{Vec2, Vec3};
-    precision!(f32, Vec2, Vec3);
-}
+// ANCHOR_END: concentric
 
 /// The inverse of [`disc_polar`].
-pub fn disc_polar_invert(p: DVec3) -> DVec2 {
+pub fn disc_polar_invert(p: V3) -> V2 {
     let phi = p.y.atan2(p.x);
-    let phi = if phi < 0.0 { phi + TAU } else { phi };
-    DVec2::new(p.x * p.x + p.y * p.y, phi / TAU)
+    let phi = if phi < 0.0 { phi + consts::TAU } else { phi };
+    V2::new(p.x * p.x + p.y * p.y, phi / consts::TAU)
 }
 
 /// The inverse of [`disc_concentric`], wedge by wedge.
-pub fn disc_concentric_invert(p: DVec3) -> DVec2 {
+pub fn disc_concentric_invert(p: V3) -> V2 {
     let radius = (p.x * p.x + p.y * p.y).sqrt();
     if radius == 0.0 {
-        return DVec2::splat(0.5);
+        return V2::splat(0.5);
     }
     let a = if p.x.abs() >= p.y.abs() {
         let ax = radius.copysign(p.x);
-        DVec2::new(ax, ax * (p.y / p.x).atan() / FRAC_PI_4)
+        V2::new(ax, ax * (p.y / p.x).atan() / consts::FRAC_PI_4)
     } else {
         let ay = radius.copysign(p.y);
-        DVec2::new(ay * (p.x / p.y).atan() / FRAC_PI_4, ay)
+        V2::new(ay * (p.x / p.y).atan() / consts::FRAC_PI_4, ay)
     };
-    (a + DVec2::ONE) / 2.0
+    (a + V2::ONE) / 2.0
 }
 
 /// The uniform disc density: `1 / pi` inside, 0 outside.
-pub fn disc_pdf(p: DVec3) -> f64 {
+pub fn disc_pdf(p: V3) -> Float {
     if p.x * p.x + p.y * p.y <= 1.0 {
         DISC_PDF
     } else {
@@ -90,6 +76,9 @@ pub fn disc_pdf(p: DVec3) -> f64 {
 
 /// Anisotropy of a warp at `u`: the ratio of the larger to the smaller singular value of
 /// its Jacobian (1 = cells keep their shape), by central differences.
+///
+/// A measurement of `f64` maps, in `f64` in both twins: its step `h = 1e-6` would leave
+/// nothing but rounding in `f32`.
 pub fn anisotropy(warp: impl Fn(DVec2) -> DVec3, u: DVec2) -> f64 {
     let h = 1e-6;
     let du = (warp(u + DVec2::new(h, 0.0)) - warp(u - DVec2::new(h, 0.0))) / (2.0 * h);

@@ -12,11 +12,13 @@
 //!   2017. The same rotation for `n_z >= 0` and its mirror image for `n_z < 0`, chosen by
 //!   the sign of `n_z` without a branch; it divides by `1 + |n_z| >= 1`.
 //!
-//! Both are written once, generic over the scalar ([`num_traits::Float`]), and used with
-//! `f32` ([`glam::Vec3`]) and `f64` ([`glam::DVec3`]).
+//! Both are written once for both precisions (see [`crate::precision`]): `Float` and `V3`
+//! are `f64` and `DVec3` in `raylemma::sampling::frame` (the renderer's frames) and `f32`
+//! and `Vec3` in its twin `raylemma::single::sampling::frame`.
 
-use glam::{DVec3, Vec3};
-use num_traits::Float;
+use glam::DVec3;
+
+use super::precision::{Float, V3, widen};
 
 // ANCHOR: frisvad
 /// Frisvad (2012): the columns of the rotation about `z × n` that takes `z` to `n`,
@@ -24,14 +26,17 @@ use num_traits::Float;
 /// `t = (1 - x²/(1+z), -xy/(1+z), -x)`, `b = (-xy/(1+z), 1 - y²/(1+z), -y)`,
 ///
 /// with Frisvad's special case for `z < -0.9999999`, where `1 + z` is too close to 0.
-pub fn frisvad<F: Float>([x, y, z]: [F; 3]) -> ([F; 3], [F; 3]) {
-    let (zero, one) = (F::zero(), F::one());
-    if z < F::from(-0.9999999).unwrap_or(-one) {
-        return ([zero, -one, zero], [-one, zero, zero]);
+pub fn frisvad(n: V3) -> (V3, V3) {
+    let V3 { x, y, z } = n;
+    if z < -0.9999999 {
+        return (V3::new(0.0, -1.0, 0.0), V3::new(-1.0, 0.0, 0.0));
     }
-    let a = one / (one + z);
+    let a = 1.0 / (1.0 + z);
     let c = -x * y * a;
-    ([one - x * x * a, c, -x], [c, one - y * y * a, -y])
+    (
+        V3::new(1.0 - x * x * a, c, -x),
+        V3::new(c, 1.0 - y * y * a, -y),
+    )
 }
 // ANCHOR_END: frisvad
 
@@ -44,100 +49,63 @@ pub fn frisvad<F: Float>([x, y, z]: [F; 3]) -> ([F; 3], [F; 3]) {
 /// `(x, y, -z)` reflected back. `s + z` has the sign of `s`, so `|s + z| >= 1`: nothing
 /// is divided by a small number. `copysign` treats `z = -0.0` as negative, which is
 /// harmless (`|s + z| = 1` either way).
-pub fn duff<F: Float>([x, y, z]: [F; 3]) -> ([F; 3], [F; 3]) {
-    let one = F::one();
-    let s = one.copysign(z);
-    let a = -one / (s + z);
+pub fn duff(n: V3) -> (V3, V3) {
+    let V3 { x, y, z } = n;
+    let s = Float::copysign(1.0, z);
+    let a = -1.0 / (s + z);
     let c = x * y * a;
-    ([one + s * x * x * a, s * c, -s * x], [c, s + y * y * a, -y])
+    (
+        V3::new(1.0 + s * x * x * a, s * c, -s * x),
+        V3::new(c, s + y * y * a, -y),
+    )
 }
 // ANCHOR_END: duff
 
-/// The 3-vectors a [`Frame`] is built from: [`Vec3`] and [`DVec3`].
-pub trait FrameVector: Copy {
-    /// The scalar.
-    type S: Float;
-    /// The components.
-    fn to_xyz(self) -> [Self::S; 3];
-    /// A vector from components.
-    fn from_xyz(v: [Self::S; 3]) -> Self;
-}
-
-impl FrameVector for Vec3 {
-    type S = f32;
-    fn to_xyz(self) -> [f32; 3] {
-        self.to_array()
-    }
-    fn from_xyz(v: [f32; 3]) -> Self {
-        Vec3::from_array(v)
-    }
-}
-
-impl FrameVector for DVec3 {
-    type S = f64;
-    fn to_xyz(self) -> [f64; 3] {
-        self.to_array()
-    }
-    fn from_xyz(v: [f64; 3]) -> Self {
-        DVec3::from_array(v)
-    }
-}
-
 /// A construction of `(t, b)` from `n`, such as [`duff`] or [`frisvad`].
-pub type Construction<F> = fn([F; 3]) -> ([F; 3], [F; 3]);
+pub type Construction = fn(V3) -> (V3, V3);
 
 /// An orthonormal frame: tangent `t`, bitangent `b` and normal `n`, right-handed
 /// (`t × b = n`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Frame<V> {
+pub struct Frame {
     /// Tangent: the local `x` axis.
-    pub t: V,
+    pub t: V3,
     /// Bitangent: the local `y` axis.
-    pub b: V,
+    pub b: V3,
     /// Normal: the local `z` axis.
-    pub n: V,
+    pub n: V3,
 }
 
 // ANCHOR: frame
-impl<V: FrameVector> Frame<V> {
+impl Frame {
     /// The frame of the unit normal `n`, by [`duff`].
-    pub fn from_normal(n: V) -> Self {
-        let (t, b) = duff(n.to_xyz());
-        Self {
-            t: V::from_xyz(t),
-            b: V::from_xyz(b),
-            n,
-        }
+    pub fn from_normal(n: V3) -> Self {
+        let (t, b) = duff(n);
+        Self { t, b, n }
     }
 
     /// The frame of the unit normal `n` by a given construction (to compare methods).
-    pub fn with(n: V, construct: Construction<V::S>) -> Self {
-        let (t, b) = construct(n.to_xyz());
-        Self {
-            t: V::from_xyz(t),
-            b: V::from_xyz(b),
-            n,
-        }
+    pub fn with(n: V3, construct: Construction) -> Self {
+        let (t, b) = construct(n);
+        Self { t, b, n }
     }
 
     /// World coordinates to frame coordinates: `(v·t, v·b, v·n)`.
-    pub fn to_local(&self, v: V) -> V {
-        V::from_xyz([dot(v, self.t), dot(v, self.b), dot(v, self.n)])
+    pub fn to_local(&self, v: V3) -> V3 {
+        V3::new(v.dot(self.t), v.dot(self.b), v.dot(self.n))
     }
 
     /// Frame coordinates to world coordinates: `v_x t + v_y b + v_z n`.
-    pub fn to_world(&self, v: V) -> V {
-        let [x, y, z] = v.to_xyz();
-        let (t, b, n) = (self.t.to_xyz(), self.b.to_xyz(), self.n.to_xyz());
-        V::from_xyz(std::array::from_fn(|k| x * t[k] + y * b[k] + z * n[k]))
+    pub fn to_world(&self, v: V3) -> V3 {
+        v.x * self.t + v.y * self.b + v.z * self.n
+    }
+
+    /// [`orthonormality_error`] of this frame, from its vectors widened (exactly) to `f64`.
+    pub fn error(&self) -> f64 {
+        orthonormality_error(widen(self.t), widen(self.b), widen(self.n))
     }
 }
 // ANCHOR_END: frame
-
-fn dot<V: FrameVector>(a: V, b: V) -> V::S {
-    let (a, b) = (a.to_xyz(), b.to_xyz());
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
 
 // ANCHOR: error
 /// How far a frame is from orthonormal and right-handed, computed in `f64` from the
@@ -161,27 +129,13 @@ pub fn orthonormality_error(t: DVec3, b: DVec3, n: DVec3) -> f64 {
 }
 // ANCHOR_END: error
 
-impl Frame<Vec3> {
-    /// [`orthonormality_error`] of this frame, widened to `f64`.
-    pub fn error(&self) -> f64 {
-        orthonormality_error(self.t.as_dvec3(), self.b.as_dvec3(), self.n.as_dvec3())
-    }
-}
-
-impl Frame<DVec3> {
-    /// [`orthonormality_error`] of this frame.
-    pub fn error(&self) -> f64 {
-        orthonormality_error(self.t, self.b, self.n)
-    }
-}
-
 /// The common alternative, for the speed table: pick the coordinate axis least aligned
 /// with `n`, then two cross products and one normalisation (Hughes and Möller 1999).
-pub fn cross_product_frame(n: DVec3) -> (DVec3, DVec3) {
+pub fn cross_product_frame(n: V3) -> (V3, V3) {
     let helper = if n.x.abs() > n.z.abs() {
-        DVec3::new(-n.y, n.x, 0.0)
+        V3::new(-n.y, n.x, 0.0)
     } else {
-        DVec3::new(0.0, -n.z, n.y)
+        V3::new(0.0, -n.z, n.y)
     };
     let t = helper.normalize();
     (t, n.cross(t))

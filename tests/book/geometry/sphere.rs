@@ -6,11 +6,13 @@
 
 use glam::{DVec3, Vec3};
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
+use raylemma::check::Real;
 use raylemma::check::sphere::{self as check, SILHOUETTE_BAND, T_ERROR_BOUND};
 use raylemma::check::sphere::{SELF_HIT_SEED, self_hit_rate};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook, nearest_root_above};
 use raylemma::geometry::{Ray, Sphere};
-use raylemma::real::Real;
+use raylemma::single::geometry::sphere as single;
+use raylemma::single::geometry::{Ray as Ray32, Sphere as Sphere32};
 
 /// Random cases per claim of the general checker.
 const CASES: usize = 20_000;
@@ -20,12 +22,12 @@ const CASES: usize = 20_000;
 
 #[test]
 fn stable_form_passes_every_check_f32() {
-    check::sphere_intersection(&intersect_stable::<f32>, CASES).assert_pass();
+    check::sphere_intersection(&single::intersect_stable, CASES).assert_pass();
 }
 
 #[test]
 fn stable_form_passes_every_check_f64() {
-    check::sphere_intersection(&intersect_stable::<f64>, CASES).assert_pass();
+    check::sphere_intersection(&intersect_stable, CASES).assert_pass();
 }
 
 // ANCHOR: far_test
@@ -33,15 +35,14 @@ fn stable_form_passes_every_check_f64() {
 /// The stable form answers every ray correctly with a bounded error...
 #[test]
 fn stable_form_survives_far_spheres() {
-    let verdict = check::far_spheres(&|r: &Ray<f32>, s: &Sphere<f32>, t| intersect_stable(r, s, t));
+    let verdict = check::far_spheres(&single::intersect_stable);
     verdict.assert_pass();
 }
 
 /// ...while the textbook form fails past some distance: this is why the rewrite exists.
 #[test]
 fn textbook_form_fails_far_spheres() {
-    let verdict =
-        check::far_spheres(&|r: &Ray<f32>, s: &Sphere<f32>, t| intersect_textbook(r, s, t));
+    let verdict = check::far_spheres(&single::intersect_textbook);
     for distance in ["far_1e3", "far_3e3", "far_1e4"] {
         assert!(
             verdict.failed(distance),
@@ -49,11 +50,7 @@ fn textbook_form_fails_far_spheres() {
         );
     }
     // Not only inaccurate: wrong about hit or miss for many rays at 1e4 radii.
-    let row = check::far_sphere(
-        &|r: &Ray<f32>, s: &Sphere<f32>, t| intersect_textbook(r, s, t),
-        1e4,
-        check::FAR_GRID,
-    );
+    let row = check::far_sphere(&single::intersect_textbook, 1e4, check::FAR_GRID);
     assert!(
         row.wrong * 10 >= row.rays,
         "only {} of {} rays wrong",
@@ -67,20 +64,8 @@ fn textbook_form_fails_far_spheres() {
 /// textbook's grows past it: the error of the textbook form grows like distance^2.
 #[test]
 fn textbook_error_grows_quadratically_stable_linearly() {
-    let stable = |d| {
-        check::far_sphere(
-            &|r: &Ray<f32>, s: &Sphere<f32>, t| intersect_stable(r, s, t),
-            d,
-            41,
-        )
-    };
-    let textbook = |d| {
-        check::far_sphere(
-            &|r: &Ray<f32>, s: &Sphere<f32>, t| intersect_textbook(r, s, t),
-            d,
-            41,
-        )
-    };
+    let stable = |d| check::far_sphere(&single::intersect_stable, d, 41);
+    let textbook = |d| check::far_sphere(&single::intersect_textbook, d, 41);
     let (s1, s2) = (stable(1e2), stable(1e3));
     let (t1, t2) = (textbook(1e2), textbook(1e3));
     // Ten times farther: the stable error grows by about 10 (allow 3..30), the textbook's
@@ -97,9 +82,7 @@ fn textbook_error_grows_quadratically_stable_linearly() {
 // ---------------------------------------------------------------------------------------
 // Planted bugs: each must be rejected by the checker, naming the right claim.
 
-fn verdict_f64(
-    f: impl Fn(&Ray<f64>, &Sphere<f64>, f64) -> Option<f64>,
-) -> raylemma::check::Verdict {
+fn verdict_f64(f: impl Fn(&Ray, &Sphere, f64) -> Option<f64>) -> raylemma::check::Verdict {
     check::sphere_intersection(&f, 4_000)
 }
 
@@ -107,14 +90,14 @@ fn verdict_f64(
 fn checker_rejects_the_textbook_form() {
     // Even at ordinary scales (scenes within 10 radii of the origin) the cancellation in
     // -b + sqrt(b^2 - ac) exceeds the error bound for some rays.
-    let verdict = check::sphere_intersection(&intersect_textbook::<f32>, CASES);
+    let verdict = check::sphere_intersection(&single::intersect_textbook, CASES);
     assert!(!verdict.passed(), "{verdict}");
 }
 
 #[test]
 fn checker_rejects_the_seeds_t_greater_than_zero_rule() {
     // The seed: "the smallest value that is still greater than 0", ignoring t_min.
-    let seed_rule = |r: &Ray<f64>, s: &Sphere<f64>, _t_min: f64| intersect_stable(r, s, 0.0);
+    let seed_rule = |r: &Ray, s: &Sphere, _t_min: f64| intersect_stable(r, s, 0.0);
     let verdict = verdict_f64(seed_rule);
     assert!(verdict.failed("surface_origin"), "{verdict}");
     assert!(verdict.failed("nearest_root"), "{verdict}");
@@ -122,7 +105,7 @@ fn checker_rejects_the_seeds_t_greater_than_zero_rule() {
 
 #[test]
 fn checker_rejects_always_the_far_root() {
-    let far_root = |r: &Ray<f64>, s: &Sphere<f64>, t_min: f64| {
+    let far_root = |r: &Ray, s: &Sphere, t_min: f64| {
         let (f, a) = (r.origin - s.center, r.dir.dot(r.dir));
         let (b, c) = (r.dir.dot(f), f.dot(f) - s.radius * s.radius);
         let disc = b * b - a * c;
@@ -139,15 +122,14 @@ fn checker_rejects_always_the_far_root() {
 
 #[test]
 fn checker_rejects_ignoring_t_min() {
-    let no_t_min =
-        |r: &Ray<f64>, s: &Sphere<f64>, _t_min: f64| intersect_stable(r, s, f64::NEG_INFINITY);
+    let no_t_min = |r: &Ray, s: &Sphere, _t_min: f64| intersect_stable(r, s, f64::NEG_INFINITY);
     assert!(verdict_f64(no_t_min).failed("nearest_root"));
 }
 
 #[test]
 fn checker_rejects_assuming_a_unit_direction() {
     // a = D.D replaced by 1: right only for normalised directions.
-    let unit_a = |r: &Ray<f64>, s: &Sphere<f64>, t_min: f64| {
+    let unit_a = |r: &Ray, s: &Sphere, t_min: f64| {
         let f = r.origin - s.center;
         let (b, c) = (r.dir.dot(f), f.dot(f) - s.radius * s.radius);
         let disc = b * b - c;
@@ -166,7 +148,7 @@ fn checker_rejects_assuming_a_unit_direction() {
 #[test]
 fn checker_rejects_a_loose_discriminant_test() {
     // Counting near misses as hits (discriminant >= -1% of a r^2), clamped to a real root.
-    let loose = |r: &Ray<f64>, s: &Sphere<f64>, t_min: f64| {
+    let loose = |r: &Ray, s: &Sphere, t_min: f64| {
         let f = r.origin - s.center;
         let (a, b, c) = (
             r.dir.dot(r.dir),
@@ -185,7 +167,7 @@ fn checker_rejects_a_loose_discriminant_test() {
 
 #[test]
 fn checker_rejects_nan() {
-    let nan = |_: &Ray<f32>, _: &Sphere<f32>, _: f32| Some(f32::NAN);
+    let nan = |_: &Ray32, _: &Sphere32, _: f32| Some(f32::NAN);
     let verdict = check::sphere_intersection(&nan, 1_000);
     assert!(
         verdict.failed("hits") && verdict.failed("misses"),
@@ -195,7 +177,7 @@ fn checker_rejects_nan() {
 
 #[test]
 fn far_checker_rejects_a_sphere_that_is_never_hit() {
-    let never = |_: &Ray<f32>, _: &Sphere<f32>, _: f32| None;
+    let never = |_: &Ray32, _: &Sphere32, _: f32| None;
     let verdict = check::far_spheres(&never);
     assert!(!verdict.passed(), "{verdict}");
 }
@@ -209,9 +191,9 @@ fn far_checker_rejects_a_sphere_that_is_never_hit() {
 #[test]
 fn seed_rule_t_greater_than_zero_self_intersects() {
     for rate in [
-        self_hit_rate(&intersect_stable::<f32>, 20_000, SELF_HIT_SEED),
-        self_hit_rate(&intersect_textbook::<f32>, 20_000, SELF_HIT_SEED),
-        self_hit_rate(&intersect_stable::<f64>, 20_000, SELF_HIT_SEED),
+        self_hit_rate(&single::intersect_stable, 20_000, SELF_HIT_SEED),
+        self_hit_rate(&single::intersect_textbook, 20_000, SELF_HIT_SEED),
+        self_hit_rate(&intersect_stable, 20_000, SELF_HIT_SEED),
     ] {
         assert!(rate >= 0.2, "self-intersection rate {rate}");
     }
@@ -286,10 +268,10 @@ fn textbook_form_is_right_where_well_conditioned() {
 
 #[test]
 fn exact_tangent_and_degenerate_rays_give_no_nan() {
-    let unit = Sphere::<f64>::new(DVec3::ZERO, 1.0);
+    let unit = Sphere::new(DVec3::ZERO, 1.0);
     // Tangent at (0, 1, 0): exactly representable, discriminant exactly 0.
     let tangent = Ray::new(DVec3::new(-5.0, 1.0, 0.0), DVec3::X);
-    for f in [intersect_stable::<f64>, intersect_textbook::<f64>] {
+    for f in [intersect_stable, intersect_textbook] {
         let t = f(&tangent, &unit, 0.0).expect("exact tangent counts as a hit");
         assert!((t - 5.0).abs() <= 1e-12, "t = {t}");
     }
@@ -311,10 +293,10 @@ fn exact_tangent_and_degenerate_rays_give_no_nan() {
 
 #[test]
 fn f32_and_f64_agree_on_a_simple_case() {
-    let ray32 = Ray::<f32>::new(Vec3::new(0.0, 0.0, -10.0), Vec3::Z);
-    let s32 = Sphere::<f32>::new(Vec3::ZERO, 2.0);
-    assert_eq!(intersect_stable(&ray32, &s32, 0.0), Some(8.0));
-    assert_eq!(intersect_textbook(&ray32, &s32, 0.0), Some(8.0));
+    let ray32 = Ray32::new(Vec3::new(0.0, 0.0, -10.0), Vec3::Z);
+    let s32 = Sphere32::new(Vec3::ZERO, 2.0);
+    assert_eq!(single::intersect_stable(&ray32, &s32, 0.0), Some(8.0));
+    assert_eq!(single::intersect_textbook(&ray32, &s32, 0.0), Some(8.0));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -330,13 +312,13 @@ struct Case {
 }
 
 impl Case {
-    fn f64(&self) -> (Ray<f64>, Sphere<f64>) {
+    fn f64(&self) -> (Ray, Sphere) {
         (Ray::new(self.o, self.d), Sphere::new(self.c, self.r))
     }
-    fn f32(&self) -> (Ray<f32>, Sphere<f32>) {
+    fn f32(&self) -> (Ray32, Sphere32) {
         (
-            Ray::new(self.o.as_vec3(), self.d.as_vec3()),
-            Sphere::new(self.c.as_vec3(), self.r as f32),
+            Ray32::new(self.o.as_vec3(), self.d.as_vec3()),
+            Sphere32::new(self.c.as_vec3(), self.r as f32),
         )
     }
     /// Distance of the centre from the ray's line, in f64.
@@ -410,34 +392,41 @@ fn quickcheck(seed: u64) -> QuickCheck {
         .max_tests(50_000)
 }
 
-/// A returned t is finite, above t_min, and its point lies on the sphere.
-fn prop_hit_point_on_sphere<R: Real>(case: Case) -> TestResult {
+/// A t returned by `intersect` (the stable form, in either precision) is finite, above
+/// t_min, and its point lies on the sphere.
+fn prop_hit_point_on_sphere<R: Real>(
+    intersect: fn(&R::Ray, &R::Sphere, R) -> Option<R>,
+    case: Case,
+) -> TestResult {
     if case.d.length() < 1e-3 {
         return TestResult::discard();
     }
-    let ray = Ray::<R>::new(R::narrow3(case.o), R::narrow3(case.d));
-    let sphere = Sphere::<R>::new(R::narrow3(case.c), R::lit(case.r));
-    let Some(t) = intersect_stable(&ray, &sphere, R::zero()) else {
+    let ray = R::ray(case.o, case.d);
+    let sphere = R::sphere(case.c, case.r);
+    let Some(t) = intersect(&ray, &sphere, R::ZERO) else {
         return TestResult::passed();
     };
-    let p = R::wide3(ray.at(t));
-    let off = ((p - R::wide3(sphere.center)).length() - sphere.radius.wide()).abs();
+    let (center, radius) = (R::wide3(R::center(&sphere)), R::radius(&sphere).wide());
+    let p = R::wide3(R::at(&ray, t));
+    let off = ((p - center).length() - radius).abs();
     // Error budget: the inputs' own rounding plus that of the point O + tD.
-    let eps = R::epsilon().wide();
-    let scale =
-        R::wide3(ray.origin).length() + R::wide3(sphere.center).length() + sphere.radius.wide();
-    let bound = T_ERROR_BOUND * eps * (scale + t.wide() * R::wide3(ray.dir).length());
-    TestResult::from_bool(t.wide().is_finite() && t > R::zero() && off <= bound)
+    let eps = R::EPSILON.wide();
+    let scale = R::wide3(R::origin(&ray)).length() + center.length() + radius;
+    let bound = T_ERROR_BOUND * eps * (scale + t.wide() * R::wide3(R::dir(&ray)).length());
+    TestResult::from_bool(t.wide().is_finite() && t > R::ZERO && off <= bound)
 }
 
 #[test]
 fn quickcheck_hit_point_on_sphere_f32() {
-    quickcheck(1).quickcheck(prop_hit_point_on_sphere::<f32> as fn(Case) -> TestResult);
+    let prop: fn(Case) -> TestResult =
+        |case| prop_hit_point_on_sphere(single::intersect_stable, case);
+    quickcheck(1).quickcheck(prop);
 }
 
 #[test]
 fn quickcheck_hit_point_on_sphere_f64() {
-    quickcheck(2).quickcheck(prop_hit_point_on_sphere::<f64> as fn(Case) -> TestResult);
+    let prop: fn(Case) -> TestResult = |case| prop_hit_point_on_sphere(intersect_stable, case);
+    quickcheck(2).quickcheck(prop);
 }
 
 /// f32 and f64 agree on hit or miss, except within the silhouette band of f32.
@@ -458,7 +447,7 @@ fn prop_precisions_agree(case: Case) -> TestResult {
         return TestResult::discard();
     }
     let (r64, s64) = wide.f64();
-    let a = intersect_stable(&r32, &s32, f32::NEG_INFINITY).is_some();
+    let a = single::intersect_stable(&r32, &s32, f32::NEG_INFINITY).is_some();
     let b = intersect_stable(&r64, &s64, f64::NEG_INFINITY).is_some();
     TestResult::from_bool(a == b)
 }
@@ -508,9 +497,11 @@ fn quickcheck_translation_invariant() {
 // The coursework interface, as a student uses it.
 
 // ANCHOR: coursework
-/// A student's own routine: any function with this signature can be checked.
-fn my_intersect(ray: &Ray<f32>, sphere: &Sphere<f32>, t_min: f32) -> Option<f32> {
-    intersect_stable(ray, sphere, t_min) // replace with your own code
+/// A student's own routine: any function with this signature can be checked. This one is
+/// `f32`: `Ray32` and `Sphere32` are `raylemma::single::geometry::{Ray, Sphere}`, and
+/// `single` is `raylemma::single::geometry::sphere`.
+fn my_intersect(ray: &Ray32, sphere: &Sphere32, t_min: f32) -> Option<f32> {
+    single::intersect_stable(ray, sphere, t_min) // replace with your own code
 }
 
 #[test]

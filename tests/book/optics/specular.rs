@@ -148,7 +148,7 @@ fn furnace_with_the_cosine_kept_is_rejected() {
 /// still inside after 40 interactions).
 #[test]
 fn both_branches_conserve_energy() {
-    fn split(ray: Ray<f64>, ior: f64, depth: u32) -> (f64, f64) {
+    fn split(ray: Ray, ior: f64, depth: u32) -> (f64, f64) {
         let sphere = Sphere::new(DVec3::ZERO, 1.0);
         let Some(t) = intersect_stable(&ray, &sphere, 1e-9) else {
             return (1.0, 0.0); // escaped with all its weight

@@ -134,7 +134,7 @@ fn naive_malley_loses_the_rim() {
 #[test]
 fn single_precision_directions_are_unit_and_keep_cos_theta() {
     use raylemma::check::single::{norm_error, square_points, z_error};
-    use raylemma::sampling::cosine::single;
+    use raylemma::single::sampling::cosine as single;
     type F32 = fn(glam::Vec2) -> glam::Vec3;
     type F64 = fn(glam::DVec2) -> DVec3;
     let points = square_points(200_000, 0xF32);
@@ -161,7 +161,7 @@ fn single_precision_directions_are_unit_and_keep_cos_theta() {
         }
     }
     let naive = |u: glam::Vec2| {
-        let p = raylemma::sampling::disc::single::disc_concentric(u);
+        let p = raylemma::single::sampling::disc::disc_concentric(u);
         glam::Vec3::new(p.x, p.y, (1.0 - p.x * p.x - p.y * p.y).max(0.0).sqrt())
     };
     let z = z_error(naive, cosine_malley, &points);

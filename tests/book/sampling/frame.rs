@@ -11,6 +11,7 @@ use glam::{DVec3, Vec3};
 use quickcheck::{Gen, QuickCheck, TestResult};
 use raylemma::rng;
 use raylemma::sampling::frame::{Construction, Frame, duff, frisvad};
+use raylemma::single::sampling::frame as frame32;
 
 // ANCHOR: bound
 /// Bound on [`Frame::error`] (lengths, dot products, `t × b - n`), in units of the
@@ -56,11 +57,11 @@ fn signed_zero_normals() -> Vec<DVec3> {
     v
 }
 
-fn worst32(normals: impl Iterator<Item = DVec3>, f: Construction<f32>) -> f64 {
-    max_abs(normals.map(|n| Frame::with(n.as_vec3(), f).error() / f64::from(f32::EPSILON)))
+fn worst32(normals: impl Iterator<Item = DVec3>, f: frame32::Construction) -> f64 {
+    max_abs(normals.map(|n| frame32::Frame::with(n.as_vec3(), f).error() / f64::from(f32::EPSILON)))
 }
 
-fn worst64(normals: impl Iterator<Item = DVec3>, f: Construction<f64>) -> f64 {
+fn worst64(normals: impl Iterator<Item = DVec3>, f: Construction) -> f64 {
     max_abs(normals.map(|n| Frame::with(n, f).error() / f64::EPSILON))
 }
 
@@ -76,7 +77,7 @@ fn random_normals(seed: u64, n: usize) -> Vec<DVec3> {
 fn duff_is_orthonormal_for_random_normals() {
     let normals = random_normals(1, 100_000);
     let (e32, e64) = (
-        worst32(normals.iter().copied(), duff),
+        worst32(normals.iter().copied(), frame32::duff),
         worst64(normals.iter().copied(), duff),
     );
     assert!(e32 <= ORTHO_BOUND, "f32: {e32} eps");
@@ -92,12 +93,12 @@ fn duff_is_orthonormal_near_the_south_pole() {
         assert!(e <= ORTHO_BOUND, "f64, z = -1 + 1e-{k}: {e} eps");
     }
     for k in 1..=7 {
-        let e = worst32(ring(10f64.powi(-k), 256), duff);
+        let e = worst32(ring(10f64.powi(-k), 256), frame32::duff);
         assert!(e <= ORTHO_BOUND, "f32, z = -1 + 1e-{k}: {e} eps");
     }
     let zeros = signed_zero_normals();
     assert!(worst64(zeros.iter().copied(), duff) <= ORTHO_BOUND);
-    assert!(worst32(zeros.iter().copied(), duff) <= ORTHO_BOUND);
+    assert!(worst32(zeros.iter().copied(), frame32::duff) <= ORTHO_BOUND);
 }
 
 /// The planted bug: Frisvad's construction fails the same bound as `n` approaches
@@ -110,10 +111,10 @@ fn frisvad_fails_near_the_south_pole() {
         assert!(e > ORTHO_BOUND, "f64, z = -1 + 1e-{k}: only {e} eps");
     }
     for k in 2..=7 {
-        let e = worst32(ring(10f64.powi(-k), 256), frisvad);
+        let e = worst32(ring(10f64.powi(-k), 256), frame32::frisvad);
         assert!(e > ORTHO_BOUND, "f32, z = -1 + 1e-{k}: only {e} eps");
     }
-    let e = worst32(ring(1e-7, 256), frisvad) * f64::from(f32::EPSILON);
+    let e = worst32(ring(1e-7, 256), frame32::frisvad) * f64::from(f32::EPSILON);
     assert!(e > 0.1, "f32, z = -1 + 1e-7: error only {e}");
 }
 // ANCHOR_END: near_south_pole
@@ -141,7 +142,7 @@ fn frisvad_is_fine_in_the_upper_hemisphere() {
         .map(|n| DVec3::new(n.x, n.y, n.z.abs()))
         .collect();
     assert!(worst64(upper.iter().copied(), frisvad) <= ORTHO_BOUND);
-    assert!(worst32(upper.iter().copied(), frisvad) <= ORTHO_BOUND);
+    assert!(worst32(upper.iter().copied(), frame32::frisvad) <= ORTHO_BOUND);
     for n in upper.iter().filter(|n| n.z > 0.0) {
         let (a, b) = (Frame::from_normal(*n), Frame::with(*n, frisvad));
         assert!((a.t - b.t).length() <= 4.0 * f64::EPSILON, "{n}");
@@ -159,7 +160,7 @@ fn right_handed_everywhere() {
     for n in normals {
         let f = Frame::from_normal(n);
         assert!(f.t.cross(f.b).dot(n) > 0.0, "{n}: {f:?}");
-        let g = Frame::from_normal(n.as_vec3());
+        let g = frame32::Frame::from_normal(n.as_vec3());
         assert!(g.t.cross(g.b).dot(g.n) > 0.0, "{n}: {g:?}");
     }
 }
@@ -174,7 +175,7 @@ fn matches_glams_implementation_of_the_same_paper() {
         let f = Frame::from_normal(n);
         assert_eq!((f.t, f.b), n.any_orthonormal_pair(), "{n}");
         let m = n.as_vec3();
-        let g = Frame::from_normal(m);
+        let g = frame32::Frame::from_normal(m);
         assert_eq!((g.t, g.b), m.any_orthonormal_pair(), "{m}");
     }
 }
@@ -203,7 +204,7 @@ fn round_trip_and_axes() {
             (back - v).length() <= 8.0 * f64::EPSILON * v.length(),
             "{n}: {v} -> {back}"
         );
-        let g = Frame::from_normal(n.as_vec3());
+        let g = frame32::Frame::from_normal(n.as_vec3());
         let v32 = v.as_vec3();
         let back32 = g.to_world(g.to_local(v32));
         assert!(
@@ -249,7 +250,7 @@ fn prop_orthonormal(x: f64, y: f64, z: f64) -> TestResult {
     };
     let (a, b) = (
         Frame::from_normal(n).error() / f64::EPSILON,
-        Frame::from_normal(n.as_vec3()).error() / f64::from(f32::EPSILON),
+        frame32::Frame::from_normal(n.as_vec3()).error() / f64::from(f32::EPSILON),
     );
     TestResult::from_bool(a <= ORTHO_BOUND && b <= ORTHO_BOUND)
 }
@@ -299,7 +300,10 @@ fn prop_precisions_agree(x: f64, y: f64, z: f64) -> TestResult {
     if n.z.abs() < 1e-3 {
         return TestResult::discard();
     }
-    let (a, b) = (Frame::from_normal(n), Frame::from_normal(n.as_vec3()));
+    let (a, b) = (
+        Frame::from_normal(n),
+        frame32::Frame::from_normal(n.as_vec3()),
+    );
     let d = (a.t - b.t.as_dvec3()).length() + (a.b - b.b.as_dvec3()).length();
     TestResult::from_bool(d <= 16.0 * f64::from(f32::EPSILON))
 }
@@ -332,8 +336,8 @@ fn orthonormality_error_keeps_a_nan() {
 
 #[test]
 fn vec3_and_dvec3_frames_are_the_same_type_of_thing() {
-    let f: Frame<Vec3> = Frame::from_normal(Vec3::Z);
+    let f: frame32::Frame = frame32::Frame::from_normal(Vec3::Z);
     assert_eq!((f.t, f.b, f.n), (Vec3::X, Vec3::Y, Vec3::Z));
-    let g: Frame<DVec3> = Frame::from_normal(-DVec3::Z);
+    let g: Frame = Frame::from_normal(-DVec3::Z);
     assert_eq!((g.t, g.b, g.n), (DVec3::X, -DVec3::Y, -DVec3::Z));
 }

@@ -134,7 +134,7 @@ fn hemisphere_claimed_at_the_sphere_density_is_rejected() {
 
 #[test]
 fn near_zero_vectors_normalise_or_are_refused() {
-    use raylemma::sampling::sphere::single;
+    use raylemma::single::sampling::sphere as single;
     assert_eq!(normalize_robust(DVec3::ZERO), None);
     assert_eq!(normalize_robust(DVec3::new(f64::NAN, 0.0, 0.0)), None);
     assert_eq!(normalize_robust(DVec3::new(f64::INFINITY, 0.0, 0.0)), None);
@@ -198,7 +198,7 @@ fn inverse_at_the_azimuth_seam() {
 #[test]
 fn single_precision_directions_are_unit() {
     use raylemma::check::single::{norm_error, square_points, z_error};
-    use raylemma::sampling::sphere::single;
+    use raylemma::single::sampling::sphere as single;
     let points = square_points(200_000, 0x5F32);
     let n = norm_error(single::sphere_inverse_cdf, &points);
     assert!(n <= 2.0, "inverse CDF: worst norm error {n} ε");

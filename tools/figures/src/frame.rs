@@ -10,6 +10,7 @@ use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
 use raylemma::rng;
 use raylemma::sampling::frame::{Construction, Frame, cross_product_frame, duff, frisvad};
+use raylemma::single::sampling::frame as frame32;
 use raylemma::workload::timing_normals;
 
 /// The outputs of this chapter.
@@ -47,15 +48,15 @@ pub fn ring(delta: f64, azimuths: usize) -> Vec<DVec3> {
 }
 
 /// Worst [`Frame::error`] over `normals` rounded to f32, in units of `f32::EPSILON`.
-pub fn worst32(normals: &[DVec3], f: Construction<f32>) -> f64 {
+pub fn worst32(normals: &[DVec3], f: frame32::Construction) -> f64 {
     normals
         .iter()
-        .map(|n| Frame::with(n.as_vec3(), f).error() / f64::from(f32::EPSILON))
+        .map(|n| frame32::Frame::with(n.as_vec3(), f).error() / f64::from(f32::EPSILON))
         .fold(0.0, f64::max)
 }
 
 /// Worst [`Frame::error`] over `normals`, in units of `f64::EPSILON`.
-pub fn worst64(normals: &[DVec3], f: Construction<f64>) -> f64 {
+pub fn worst64(normals: &[DVec3], f: Construction) -> f64 {
     normals
         .iter()
         .map(|n| Frame::with(*n, f).error() / f64::EPSILON)
@@ -70,7 +71,7 @@ fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             .map(|k| 10f64.powf(-f64::from(k) / 4.0))
             .collect()
     };
-    let series32 = |label: &str, f: Construction<f32>| Series {
+    let series32 = |label: &str, f: frame32::Construction| Series {
         label: label.into(),
         points: deltas(7)
             .into_iter()
@@ -82,7 +83,7 @@ fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             })
             .collect(),
     };
-    let series64 = |label: &str, f: Construction<f64>| Series {
+    let series64 = |label: &str, f: Construction| Series {
         label: label.into(),
         points: deltas(15)
             .into_iter()
@@ -100,8 +101,8 @@ fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             x_scale: Scale::Log,
             y_scale: Scale::Log,
             series: vec![
-                series32("Frisvad 2012", frisvad),
-                series32("Duff et al. 2017", duff),
+                series32("Frisvad 2012", frame32::frisvad),
+                series32("Duff et al. 2017", frame32::duff),
             ],
         },
         Panel {
@@ -147,8 +148,8 @@ fn errors_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         writeln!(
             md,
             "| {name} | {:.2} | {:.3e} | {:.2} | {:.3e} |",
-            worst32(n32, duff),
-            worst32(n32, frisvad),
+            worst32(n32, frame32::duff),
+            worst32(n32, frame32::frisvad),
             worst64(n64, duff),
             worst64(n64, frisvad)
         )?;
@@ -183,7 +184,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             "Duff et al. 2017 (`Frame::from_normal`)",
             "f32",
             time_frames(&n32, reps, |n| {
-                let f = Frame::from_normal(n);
+                let f = frame32::Frame::from_normal(n);
                 f64::from(f.t.x + f.b.y)
             }),
         ),
@@ -191,8 +192,8 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             "Frisvad 2012",
             "f32",
             time_frames(&n32, reps, |n| {
-                let (t, b) = frisvad(n.to_array());
-                f64::from(t[0] + b[1])
+                let (t, b) = frame32::frisvad(n);
+                f64::from(t.x + b.y)
             }),
         ),
         (
@@ -207,8 +208,8 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             "Frisvad 2012",
             "f64",
             time_frames(&n64, reps, |n| {
-                let (t, b) = frisvad(n.to_array());
-                t[0] + b[1]
+                let (t, b) = frisvad(n);
+                t.x + b.y
             }),
         ),
         (

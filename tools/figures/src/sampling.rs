@@ -216,6 +216,7 @@ fn single_precision(name: &str) -> (String, String) {
     use glam::{DVec2, Vec2, Vec3};
     use raylemma::check::single::{norm_error, square_points, z_error};
     use raylemma::sampling::{cosine, sphere};
+    use raylemma::single::sampling as single;
     type F32 = fn(Vec2) -> Vec3;
     type F64 = fn(DVec2) -> DVec3;
     let points = square_points(200_000, 0xF32);
@@ -227,7 +228,7 @@ fn single_precision(name: &str) -> (String, String) {
     };
     match name {
         "sphere, inverse CDF" | "hemisphere, flipped inverse CDF" => both(
-            sphere::single::sphere_inverse_cdf,
+            single::sphere::sphere_inverse_cdf,
             sphere::sphere_inverse_cdf,
         ),
         "sphere, Gaussian" | "sphere, rejection" => {
@@ -235,21 +236,21 @@ fn single_precision(name: &str) -> (String, String) {
             let worst = raylemma::check::max_abs((0..200_000).map(|_| {
                 let v = rng::unit_vector(&mut r).as_vec3()
                     * 10f32.powf(rng::uniform(&mut r, -30.0, 30.0) as f32);
-                sphere::single::normalize_robust(v).map_or(f64::NAN, |w| {
+                single::sphere::normalize_robust(v).map_or(f64::NAN, |w| {
                     (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
                 })
             }));
             (format!("{worst:.2}"), "—".into())
         }
         "cosine, seed angles" => both(
-            cosine::single::cosine_seed_angles,
+            single::cosine::cosine_seed_angles,
             cosine::cosine_seed_angles,
         ),
         "cosine, seed Cartesian" => both(
-            cosine::single::cosine_seed_cartesian,
+            single::cosine::cosine_seed_cartesian,
             cosine::cosine_seed_cartesian,
         ),
-        "cosine, Malley (concentric)" => both(cosine::single::cosine_malley, cosine::cosine_malley),
+        "cosine, Malley (concentric)" => both(single::cosine::cosine_malley, cosine::cosine_malley),
         _ => ("—".into(), "—".into()),
     }
 }

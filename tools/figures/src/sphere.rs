@@ -7,11 +7,14 @@ use glam::DVec3;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use raylemma::check::Real;
 use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
 use raylemma::check::sphere::{SELF_HIT_SEED, self_hit_rate};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
-use raylemma::geometry::{Ray, Sphere};
-use raylemma::real::Real;
+use raylemma::single::geometry::sphere::{
+    intersect_stable as stable32, intersect_textbook as textbook32,
+};
+use raylemma::single::geometry::{Ray, Sphere};
 use raylemma::workload::timing_rays;
 
 /// The outputs of this chapter.
@@ -48,13 +51,6 @@ pub fn outputs() -> Vec<Output> {
             make: speed_md,
         },
     ]
-}
-
-fn textbook32(r: &Ray<f32>, s: &Sphere<f32>, t: f32) -> Option<f32> {
-    intersect_textbook(r, s, t)
-}
-fn stable32(r: &Ray<f32>, s: &Sphere<f32>, t: f32) -> Option<f32> {
-    intersect_stable(r, s, t)
 }
 
 /// Distances of the figure: 1.8 to 1e5 radii, four per decade (the bundle's origins
@@ -153,7 +149,7 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let d_hat = DVec3::new(0.48, -0.6, 0.64).normalize();
     let (e1, e2) = d_hat.any_orthonormal_pair();
     let center = DVec3::new(1.25, -0.5, 2.0);
-    let sphere = Sphere::<f32>::new(f32::narrow3(center), 1.0);
+    let sphere = Sphere::new(f32::narrow3(center), 1.0);
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
         root.fill(&WHITE)?;
@@ -168,7 +164,7 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
                     for j in 0..n {
                         let x = -1.25 + 2.5 * (f64::from(i) + 0.5) / f64::from(n);
                         let y = -1.25 + 2.5 * (f64::from(j) + 0.5) / f64::from(n);
-                        let ray = Ray::<f32>::new(
+                        let ray = Ray::new(
                             f32::narrow3(center - d_hat * distance + e1 * x + e2 * y),
                             f32::narrow3(d_hat),
                         );
@@ -218,22 +214,22 @@ fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         (
             "textbook",
             "f32",
-            self_hit_rate(&intersect_textbook::<f32>, rays, SELF_HIT_SEED),
+            self_hit_rate(&textbook32, rays, SELF_HIT_SEED),
         ),
         (
             "stable",
             "f32",
-            self_hit_rate(&intersect_stable::<f32>, rays, SELF_HIT_SEED),
+            self_hit_rate(&stable32, rays, SELF_HIT_SEED),
         ),
         (
             "textbook",
             "f64",
-            self_hit_rate(&intersect_textbook::<f64>, rays, SELF_HIT_SEED),
+            self_hit_rate(&intersect_textbook, rays, SELF_HIT_SEED),
         ),
         (
             "stable",
             "f64",
-            self_hit_rate(&intersect_stable::<f64>, rays, SELF_HIT_SEED),
+            self_hit_rate(&intersect_stable, rays, SELF_HIT_SEED),
         ),
     ];
     for (form, precision, rate) in rows {
@@ -250,10 +246,10 @@ fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let cases = if settings.quick { 2_000 } else { 20_000 };
     let mut md = String::from("```text\n");
     for verdict in [
-        check::sphere_intersection(&intersect_stable::<f32>, cases),
-        check::sphere_intersection(&intersect_textbook::<f32>, cases),
-        check::sphere_intersection(&intersect_stable::<f64>, cases),
-        check::sphere_intersection(&intersect_textbook::<f64>, cases),
+        check::sphere_intersection(&stable32, cases),
+        check::sphere_intersection(&textbook32, cases),
+        check::sphere_intersection(&intersect_stable, cases),
+        check::sphere_intersection(&intersect_textbook, cases),
         check::far_spheres(&stable32),
         check::far_spheres(&textbook32),
     ] {
@@ -263,17 +259,17 @@ fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn time_form<R: Real>(f: fn(&Ray<R>, &Sphere<R>, R) -> Option<R>, quick: bool) -> (f64, f64) {
+fn time_form<R: Real>(f: fn(&R::Ray, &R::Sphere, R) -> Option<R>, quick: bool) -> (f64, f64) {
     let (rays, sphere) = timing_rays::<R>(4096);
     let hits = rays
         .iter()
-        .filter(|r| f(r, &sphere, R::zero()).is_some())
+        .filter(|r| f(r, &sphere, R::ZERO).is_some())
         .count();
     let reps = if quick { 5 } else { 201 };
     let ns = timing::median_ns_per_item(rays.len(), reps, || {
         let mut count = 0u64;
         for ray in &rays {
-            if f(black_box(ray), black_box(&sphere), R::zero()).is_some() {
+            if f(black_box(ray), black_box(&sphere), R::ZERO).is_some() {
                 count += 1;
             }
         }
@@ -285,8 +281,8 @@ fn time_form<R: Real>(f: fn(&Ray<R>, &Sphere<R>, R) -> Option<R>, quick: bool) -
 fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let q = settings.quick;
     let rows = [
-        ("textbook", "f32", time_form::<f32>(intersect_textbook, q)),
-        ("stable", "f32", time_form::<f32>(intersect_stable, q)),
+        ("textbook", "f32", time_form::<f32>(textbook32, q)),
+        ("stable", "f32", time_form::<f32>(stable32, q)),
         ("textbook", "f64", time_form::<f64>(intersect_textbook, q)),
         ("stable", "f64", time_form::<f64>(intersect_stable, q)),
     ];
