@@ -67,9 +67,7 @@ fn report_names_failures() {
     v.findings.push(f);
     let text = v.to_string();
     assert!(
-        text.starts_with("FAIL: demo")
-            && text.contains("[FAIL] bad")
-            && text.contains("case 7"),
+        text.starts_with("FAIL: demo") && text.contains("[FAIL] bad") && text.contains("case 7"),
         "{text}"
     );
     assert!(v.failed("bad"));
