@@ -47,6 +47,8 @@ mod spectral {
 }
 
 mod renderer {
+    // The chapter *The reference renderer* of the part *The renderer*.
+    #[allow(clippy::module_inception)]
     mod renderer;
     mod scene;
 }
