@@ -18,8 +18,9 @@ use rand::RngExt;
 use rayon::prelude::*;
 
 use self::camera::Camera;
-use self::image::{Image, ImageError, Welford};
+use self::image::{Image, Welford};
 use self::scene::Scene;
+use crate::output::{self, FileError, FileSet};
 use crate::rng::Rng;
 use crate::spectral::cie;
 use crate::spectral::wavelength::{N, Wavelengths};
@@ -214,53 +215,30 @@ pub fn output_paths(dir: &Path, stem: &str) -> [PathBuf; 3] {
     ["exr", "png", "json"].map(|ext| dir.join(format!("{stem}.{ext}")))
 }
 
-/// Writes the three files of a render: each to a temporary file first, renamed into place
-/// only once all three are written, so that a failure leaves any earlier render whole.
+/// Writes the three files of a render into `dir` (created if needed), as one
+/// [`FileSet`]: each is written to a temporary file beside its destination, and all three
+/// are renamed into place only once all are written, so that a failure leaves any earlier
+/// render whole and no temporary file behind.
 ///
 /// # Errors
-/// An [`ImageError`] naming the file that could not be written.
+/// A [`FileError`] naming the file (or folder) that could not be written.
 pub fn write_outputs(
     dir: &Path,
     stem: &str,
     image: &Image,
     sidecar: &Sidecar,
-) -> Result<[PathBuf; 3], ImageError> {
-    std::fs::create_dir_all(dir).map_err(|e| ImageError {
-        path: dir.to_path_buf(),
-        problem: format!("cannot create the folder: {e}"),
-    })?;
-    let finals = output_paths(dir, stem);
-    let staged = finals.clone().map(|p| {
-        p.with_file_name(format!(
-            ".{}.staged",
-            p.file_name().unwrap_or_default().to_string_lossy()
-        ))
-    });
-    let cleanup = || {
-        for s in &staged {
-            let _ = std::fs::remove_file(s);
-        }
-    };
-    let written = image
-        .write_exr(&staged[0])
-        .and_then(|()| image.write_png(&staged[1], 0.0))
-        .and_then(|()| {
-            std::fs::write(&staged[2], sidecar.to_json(image)).map_err(|e| ImageError {
-                path: staged[2].clone(),
-                problem: e.to_string(),
-            })
-        });
-    if let Err(e) = written {
-        cleanup();
-        return Err(e);
-    }
-    for (s, f) in staged.iter().zip(&finals) {
-        std::fs::rename(s, f).map_err(|e| ImageError {
-            path: f.clone(),
-            problem: format!("cannot move into place: {e}"),
-        })?;
-    }
-    Ok(finals)
+) -> Result<[PathBuf; 3], FileError> {
+    output::create_dir_all(dir)?;
+    let [exr, png, json] = output_paths(dir, stem);
+    let mut files = FileSet::new();
+    files.write_with(&exr, |f| image.encode_exr(f))?;
+    let bytes = image
+        .encode_png(0.0)
+        .map_err(|problem| FileError::new(&png, problem))?;
+    files.write(&png, &bytes)?;
+    files.write(&json, sidecar.to_json(image).as_bytes())?;
+    files.commit()?;
+    Ok([exr, png, json])
 }
 
 /// Renders the scene file `path` and times it: the image and its sidecar.
