@@ -15,7 +15,7 @@ use super::Settings;
 use super::timing::{machine, quick_note};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
 use crate::render::image::Image;
-use crate::render::scene::{self, Scene};
+use crate::render::scene::Scene;
 use crate::render::{self, Progress, Sidecar};
 use crate::spectral::display;
 
@@ -103,7 +103,7 @@ fn render_one(
     settings: &Settings,
 ) -> Result<Rendered, BoxError> {
     let path = scenes_dir().join(file);
-    let s = scene::load(&path)?;
+    let s = render::load(&path)?;
     let spp = reference_spp(&s, settings);
     eprintln!(
         "  {name}: {}x{}, {spp} spp",
@@ -122,7 +122,7 @@ fn render_one(
 /// The cornell scene at increasing sample counts: `(spp, seconds, RMSE)` against the
 /// reference (a different seed, so that the errors are independent).
 fn speed_series(reference: &Image, settings: &Settings) -> Result<Vec<(u32, f64, f64)>, BoxError> {
-    let mut s = scene::load(&scenes_dir().join("cornell.toml"))?;
+    let mut s = render::load(&scenes_dir().join("cornell.toml"))?;
     s.settings.seed = 1_000_003;
     let top = if settings.quick { 8 } else { 128 };
     let mut out = Vec::new();
@@ -272,7 +272,7 @@ fn calibrate(
     use crate::render::compare::compare;
     use crate::render::scene::Material;
     use crate::spectral::spectrum::Spectrum;
-    let mut s = scene::load(&scenes_dir().join(scene))?;
+    let mut s = render::load(&scenes_dir().join(scene))?;
     s.camera.width = side;
     s.camera.height = side;
     let mut bright = s.clone();

@@ -12,10 +12,11 @@
 use std::path::Path;
 
 use glam::{DVec2, DVec3};
+use raylemma::geometry::Parallelogram;
 use raylemma::render::compare::{compare, two_sided_critical};
 use raylemma::render::image::{Image, Welford};
-use raylemma::render::integrator::{Surface, offset_origin};
-use raylemma::render::scene::{self, Geometry, Material, Scene};
+use raylemma::render::integrator::offset_origin;
+use raylemma::render::scene::{self, Geometry, Material, Scene, Surface};
 use raylemma::render::{Progress, render, render_with};
 use raylemma::rng;
 use raylemma::sampling::cosine::cosine_malley;
@@ -24,10 +25,9 @@ use raylemma::spectral::cie;
 use raylemma::spectral::spectrum::Spectrum;
 use raylemma::spectral::wavelength::{N, RANGE, Strategy, hero_visible};
 use raylemma::stats::{sidak, test_alpha};
-use raylemma::transport::shadow::QuadLight;
 
 fn load(name: &str) -> Scene {
-    scene::load(
+    raylemma::render::load(
         &Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(name),
@@ -237,7 +237,7 @@ fn images_are_bit_identical_whatever_the_number_of_threads() {
 /// The Cornell box closed at z = 0 by a white wall: no ray may leave it.
 fn closed_box() -> Scene {
     let mut s = load("cornell.toml");
-    let front = QuadLight::new(
+    let front = Parallelogram::new(
         DVec3::ZERO,
         DVec3::new(0.0, 555.0, 0.0),
         DVec3::new(555.0, 0.0, 0.0),
