@@ -1,29 +1,16 @@
 //! The files of a render: `SCENE.exr` (the means and their variances), `SCENE.png` (the
 //! display image) and `SCENE.json`, the sidecar that says what the render was
-//! ([`Sidecar`]). All three land together or not at all
+//! ([`Sidecar`], written with `serde_json`). All three land together or not at all
 //! ([`write_outputs`], through the project's one writer, [`crate::output::FileSet`]), so a
 //! failure leaves an earlier render whole. Chapter: *The reference renderer*
 //! (`chapters/renderer/renderer.md`, *What a render writes*).
 
 use std::path::{Path, PathBuf};
 
+use serde::Serialize;
+
 use super::image::Image;
 use crate::output::{self, FileError, FileSet};
-
-/// `s` as a JSON string literal: quotes, backslashes and control characters escaped.
-pub fn json_string(s: &str) -> String {
-    let mut out = String::from("\"");
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if u32::from(c) < 0x20 => out.push_str(&format!("\\u{:04x}", u32::from(c))),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
 
 /// What a render was, for its JSON sidecar.
 #[derive(Clone, Debug, PartialEq)]
@@ -44,24 +31,48 @@ pub struct Sidecar {
     pub threads: usize,
 }
 
+/// The sidecar as written, key by key in the order of the renderer chapter.
+#[derive(Serialize)]
+struct Json<'a> {
+    renderer: String,
+    scene: &'a str,
+    /// 16 hexadecimal digits (JSON numbers lose the low bits of a 64-bit integer).
+    scene_hash: String,
+    width: u32,
+    height: u32,
+    spp: u32,
+    seed: u64,
+    wavelengths: &'a str,
+    /// Rounded to milliseconds.
+    seconds: f64,
+    threads: usize,
+    /// Rounded to an integer.
+    pixel_samples_per_second: u64,
+}
+
 impl Sidecar {
-    /// The sidecar as JSON (the keys of the renderer chapter).
+    /// The sidecar of `image` as pretty-printed JSON (the keys of the renderer chapter),
+    /// ending with a newline.
     pub fn to_json(&self, image: &Image) -> String {
         let samples = f64::from(image.width) * f64::from(image.height) * f64::from(self.spp);
-        format!(
-            "{{\n  \"renderer\": \"raylemma {}\",\n  \"scene\": {},\n  \"scene_hash\": \"{:016x}\",\n  \"width\": {},\n  \"height\": {},\n  \"spp\": {},\n  \"seed\": {},\n  \"wavelengths\": {},\n  \"seconds\": {:.3},\n  \"threads\": {},\n  \"pixel_samples_per_second\": {:.0}\n}}\n",
-            env!("CARGO_PKG_VERSION"),
-            json_string(&self.scene),
-            self.scene_hash,
-            image.width,
-            image.height,
-            self.spp,
-            self.seed,
-            json_string(&self.wavelengths),
-            self.seconds,
-            self.threads,
-            samples / self.seconds.max(1e-9)
-        )
+        let json = Json {
+            renderer: format!("raylemma {}", env!("CARGO_PKG_VERSION")),
+            scene: &self.scene,
+            scene_hash: format!("{:016x}", self.scene_hash),
+            width: image.width,
+            height: image.height,
+            spp: self.spp,
+            seed: self.seed,
+            wavelengths: &self.wavelengths,
+            seconds: (self.seconds * 1000.0).round() / 1000.0,
+            threads: self.threads,
+            // A float-to-integer `as` saturates (and takes NaN to 0).
+            pixel_samples_per_second: (samples / self.seconds.max(1e-9)).round() as u64,
+        };
+        // Serialising plain strings and numbers into a string cannot fail.
+        let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
+        text.push('\n');
+        text
     }
 }
 
