@@ -1,6 +1,8 @@
-//! A rendered image: per-pixel means and the variance of each mean, in linear sRGB, and
-//! the files a render writes (OpenEXR, PNG, a JSON sidecar). Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`).
+//! A rendered image: per-pixel means and the variance of each mean, in linear sRGB
+//! ([`Welford`] accumulates them), and its two image files: OpenEXR with the variances
+//! (written and read back) and the display PNG. The sidecar, and the writing of a render's
+//! three files as one set, are in [`super::files`]. Chapter: *The reference renderer*
+//! (`chapters/renderer/renderer.md`).
 //!
 //! # The EXR layout
 //!

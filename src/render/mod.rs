@@ -3,9 +3,9 @@
 //!
 //! A scene file goes through these files, in this order:
 //!
-//! * [`format`]: the TOML file as written (serde's raw tables, with byte spans), and the
-//!   entry points [`parse`] and [`load`];
-//! * [`validate`] (private): the checker that turns the raw tables into the model, or
+//! * [`format`](mod@format): the TOML file as written (serde's raw tables, with byte
+//!   spans), and the entry points [`parse`] and [`load`];
+//! * `validate` (private): the checker that turns the raw tables into the model, or
 //!   refuses the file with its line and the reason;
 //! * [`scene`]: the model, [`Scene`], and its geometric queries (the first surface along a
 //!   ray, the point and normal of a hit, the side a light emits to);

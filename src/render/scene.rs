@@ -5,7 +5,7 @@
 //! Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
 //!
 //! A `Scene` is made from a file by [`super::format::parse`] (or [`super::format::load`]),
-//! which checks everything ([`super::validate`]), or built directly by code and tests.
+//! which checks everything (`validate`), or built directly by code and tests.
 
 use glam::DVec3;
 
