@@ -147,9 +147,7 @@ pub fn parse(text: &str, file: &str, dir: &Path) -> Result<Scene, DataError> {
         let line = e.span().map_or(0, |s| line_of(text, s));
         DataError::new(file, line, e.message().to_string())
     })?;
-    let mut scene = validate::scene(&raw, text, file, dir)?;
-    scene.hash = fnv1a(text.as_bytes());
-    Ok(scene)
+    validate::scene(&raw, text, file, dir)
 }
 // ANCHOR_END: parse
 

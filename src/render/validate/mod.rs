@@ -37,7 +37,7 @@ struct Checker<'a> {
 /// Checks the raw tables `raw` of the scene file `file` (text `text`, folder `dir`), table
 /// by table in the order the model needs them: settings, camera, spectra (which may refer
 /// to earlier ones), materials, shapes, lights, environment, then the wavelength strategy
-/// that depends on the lights.
+/// that depends on the lights. The scene carries the [`fnv1a`] hash of `text`.
 ///
 /// # Errors
 /// The first problem, as a [`DataError`] with its line.
