@@ -109,7 +109,7 @@ impl Image {
         ExrImage::from_layer(layer)
             .write()
             .to_unbuffered(out)
-            .map_err(|e| format!("cannot write the EXR: {e}"))
+            .map_err(|e| format!("OpenEXR: {e}"))
     }
 
     /// Writes the image as OpenEXR ([`Image::encode_exr`]) to `path`, atomically
