@@ -9,7 +9,7 @@
 use std::path::Path;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::render::{Progress, render, scene};
+use raylemma::render::{Progress, load, render};
 
 fn scenes(c: &mut Criterion) {
     let mut group = c.benchmark_group("render");
@@ -17,7 +17,7 @@ fn scenes(c: &mut Criterion) {
         let path = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(format!("{name}.toml"));
-        let mut s = scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        let mut s = load(&path).unwrap_or_else(|e| panic!("{e}"));
         s.camera.width = 64;
         s.camera.height = 64;
         let spp = 4;

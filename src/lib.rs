@@ -9,6 +9,8 @@
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
 //! * [`data`]: errors of data files (file, line, problem).
+//! * [`output`]: the one writer of every file the library writes: atomic files, sets of
+//!   files that land together or not at all, staged folders.
 //! * [`rng`]: the seeded generator every test and figure uses.
 //! * [`stats`]: chi-squared, Kolmogorov-Smirnov and t-tests, with Šidák correction.
 //! * [`sampling`]: warps and tabulated distributions (*Sampling*).
@@ -26,6 +28,7 @@ pub mod check;
 pub mod data;
 pub mod geometry;
 pub mod optics;
+pub mod output;
 pub mod precision;
 pub mod render;
 pub mod rng;

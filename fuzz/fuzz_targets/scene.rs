@@ -1,4 +1,4 @@
-//! Fuzz target of the scene parser (`raylemma::render::scene::parse`): any bytes must give
+//! Fuzz target of the scene parser (`raylemma::render::parse`): any bytes must give
 //! a scene or a `DataError` with a line inside the text, never a panic.
 //!
 //! `RUSTC_BOOTSTRAP=1 cargo fuzz run scene fuzz/corpus/scene -- -max_total_time=60`
@@ -15,7 +15,7 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
-    if let Err(e) = raylemma::render::scene::parse(text, "fuzz.toml", &scenes) {
+    if let Err(e) = raylemma::render::parse(text, "fuzz.toml", &scenes) {
         let lines = text.lines().count().max(1) + 1;
         assert!(e.file != "fuzz.toml" || e.line <= lines, "line {} of {lines}: {e}", e.line);
     }

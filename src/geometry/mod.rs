@@ -5,8 +5,10 @@
 
 use crate::precision::double as precision;
 
+pub mod parallelogram;
 pub mod ray;
 pub mod sphere;
 
+pub use parallelogram::Parallelogram;
 pub use ray::Ray;
 pub use sphere::Sphere;

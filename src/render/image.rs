@@ -1,6 +1,8 @@
-//! A rendered image: per-pixel means and the variance of each mean, in linear sRGB, and
-//! the files a render writes (OpenEXR, PNG, a JSON sidecar). Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`).
+//! A rendered image: per-pixel means and the variance of each mean, in linear sRGB
+//! ([`Welford`] accumulates them), and its two image files: OpenEXR with the variances
+//! (written and read back) and the display PNG. The sidecar, and the writing of a render's
+//! three files as one set, are in [`super::files`]. Chapter: *The reference renderer*
+//! (`chapters/renderer/renderer.md`).
 //!
 //! # The EXR layout
 //!
@@ -10,7 +12,7 @@
 //! standard error), `s^2 / n` from the `n` samples' sample variance `s^2`. Another renderer
 //! writes the same six channels to be compared by `raylemma compare`.
 
-use std::fs;
+use std::io::{Seek, Write};
 use std::path::Path;
 
 use exr::prelude::{
@@ -19,7 +21,8 @@ use exr::prelude::{
 };
 use glam::DVec3;
 
-use crate::spectral::display::{self, temporary_beside};
+use crate::output::{self, FileError};
+use crate::spectral::display;
 
 /// The channel names of an image file, in the order of [`Image::mean`] then
 /// [`Image::var`].
@@ -75,10 +78,6 @@ impl Welford {
 }
 // ANCHOR_END: welford
 
-/// What went wrong reading or writing an image file: the path and the reason. The display
-/// chapter's PNG error serves every image file (it says no more than that).
-pub type ImageError = display::PngError;
-
 impl Image {
     /// The pixel index of `(x, y)`.
     pub fn index(&self, x: u32, y: u32) -> usize {
@@ -86,12 +85,12 @@ impl Image {
     }
 
     // ANCHOR: write_exr
-    /// Writes the six channels ([`CHANNELS`]) as float32 OpenEXR (ZIP compressed) to a
-    /// temporary file beside `path`, and renames it over `path` only when complete.
+    /// Encodes the six channels ([`CHANNELS`]) as float32 OpenEXR (ZIP compressed) into
+    /// `out`.
     ///
     /// # Errors
-    /// An [`ImageError`] naming `path` when the file cannot be written.
-    pub fn write_exr(&self, path: &Path) -> Result<(), ImageError> {
+    /// The encoder's or the writer's error, in words.
+    pub fn encode_exr(&self, out: impl Write + Seek) -> Result<(), String> {
         let channel = |k: usize| -> Vec<f32> {
             let src = if k < 3 { &self.mean } else { &self.var };
             src.iter().map(|v| v[k % 3] as f32).collect()
@@ -107,19 +106,19 @@ impl Image {
             Encoding::SMALL_LOSSLESS,
             AnyChannels::sort(list),
         );
-        let tmp = temporary_beside(path);
-        let result = ExrImage::from_layer(layer)
+        ExrImage::from_layer(layer)
             .write()
-            .to_file(&tmp)
-            .map_err(|e| e.to_string())
-            .and_then(|()| fs::rename(&tmp, path).map_err(|e| e.to_string()));
-        result.map_err(|problem| {
-            let _ = fs::remove_file(&tmp);
-            ImageError {
-                path: path.to_path_buf(),
-                problem: format!("cannot write the EXR: {problem}"),
-            }
-        })
+            .to_unbuffered(out)
+            .map_err(|e| format!("OpenEXR: {e}"))
+    }
+
+    /// Writes the image as OpenEXR ([`Image::encode_exr`]) to `path`, atomically
+    /// ([`output::write_file_with`]: a temporary file beside it, renamed over it).
+    ///
+    /// # Errors
+    /// A [`FileError`] naming `path` when the file cannot be written.
+    pub fn write_exr(&self, path: &Path) -> Result<(), FileError> {
+        output::write_file_with(path, |f| self.encode_exr(f))
     }
     // ANCHOR_END: write_exr
 
@@ -127,13 +126,10 @@ impl Image {
     /// channels: `R`, `G`, `B`, and `var.R`, `var.G`, `var.B`; any sample type).
     ///
     /// # Errors
-    /// An [`ImageError`] naming `path`: not readable, not an EXR, or a channel missing
+    /// A [`FileError`] naming `path`: not readable, not an EXR, or a channel missing
     /// (the message lists the channels there are).
-    pub fn read_exr(path: &Path) -> Result<Image, ImageError> {
-        let err = |problem: String| ImageError {
-            path: path.to_path_buf(),
-            problem,
-        };
+    pub fn read_exr(path: &Path) -> Result<Image, FileError> {
+        let err = |problem: String| FileError::new(path, problem);
         if !path.is_file() {
             return Err(err("no such file".into()));
         }
@@ -175,12 +171,24 @@ impl Image {
         })
     }
 
-    /// Writes the means as an 8-bit sRGB PNG through the display chapter's rules (exposure
-    /// `2^stops`, fit to gamut, the sRGB curve), atomically.
+    /// The means as the bytes of an 8-bit sRGB PNG, through the display chapter's rules
+    /// (exposure `2^stops`, fit to gamut, the sRGB curve).
+    ///
+    /// # Errors
+    /// As [`display::encode_png`].
+    pub fn encode_png(&self, stops: f64) -> Result<Vec<u8>, String> {
+        display::encode_png(
+            self.width,
+            self.height,
+            &display::to_display_rgb8(&self.mean, stops),
+        )
+    }
+
+    /// Writes the means as an 8-bit sRGB PNG ([`Image::encode_png`]), atomically.
     ///
     /// # Errors
     /// As [`display::write_png`].
-    pub fn write_png(&self, path: &Path, stops: f64) -> Result<(), display::PngError> {
+    pub fn write_png(&self, path: &Path, stops: f64) -> Result<(), FileError> {
         display::write_png(
             path,
             self.width,

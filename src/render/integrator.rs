@@ -1,5 +1,8 @@
-//! The spectral path tracer: next-event estimation with multiple importance sampling,
-//! Russian roulette, hero wavelengths. Chapter: *The reference renderer*
+//! The spectral path tracer: the radiance along one path ([`radiance`]), with next-event
+//! estimation and multiple importance sampling, Russian roulette and hero wavelengths, and
+//! the offset of a ray leaving a surface ([`offset_origin`]). The scene answers the
+//! geometric questions ([`super::scene`]); the pixels and tiles are the driver's
+//! ([`super::pixel`], [`super::driver`]). Chapter: *The reference renderer*
 //! (`chapters/renderer/renderer.md`).
 //!
 //! Every interaction is one of the book's modules, unchanged: the stable ray-sphere
@@ -14,9 +17,7 @@ use std::f64::consts::FRAC_1_PI;
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 
-use super::scene::{Emitter, Geometry, Ior, LightShape, Material, Scene};
-use crate::geometry::Ray;
-use crate::geometry::sphere::intersect_stable;
+use super::scene::{Emitter, Ior, Material, Scene, Surface};
 use crate::optics::fresnel::fresnel_dielectric;
 use crate::optics::reflect::{reflect, refract};
 use crate::optics::thinfilm::Film;
@@ -25,28 +26,10 @@ use crate::sampling::cosine::cosine_malley;
 use crate::sampling::frame::Frame;
 use crate::spectral::wavelength::{N, Wavelengths};
 use crate::transport::roulette::roulette;
-use crate::transport::shadow::{Heuristic, Light};
+use crate::transport::shadow::Heuristic;
 
 /// Radiance (or throughput) at the path's `N` wavelengths.
 pub type Lanes = [f64; N];
-
-/// What a ray hit.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Surface {
-    /// Index into [`Scene::shapes`].
-    Shape(usize),
-    /// Index into [`Scene::lights`].
-    Light(usize),
-}
-
-/// The first surface along a ray.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit {
-    /// Distance along the unit direction.
-    pub t: f64,
-    /// Which surface.
-    pub surface: Surface,
-}
 
 // ANCHOR: offset
 /// The relative size of the offset that moves a new ray's origin off the surface it
@@ -69,75 +52,6 @@ pub fn offset_origin(p: DVec3, n: DVec3, dir: DVec3) -> DVec3 {
     }
 }
 // ANCHOR_END: offset
-
-impl Emitter {
-    /// The emitter as a sampleable light.
-    pub fn light(&self) -> &dyn Light {
-        match &self.shape {
-            LightShape::Quad(q) => q,
-            LightShape::Sphere(s) => s,
-        }
-    }
-}
-
-impl Scene {
-    // ANCHOR: intersect
-    /// The first shape or light along the ray from `o` in the unit direction `d`.
-    /// A linear loop: the canonical scenes have at most a dozen surfaces.
-    pub fn intersect(&self, o: DVec3, d: DVec3) -> Option<Hit> {
-        let mut best: Option<Hit> = None;
-        let mut consider = |t: Option<f64>, surface| {
-            if let Some(t) = t
-                && t > 0.0
-                && best.is_none_or(|b| t < b.t)
-            {
-                best = Some(Hit { t, surface });
-            }
-        };
-        let ray = Ray::new(o, d);
-        for (i, s) in self.shapes.iter().enumerate() {
-            let t = match &s.geometry {
-                Geometry::Sphere(sp) => intersect_stable(&ray, sp, 0.0),
-                Geometry::Quad(q) => q.hit(o, d).map(|h| h.dist),
-            };
-            consider(t, Surface::Shape(i));
-        }
-        for (i, l) in self.lights.iter().enumerate() {
-            let t = match &l.shape {
-                LightShape::Sphere(sp) => {
-                    let sphere = crate::geometry::sphere::Sphere::new(sp.center(), sp.radius());
-                    intersect_stable(&ray, &sphere, 0.0)
-                }
-                LightShape::Quad(q) => q.hit(o, d).map(|h| h.dist),
-            };
-            consider(t, Surface::Light(i));
-        }
-        best
-    }
-    // ANCHOR_END: intersect
-
-    /// The point and unit geometric normal where the ray from `o` along `d` meets shape
-    /// `i` at distance `t`. A sphere's point is projected back onto the sphere, which
-    /// removes most of the rounding of `o + t d` (the offset then needs no error bound).
-    fn surface_point(&self, i: usize, o: DVec3, d: DVec3, t: f64) -> (DVec3, DVec3) {
-        let p = o + t * d;
-        match &self.shapes[i].geometry {
-            Geometry::Sphere(s) => {
-                let n = (p - s.center).normalize();
-                (s.center + s.radius * n, n)
-            }
-            Geometry::Quad(q) => (p, q.normal()),
-        }
-    }
-
-    /// Whether emitter `light` emits towards a ray travelling along `d` that hits it.
-    fn emits_towards(&self, light: usize, d: DVec3) -> bool {
-        match &self.lights[light].shape {
-            LightShape::Quad(q) => q.normal().dot(d) < 0.0,
-            LightShape::Sphere(_) => true,
-        }
-    }
-}
 
 fn lanes(f: impl Fn(usize) -> f64) -> Lanes {
     std::array::from_fn(f)

@@ -7,13 +7,12 @@
 //! `[0, 1]³` by moving it toward the grey of equal luminance ([`fit_to_gamut`]); encode
 //! with the sRGB curve ([`srgb_encode`]); round to 8 bits ([`quantise`]).
 
-use std::fs;
-use std::io::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use glam::{DVec2, DVec3};
 
 use super::cie;
+use crate::output::{self, FileError};
 
 // ---------------------------------------------------------------------------------------
 // Transfer functions.
@@ -232,71 +231,37 @@ pub fn to_display_rgb8(linear_srgb: &[DVec3], stops: f64) -> Vec<u8> {
 // ---------------------------------------------------------------------------------------
 // PNG files.
 
-/// A PNG that could not be written: the path and the reason.
-#[derive(Debug)]
-pub struct PngError {
-    /// The file that was to be written.
-    pub path: PathBuf,
-    /// What went wrong.
-    pub problem: String,
-}
-
-impl std::fmt::Display for PngError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.path.display(), self.problem)
-    }
-}
-
-impl std::error::Error for PngError {}
-
-/// A hidden temporary name beside `path` (`.NAME.tmp-PID`), so that a file is written whole
-/// and then renamed over `path`: every image file of the project is written this way.
-pub fn temporary_beside(path: &Path) -> PathBuf {
-    let mut name = std::ffi::OsString::from(".");
-    name.push(path.file_name().unwrap_or_default());
-    name.push(format!(".tmp-{}", std::process::id()));
-    path.with_file_name(name)
-}
-
 // ANCHOR: write_png
-/// Writes `rgb8` (`3 w h` bytes, row-major, sRGB-encoded) as a PNG at `path`. The image
-/// is encoded in memory, written to a temporary file beside `path` and renamed over it,
-/// so a failure never leaves a partial file where a good one was.
+/// Encodes `rgb8` (`3 w h` bytes, row-major, sRGB-encoded) as the bytes of a PNG file.
 ///
 /// # Errors
-/// A [`PngError`] naming `path`: wrong buffer size, zero or too large dimensions, or an
-/// I/O failure (missing directory, no permission, `path` is a directory...).
-pub fn write_png(path: &Path, w: u32, h: u32, rgb8: &[u8]) -> Result<(), PngError> {
-    let err = |problem: String| PngError {
-        path: path.to_path_buf(),
-        problem,
-    };
+/// A wrong buffer size, zero or too large dimensions, or a failure of the encoder.
+pub fn encode_png(w: u32, h: u32, rgb8: &[u8]) -> Result<Vec<u8>, String> {
     let expected = 3 * u64::from(w) * u64::from(h);
     if w == 0 || h == 0 || rgb8.len() as u64 != expected {
-        return Err(err(format!(
+        return Err(format!(
             "{} bytes for a {w}x{h} image; it needs 3 x {w} x {h} = {expected} (and w, h > 0)",
             rgb8.len()
-        )));
+        ));
     }
     let image = image::RgbImage::from_raw(w, h, rgb8.to_vec())
-        .ok_or_else(|| err("the buffer does not match the size".into()))?;
+        .ok_or_else(|| "the buffer does not match the size".to_string())?;
     let mut bytes = std::io::Cursor::new(Vec::new());
     image
         .write_to(&mut bytes, image::ImageFormat::Png)
-        .map_err(|e| err(format!("cannot encode the PNG: {e}")))?;
-    if path.file_name().is_none() {
-        return Err(err("the path has no file name".into()));
-    }
-    let tmp = temporary_beside(path);
-    let written = fs::File::create(&tmp)
-        .and_then(|mut f| {
-            f.write_all(bytes.get_ref())?;
-            f.sync_all()
-        })
-        .and_then(|()| fs::rename(&tmp, path));
-    written.map_err(|e| {
-        let _ = fs::remove_file(&tmp);
-        err(format!("cannot write the file: {e}"))
-    })
+        .map_err(|e| format!("cannot encode the PNG: {e}"))?;
+    Ok(bytes.into_inner())
+}
+
+/// Writes `rgb8` as a PNG at `path`. The image is encoded in memory, then written by the
+/// project's one writer ([`crate::output::write_file`]): to a temporary file beside
+/// `path`, renamed over it, so a failure never leaves a partial file where a good one was.
+///
+/// # Errors
+/// A [`FileError`] naming `path`: wrong buffer size, zero or too large dimensions, or an
+/// I/O failure (missing directory, no permission, `path` is a directory...).
+pub fn write_png(path: &Path, w: u32, h: u32, rgb8: &[u8]) -> Result<(), FileError> {
+    let bytes = encode_png(w, h, rgb8).map_err(|problem| FileError::new(path, problem))?;
+    output::write_file(path, &bytes)
 }
 // ANCHOR_END: write_png

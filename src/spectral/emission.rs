@@ -310,25 +310,20 @@ pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, String> {
 
 /// Writes `<stem>.png` for every lamp of [`lamps`] into `dir` (the shipped `data/`
 /// drawings are made by this; `tests/book/spectral/emission.rs` regenerates them when the environment
-/// variable `RAYLEMMA_WRITE_DATA` is set). Returns the paths written.
+/// variable `RAYLEMMA_WRITE_DATA` is set), all together or none ([`crate::output::FileSet`]).
+/// Returns the paths written.
 ///
 /// # Errors
-/// If an image cannot be drawn or written.
+/// If an image cannot be drawn or written; the earlier drawings are then left as they were.
 pub fn write_lamp_images(dir: &Path) -> Result<Vec<PathBuf>, String> {
-    lamps()
-        .iter()
-        .map(|lamp| {
-            let bytes = write_image(&lamp.spectrum, IMAGE_HEIGHT)
-                .map_err(|e| format!("{}: {e}", lamp.name))?;
-            // Written beside the target and renamed, so a reader never sees half a file.
-            let path = dir.join(format!("{}.png", lamp.stem));
-            let partial = dir.join(format!("{}.png.partial", lamp.stem));
-            std::fs::write(&partial, bytes)
-                .and_then(|()| std::fs::rename(&partial, &path))
-                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-            Ok(path)
-        })
-        .collect()
+    let mut files = crate::output::FileSet::new();
+    for lamp in lamps() {
+        let bytes =
+            write_image(&lamp.spectrum, IMAGE_HEIGHT).map_err(|e| format!("{}: {e}", lamp.name))?;
+        let path = dir.join(format!("{}.png", lamp.stem));
+        files.write(&path, &bytes).map_err(|e| e.to_string())?;
+    }
+    files.commit().map_err(|e| e.to_string())
 }
 
 /// The XYZ of a lamp, normalised to `Y = 1`.

@@ -9,9 +9,10 @@
 //! where `n` is the light's normal at `q`. The seed writes `n . w` without the absolute
 //! value; for a light that faces `p` that dot product is *negative*, and the pdf with it.
 //!
-//! Two lights: a parallelogram ([`QuadLight`], one-sided) and a sphere ([`SphereLight`],
-//! sampled uniformly over the cap visible from `p`, or uniformly over the cone of
-//! directions it subtends, [`SphereCone`]). Every light can be sampled ([`Light::sample`])
+//! Two lights: a parallelogram ([`QuadLight`], one-sided, on the geometry's
+//! [`Parallelogram`], which also intersects rays) and a sphere ([`SphereLight`], sampled
+//! uniformly over the cap visible from `p`, or uniformly over the cone of directions it
+//! subtends, [`SphereCone`]). Every light can be sampled ([`Light::sample`])
 //! and asked the pdf of a direction ([`Light::pdf`], by casting the ray). On top of them:
 //! irradiance estimators with light sampling, cosine-weighted sampling, and multiple
 //! importance sampling ([`estimate_irradiance`]), and the closed forms they are checked
@@ -23,6 +24,7 @@ use std::fmt;
 use glam::{DVec2, DVec3};
 
 use crate::geometry::Ray;
+use crate::geometry::parallelogram::{Degenerate, Parallelogram};
 use crate::geometry::sphere::{Sphere, intersect_stable};
 use crate::sampling::cosine::cosine_malley;
 use crate::sampling::frame::Frame;
@@ -139,75 +141,67 @@ pub trait Light: Sync {
     fn pdf(&self, p: DVec3, w: DVec3) -> f64;
 }
 
-/// A parallelogram light: the points `corner + a e1 + b e2`, `a, b` in `[0, 1]`, emitting
-/// on the side of its normal `n = (e1 x e2) / |e1 x e2|` only.
+/// A parallelogram light: the [`Parallelogram`] `corner + a e1 + b e2`, `a, b` in
+/// `[0, 1]`, emitting on the side of its normal `n = (e1 x e2) / |e1 x e2|` only.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct QuadLight {
-    corner: DVec3,
-    e1: DVec3,
-    e2: DVec3,
-    /// `e1 x e2`.
-    cross: DVec3,
-    normal: DVec3,
-    area: f64,
+    shape: Parallelogram,
+}
+
+impl From<Degenerate> for LightError {
+    fn from(e: Degenerate) -> Self {
+        match e {
+            Degenerate::NonFinite(what) => Self::NonFinite(what),
+            Degenerate::ZeroLengthEdge(which) => Self::ZeroLengthEdge(which),
+            Degenerate::ParallelEdges => Self::ParallelEdges,
+        }
+    }
+}
+
+impl From<Parallelogram> for QuadLight {
+    /// The parallelogram as a light, emitting on the side of its normal.
+    fn from(shape: Parallelogram) -> Self {
+        Self { shape }
+    }
 }
 
 // ANCHOR: quad_new
 impl QuadLight {
-    /// The parallelogram with a corner and two edge vectors.
+    /// The parallelogram light with a corner and two edge vectors
+    /// ([`Parallelogram::new`]).
     ///
     /// # Errors
     /// [`LightError::NonFinite`] for a NaN or infinite input, [`LightError::ZeroLengthEdge`]
     /// for a zero edge, [`LightError::ParallelEdges`] when `|e1 x e2|` is below `1e-12`
     /// of `|e1| |e2|` (the edges' angle below about `1e-12` radians).
     pub fn new(corner: DVec3, e1: DVec3, e2: DVec3) -> Result<Self, LightError> {
-        for (v, what) in [(corner, "corner"), (e1, "edge e1"), (e2, "edge e2")] {
-            if !v.is_finite() {
-                return Err(LightError::NonFinite(what));
-            }
-        }
-        let (l1, l2) = (e1.length(), e2.length());
-        if l1 == 0.0 {
-            return Err(LightError::ZeroLengthEdge("e1"));
-        }
-        if l2 == 0.0 {
-            return Err(LightError::ZeroLengthEdge("e2"));
-        }
-        let cross = e1.cross(e2);
-        let area = cross.length();
-        if area.is_nan() || area <= 1e-12 * l1 * l2 || area.is_infinite() {
-            return Err(LightError::ParallelEdges);
-        }
-        Ok(Self {
-            corner,
-            e1,
-            e2,
-            cross,
-            normal: cross / area,
-            area,
-        })
+        Ok(Parallelogram::new(corner, e1, e2)?.into())
     }
     // ANCHOR_END: quad_new
 
+    /// The light's shape.
+    pub fn shape(&self) -> &Parallelogram {
+        &self.shape
+    }
+
     /// The four corners, counter-clockwise about the normal.
     pub fn vertices(&self) -> [DVec3; 4] {
-        let c = self.corner;
-        [c, c + self.e1, c + self.e1 + self.e2, c + self.e2]
+        self.shape.vertices()
     }
 
     /// The unit normal, the side the light emits towards.
     pub fn normal(&self) -> DVec3 {
-        self.normal
+        self.shape.normal()
     }
 
     /// The area `|e1 x e2|`.
     pub fn area(&self) -> f64 {
-        self.area
+        self.shape.area()
     }
 
     /// The same light scaled by `s` about the origin.
     pub fn scaled(&self, s: f64) -> Result<Self, LightError> {
-        Self::new(self.corner * s, self.e1 * s, self.e2 * s)
+        Ok(self.shape.scaled(s)?.into())
     }
 
     /// The subtended solid angle seen from `p` (both sides count), as two triangles
@@ -221,7 +215,7 @@ impl QuadLight {
     /// emitted on the normal's side, by Lambert's formula ([`polygon_irradiance`]).
     /// The light must lie entirely above the surface's horizon. 0 when `p` is behind it.
     pub fn irradiance(&self, p: DVec3, n: DVec3, radiance: f64) -> f64 {
-        if (p - self.corner).dot(self.normal) <= 0.0 {
+        if (p - self.shape.corner()).dot(self.normal()) <= 0.0 {
             return 0.0;
         }
         polygon_irradiance(p, n, &self.vertices(), radiance)
@@ -232,31 +226,24 @@ impl QuadLight {
 impl Light for QuadLight {
     /// Uniform in area (`p_A = 1 / area`), converted to solid angle.
     fn sample(&self, p: DVec3, u: DVec2) -> Option<LightSample> {
-        let point = self.corner + u.x * self.e1 + u.y * self.e2;
-        LightSample::seen_from(p, point, self.normal, 1.0 / self.area)
+        let point = self.shape.point(u.x, u.y);
+        LightSample::seen_from(p, point, self.normal(), 1.0 / self.area())
     }
     // ANCHOR_END: quad_sample
 
     // ANCHOR: quad_hit
-    /// The ray meets the plane at `t = n . (corner - p) / (n . w)`; the hit's coordinates
-    /// in the edge basis are `a = ((d x e2) . c) / c.c` and `b = ((e1 x d) . c) / c.c`
-    /// with `d = q - corner` and `c = e1 x e2`.
+    /// The parallelogram's intersection ([`Parallelogram::hit`]), with `n . w` at the hit.
     fn hit(&self, p: DVec3, w: DVec3) -> Option<Hit> {
-        let cos_light = self.normal.dot(w);
-        let t = self.normal.dot(self.corner - p) / cos_light;
-        if !(t > 0.0 && t.is_finite()) {
-            return None;
-        }
-        let d = p + t * w - self.corner;
-        let cc = self.cross.length_squared();
-        let a = d.cross(self.e2).dot(self.cross) / cc;
-        let b = self.e1.cross(d).dot(self.cross) / cc;
-        ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)).then_some(Hit { dist: t, cos_light })
+        let dist = self.shape.hit(p, w)?;
+        Some(Hit {
+            dist,
+            cos_light: self.normal().dot(w),
+        })
     }
 
     fn pdf(&self, p: DVec3, w: DVec3) -> f64 {
         self.hit(p, w).map_or(0.0, |h| {
-            area_to_solid_angle(1.0 / self.area, h.dist, h.cos_light)
+            area_to_solid_angle(1.0 / self.area(), h.dist, h.cos_light)
         })
     }
     // ANCHOR_END: quad_hit

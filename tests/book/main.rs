@@ -53,3 +53,6 @@ mod renderer {
 
 /// The command line: subcommands end to end, their errors and exit statuses.
 mod cli;
+
+/// The one writer of every file (`src/output.rs`): atomic files, sets, staged folders.
+mod output;

@@ -634,13 +634,16 @@ fn write_failure_images(
         let g = (255.0 * (v / max).clamp(0.0, 1.0)) as u8;
         [g, g, g]
     };
-    image(&|k| grey(observed[k] as f64))
-        .save(dir.join("observed.png"))
-        .ok()?;
-    image(&|k| grey(expected[k]))
-        .save(dir.join("expected.png"))
-        .ok()?;
-    image(&|k| {
+    // The three images land together (the project's one writer), never half of them.
+    let mut files = crate::output::FileSet::new();
+    let mut stage = |name: &str, img: image::RgbImage| {
+        let png = crate::spectral::display::encode_png(img.width(), img.height(), img.as_raw());
+        png.ok()
+            .and_then(|bytes| files.write(&dir.join(name), &bytes).ok())
+    };
+    stage("observed.png", image(&|k| grey(observed[k] as f64)))?;
+    stage("expected.png", image(&|k| grey(expected[k])))?;
+    let difference = image(&|k| {
         // Red: more samples than expected; blue: fewer; in standard deviations, saturating at 5.
         let z = (observed[k] as f64 - expected[k]) / expected[k].max(1.0).sqrt();
         let c = (255.0 * (z.abs() / 5.0).min(1.0)) as u8;
@@ -649,8 +652,8 @@ fn write_failure_images(
         } else {
             [255 - c, 255 - c, 255]
         }
-    })
-    .save(dir.join("difference.png"))
-    .ok()?;
+    });
+    stage("difference.png", difference)?;
+    files.commit().ok()?;
     Some(dir)
 }

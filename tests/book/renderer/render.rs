@@ -12,11 +12,12 @@
 use std::path::Path;
 
 use glam::{DVec2, DVec3};
+use raylemma::geometry::Parallelogram;
 use raylemma::render::compare::{compare, two_sided_critical};
 use raylemma::render::image::{Image, Welford};
-use raylemma::render::integrator::{Surface, offset_origin};
-use raylemma::render::scene::{self, Geometry, Material, Scene};
-use raylemma::render::{Progress, render, render_with};
+use raylemma::render::integrator::offset_origin;
+use raylemma::render::scene::{self, Geometry, Material, Scene, Surface};
+use raylemma::render::{Progress, Sidecar, render, render_with, write_outputs};
 use raylemma::rng;
 use raylemma::sampling::cosine::cosine_malley;
 use raylemma::sampling::frame::Frame;
@@ -24,10 +25,9 @@ use raylemma::spectral::cie;
 use raylemma::spectral::spectrum::Spectrum;
 use raylemma::spectral::wavelength::{N, RANGE, Strategy, hero_visible};
 use raylemma::stats::{sidak, test_alpha};
-use raylemma::transport::shadow::QuadLight;
 
 fn load(name: &str) -> Scene {
-    scene::load(
+    raylemma::render::load(
         &Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(name),
@@ -237,7 +237,7 @@ fn images_are_bit_identical_whatever_the_number_of_threads() {
 /// The Cornell box closed at z = 0 by a white wall: no ray may leave it.
 fn closed_box() -> Scene {
     let mut s = load("cornell.toml");
-    let front = QuadLight::new(
+    let front = Parallelogram::new(
         DVec3::ZERO,
         DVec3::new(0.0, 555.0, 0.0),
         DVec3::new(555.0, 0.0, 0.0),
@@ -489,8 +489,117 @@ fn emission_wavelengths_weighted_by_another_pdf_are_rejected() {
 
 #[test]
 fn sidecar_strings_are_valid_json() {
-    use raylemma::render::json_string;
-    assert_eq!(json_string("plain"), "\"plain\"");
-    assert_eq!(json_string("a\"b\\c\nd"), "\"a\\\"b\\\\c\\u000ad\"");
-    assert_eq!(json_string("λ"), "\"λ\"");
+    let image = Image {
+        width: 2,
+        height: 1,
+        mean: vec![DVec3::ZERO; 2],
+        var: vec![DVec3::ZERO; 2],
+    };
+    let keys = [
+        "renderer",
+        "scene",
+        "scene_hash",
+        "width",
+        "height",
+        "spp",
+        "seed",
+        "wavelengths",
+        "seconds",
+        "threads",
+        "pixel_samples_per_second",
+    ];
+    // Plain text, quotes, a backslash and a newline, a non-ASCII letter, a control character.
+    for (scene, written) in [
+        ("plain", r#""plain""#),
+        ("a\"b\\c\nd", r#""a\"b\\c\nd""#),
+        ("λ", r#""λ""#),
+        ("bell\u{7}", r#""bell\u0007""#),
+    ] {
+        let sidecar = Sidecar {
+            scene: scene.into(),
+            scene_hash: 0x0123_4567_89ab_cdef,
+            spp: 16,
+            seed: 1,
+            wavelengths: "hero-visible".into(),
+            seconds: 0.25,
+            threads: 2,
+        };
+        let text = sidecar.to_json(&image);
+        assert!(text.contains(&format!("\"scene\": {written}")), "{text}");
+        assert!(text.ends_with("}\n"), "{text}");
+        let v: serde_json::Value =
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}:\n{text}"));
+        let obj = v.as_object().unwrap();
+        assert_eq!(obj.keys().collect::<Vec<_>>().len(), keys.len(), "{text}");
+        for key in keys {
+            assert!(obj.contains_key(key), "{key} missing from {text}");
+        }
+        assert_eq!(v["scene"], scene);
+        assert_eq!(v["scene_hash"], "0123456789abcdef");
+        assert_eq!(v["width"], 2);
+        assert_eq!(v["height"], 1);
+        assert_eq!(v["spp"], 16);
+        assert_eq!(v["seed"], 1);
+        assert_eq!(v["wavelengths"], "hero-visible");
+        assert_eq!(v["seconds"], 0.25);
+        assert_eq!(v["threads"], 2);
+        assert_eq!(v["pixel_samples_per_second"], 128);
+        assert!(
+            v["renderer"]
+                .as_str()
+                .is_some_and(|r| r.starts_with("raylemma ")),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn a_failed_write_leaves_the_earlier_render_whole() {
+    let dir = tmp("atomic-render");
+    let _ = std::fs::remove_dir_all(&dir);
+    let s = small(load("cornell.toml"), 8, 2);
+    let sidecar = |seed| Sidecar {
+        scene: "cornell.toml".into(),
+        scene_hash: s.hash,
+        spp: 2,
+        seed,
+        wavelengths: "hero-visible".into(),
+        seconds: 1.0,
+        threads: 1,
+    };
+    let first = render(&s, 2, Progress::Silent);
+    let [exr, png, json] = write_outputs(&dir, "tiny", &first, &sidecar(1)).unwrap();
+    let earlier = [std::fs::read(&exr).unwrap(), std::fs::read(&png).unwrap()];
+    // Something in the way of the last file: its rename fails after the EXR and the PNG
+    // of the new render have landed; both are put back.
+    std::fs::remove_file(&json).unwrap();
+    std::fs::create_dir(&json).unwrap();
+    std::fs::write(json.join("keep"), b"keep").unwrap();
+    let mut other = s.clone();
+    other.settings.seed += 1;
+    let second = render(&other, 2, Progress::Silent);
+    let e = write_outputs(&dir, "tiny", &second, &sidecar(2)).unwrap_err();
+    assert!(e.to_string().contains("tiny.json"), "{e}");
+    assert_eq!(std::fs::read(&exr).unwrap(), earlier[0], "tiny.exr changed");
+    assert_eq!(std::fs::read(&png).unwrap(), earlier[1], "tiny.png changed");
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["tiny.exr", "tiny.json", "tiny.png"], "stray files");
+    // With the way clear, the new render lands whole.
+    std::fs::remove_dir_all(&json).unwrap();
+    write_outputs(&dir, "tiny", &second, &sidecar(2)).unwrap();
+    assert_ne!(
+        std::fs::read(&exr).unwrap(),
+        earlier[0],
+        "the new EXR did not land"
+    );
+    assert!(
+        std::fs::read_to_string(&json)
+            .unwrap()
+            .contains("\"seed\": 2")
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
 }

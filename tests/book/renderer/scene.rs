@@ -1,4 +1,5 @@
-//! Tests of the scene format (`src/render/scene.rs`, chapter *The reference renderer*):
+//! Tests of the scene format (`src/render/format.rs`, checked by `src/render/validate/`;
+//! chapter *The reference renderer*):
 //! every canonical scene reads; every malformed scene is refused with the file, the line
 //! and the reason; random corruptions of real scenes never panic; and `raylemma render`
 //! refuses a bad scene before it writes anything, leaving earlier outputs untouched.
@@ -7,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use raylemma::data::DataError;
+use raylemma::render;
 use raylemma::render::scene::{self, Material};
 use raylemma::rng;
 
@@ -59,7 +61,7 @@ emission = 10
 "#;
 
 fn parse(text: &str) -> Result<scene::Scene, DataError> {
-    scene::parse(text, "test.toml", &scenes_dir())
+    render::parse(text, "test.toml", &scenes_dir())
 }
 
 /// `GOOD` with the line that starts with `old` replaced by `new`; the 1-based line.
@@ -100,7 +102,7 @@ fn every_canonical_scene_reads() {
     paths.sort();
     assert!(paths.len() >= 11, "{paths:?}");
     for p in &paths {
-        let s = scene::load(p).unwrap_or_else(|e| panic!("{e}"));
+        let s = render::load(p).unwrap_or_else(|e| panic!("{e}"));
         assert!(
             s.settings.spp >= 1 && !s.shapes.is_empty(),
             "{}",
@@ -112,7 +114,7 @@ fn every_canonical_scene_reads() {
 
 #[test]
 fn the_cornell_box_is_the_one_the_issue_specifies() {
-    let s = scene::load(&scenes_dir().join("cornell.toml")).unwrap();
+    let s = render::load(&scenes_dir().join("cornell.toml")).unwrap();
     assert_eq!((s.camera.width, s.camera.height), (256, 256));
     assert_eq!(s.camera.fov_y_deg, 39.3077);
     assert_eq!(s.camera.position, glam::DVec3::new(278.0, 273.0, -800.0));
@@ -262,7 +264,7 @@ fn a_malformed_spectrum_file_names_its_own_line() {
     )
     .unwrap();
     let (text, _) = with("grey = { constant", "grey = { file = \"bad.csv\" }");
-    let e = scene::parse(&text, "test.toml", &dir)
+    let e = render::parse(&text, "test.toml", &dir)
         .map(|_| ())
         .unwrap_err();
     assert!(e.file.ends_with("bad.csv") && e.line == 3, "{e}");
@@ -316,7 +318,7 @@ fn random_corruptions_never_panic() {
         }
         let text = String::from_utf8_lossy(&bytes);
         let outcome =
-            std::panic::catch_unwind(|| scene::parse(&text, "fuzz.toml", &scenes_dir()).is_err());
+            std::panic::catch_unwind(|| render::parse(&text, "fuzz.toml", &scenes_dir()).is_err());
         match outcome {
             Ok(true) => refused += 1,
             Ok(false) => {}

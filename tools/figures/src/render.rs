@@ -16,7 +16,7 @@ use super::timing::{machine, quick_note};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
 use raylemma::render::compare::{mse_against, noise_level};
 use raylemma::render::image::Image;
-use raylemma::render::scene::{self, Scene};
+use raylemma::render::scene::Scene;
 use raylemma::render::{self, Progress, Sidecar};
 use raylemma::spectral::display;
 use raylemma::stats::binomial::wilson;
@@ -73,7 +73,7 @@ fn render_one(
     settings: &Settings,
 ) -> Result<Rendered, BoxError> {
     let path = scenes_dir(settings).join(file);
-    let s = scene::load(&path)?;
+    let s = render::load(&path)?;
     let spp = reference_spp(&s, settings);
     eprintln!(
         "  {name}: {}x{}, {spp} spp",
@@ -92,7 +92,7 @@ fn render_one(
 /// The cornell scene at increasing sample counts: `(spp, seconds, RMSE)` against the
 /// reference (a different seed, so that the errors are independent).
 fn speed_series(reference: &Image, settings: &Settings) -> Result<Vec<(u32, f64, f64)>, BoxError> {
-    let mut s = scene::load(&scenes_dir(settings).join("cornell.toml"))?;
+    let mut s = render::load(&scenes_dir(settings).join("cornell.toml"))?;
     s.settings.seed = 1_000_003;
     let top = if settings.quick { 8 } else { 128 };
     let mut out = Vec::new();
@@ -234,7 +234,7 @@ fn calibrate(
     use raylemma::render::compare::compare;
     use raylemma::render::scene::Material;
     use raylemma::spectral::spectrum::Spectrum;
-    let mut s = scene::load(&scenes_dir(settings).join(scene))?;
+    let mut s = render::load(&scenes_dir(settings).join(scene))?;
     s.camera.width = side;
     s.camera.height = side;
     let mut bright = s.clone();

@@ -1,0 +1,127 @@
+//! The driver: a render of a whole image, split into square tiles ([`TILE`]) that the
+//! worker threads (rayon) take in any order, each pixel by [`super::pixel::render_pixel`],
+//! with a progress bar ([`Progress`]); and [`render_file`], which reads a scene file,
+//! renders it and times it for its sidecar. Chapter: *The reference renderer*
+//! (`chapters/renderer/renderer.md`).
+
+use std::path::Path;
+use std::time::Instant;
+
+use glam::DVec3;
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+
+use super::camera::Camera;
+use super::files::Sidecar;
+use super::format;
+use super::image::{Image, Welford};
+use super::pixel::{WavelengthSampler, render_pixel};
+use super::scene::Scene;
+
+/// The side of the square tiles the image is split into for the worker threads.
+pub const TILE: u32 = 16;
+
+/// How a render reports progress.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Progress {
+    /// A progress bar on standard error.
+    Bar,
+    /// Nothing (tests).
+    Silent,
+}
+
+// ANCHOR: render
+/// Renders `scene` with `spp` samples per pixel, over square tiles in parallel (rayon).
+/// Each pixel has its own generator ([`super::pixel::pixel_rng`]), so the result does not
+/// depend on the number of threads.
+pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
+    let wavelengths = &scene.settings.wavelengths;
+    render_with(scene, spp, progress, &|u| wavelengths.sample(u))
+}
+// ANCHOR_END: render
+
+/// [`render`] with the wavelengths of every path drawn by `sampler` instead of the scene's
+/// strategy (the tests plant wrong samplers through it).
+pub fn render_with(
+    scene: &Scene,
+    spp: u32,
+    progress: Progress,
+    sampler: WavelengthSampler,
+) -> Image {
+    let camera = Camera::new(&scene.camera);
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let tiles: Vec<(u32, u32)> = (0..h.div_ceil(TILE))
+        .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
+        .collect();
+    let bar = match progress {
+        Progress::Bar => ProgressBar::new(tiles.len() as u64).with_style(
+            ProgressStyle::with_template(
+                "  {msg} [{bar:40}] {pos}/{len} tiles, {elapsed} elapsed, about {eta} left",
+            )
+            .unwrap_or_else(|_| ProgressStyle::default_bar())
+            .progress_chars("=> "),
+        ),
+        Progress::Silent => ProgressBar::hidden(),
+    };
+    bar.set_message(format!("{w}x{h}, {spp} spp"));
+    let done: Vec<Vec<(usize, Welford)>> = tiles
+        .par_iter()
+        .map(|&(x0, y0)| {
+            let mut out = Vec::with_capacity((TILE * TILE) as usize);
+            for y in y0..(y0 + TILE).min(h) {
+                for x in x0..(x0 + TILE).min(w) {
+                    let idx = y as usize * w as usize + x as usize;
+                    out.push((idx, render_pixel(scene, &camera, sampler, (x, y), spp)));
+                }
+            }
+            bar.inc(1);
+            out
+        })
+        .collect();
+    bar.finish_and_clear();
+    let n = w as usize * h as usize;
+    let mut image = Image {
+        width: w,
+        height: h,
+        mean: vec![DVec3::ZERO; n],
+        var: vec![DVec3::ZERO; n],
+    };
+    for (idx, acc) in done.into_iter().flatten() {
+        image.mean[idx] = acc.mean();
+        image.var[idx] = acc.var_of_mean();
+    }
+    image
+}
+
+/// Renders the scene file `path` and times it: the image and its sidecar.
+///
+/// # Errors
+/// The scene's [`crate::data::DataError`] as text, before anything is rendered.
+pub fn render_file(
+    path: &Path,
+    spp: Option<u32>,
+    seed: Option<u64>,
+    progress: Progress,
+) -> Result<(Scene, Image, Sidecar), String> {
+    let mut scene = format::load(path).map_err(|e| e.to_string())?;
+    if let Some(s) = spp {
+        scene.settings.spp = s;
+    }
+    if let Some(s) = seed {
+        scene.settings.seed = s;
+    }
+    let start = Instant::now();
+    let image = render(&scene, scene.settings.spp, progress);
+    let seconds = start.elapsed().as_secs_f64();
+    let name = scene.settings.wavelengths.name();
+    let sidecar = Sidecar {
+        scene: path.display().to_string(),
+        scene_hash: scene.hash,
+        spp: scene.settings.spp,
+        seed: scene.settings.seed,
+        wavelengths: name.to_string(),
+        seconds,
+        threads: rayon::current_num_threads(),
+    };
+    Ok((scene, image, sidecar))
+}

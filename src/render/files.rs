@@ -1,0 +1,108 @@
+//! The files of a render: `SCENE.exr` (the means and their variances), `SCENE.png` (the
+//! display image) and `SCENE.json`, the sidecar that says what the render was
+//! ([`Sidecar`], written with `serde_json`). All three land together or not at all
+//! ([`write_outputs`], through the project's one writer, [`crate::output::FileSet`]), so a
+//! failure leaves an earlier render whole. Chapter: *The reference renderer*
+//! (`chapters/renderer/renderer.md`, *What a render writes*).
+
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use super::image::Image;
+use crate::output::{self, FileError, FileSet};
+
+/// What a render was, for its JSON sidecar.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sidecar {
+    /// The scene file as given.
+    pub scene: String,
+    /// [`super::scene::Scene::hash`].
+    pub scene_hash: u64,
+    /// Samples per pixel.
+    pub spp: u32,
+    /// The seed.
+    pub seed: u64,
+    /// The wavelength strategy's name.
+    pub wavelengths: String,
+    /// Wall-clock seconds of the rendering (not of reading or writing).
+    pub seconds: f64,
+    /// Worker threads.
+    pub threads: usize,
+}
+
+/// The sidecar as written, key by key in the order of the renderer chapter.
+#[derive(Serialize)]
+struct Json<'a> {
+    renderer: String,
+    scene: &'a str,
+    /// 16 hexadecimal digits (JSON numbers lose the low bits of a 64-bit integer).
+    scene_hash: String,
+    width: u32,
+    height: u32,
+    spp: u32,
+    seed: u64,
+    wavelengths: &'a str,
+    /// Rounded to milliseconds.
+    seconds: f64,
+    threads: usize,
+    /// Rounded to an integer.
+    pixel_samples_per_second: u64,
+}
+
+impl Sidecar {
+    /// The sidecar of `image` as pretty-printed JSON (the keys of the renderer chapter),
+    /// ending with a newline.
+    pub fn to_json(&self, image: &Image) -> String {
+        let samples = f64::from(image.width) * f64::from(image.height) * f64::from(self.spp);
+        let json = Json {
+            renderer: format!("raylemma {}", env!("CARGO_PKG_VERSION")),
+            scene: &self.scene,
+            scene_hash: format!("{:016x}", self.scene_hash),
+            width: image.width,
+            height: image.height,
+            spp: self.spp,
+            seed: self.seed,
+            wavelengths: &self.wavelengths,
+            seconds: (self.seconds * 1000.0).round() / 1000.0,
+            threads: self.threads,
+            // A float-to-integer `as` saturates (and takes NaN to 0).
+            pixel_samples_per_second: (samples / self.seconds.max(1e-9)).round() as u64,
+        };
+        // Serialising plain strings and numbers into a string cannot fail.
+        let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+}
+
+/// The files of a render called `stem` in `dir`: `stem.exr`, `stem.png`, `stem.json`.
+pub fn output_paths(dir: &Path, stem: &str) -> [PathBuf; 3] {
+    ["exr", "png", "json"].map(|ext| dir.join(format!("{stem}.{ext}")))
+}
+
+/// Writes the three files of a render into `dir` (created if needed), as one
+/// [`FileSet`]: each is written to a temporary file beside its destination, and all three
+/// are renamed into place only once all are written, so that a failure leaves any earlier
+/// render whole and no temporary file behind.
+///
+/// # Errors
+/// A [`FileError`] naming the file (or folder) that could not be written.
+pub fn write_outputs(
+    dir: &Path,
+    stem: &str,
+    image: &Image,
+    sidecar: &Sidecar,
+) -> Result<[PathBuf; 3], FileError> {
+    output::create_dir_all(dir)?;
+    let [exr, png, json] = output_paths(dir, stem);
+    let mut files = FileSet::new();
+    files.write_with(&exr, |f| image.encode_exr(f))?;
+    let bytes = image
+        .encode_png(0.0)
+        .map_err(|problem| FileError::new(&png, problem))?;
+    files.write(&png, &bytes)?;
+    files.write(&json, sidecar.to_json(image).as_bytes())?;
+    files.commit()?;
+    Ok([exr, png, json])
+}

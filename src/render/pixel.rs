@@ -1,0 +1,70 @@
+//! One pixel: its generator ([`pixel_rng`]), its samples (a jittered camera ray, the
+//! path's wavelengths, the path's radiance, its colour: [`sample_xyz`]), and their running
+//! mean and variance ([`render_pixel`]). Chapter: *The reference renderer*
+//! (`chapters/renderer/renderer.md`, *From lanes to a pixel*).
+
+use glam::{DVec2, DVec3};
+use rand::RngExt;
+
+use super::camera::Camera;
+use super::image::Welford;
+use super::integrator::{self, Lanes};
+use super::scene::Scene;
+use crate::rng::Rng;
+use crate::spectral::cie;
+use crate::spectral::wavelength::{N, Wavelengths};
+
+// ANCHOR: pixel_rng
+/// The generator of pixel `index` for `seed`: PCG-64 on its own stream. A pixel's samples
+/// depend on nothing but the seed and its index, so the image is bit-identical whatever the
+/// number of threads or the order in which tiles finish.
+pub fn pixel_rng(seed: u64, index: u64) -> Rng {
+    let state = u128::from(seed) << 64 | 0x853c_49e6_748f_ea9b;
+    Rng::new(state, u128::from(index))
+}
+// ANCHOR_END: pixel_rng
+
+// ANCHOR: sample_xyz
+/// One sample's CIE XYZ from the radiance `l` at the path's wavelengths: the hero
+/// estimator `(1/N) sum_j l_j cmf(lambda_j) / pdf_j`, over the live lanes, normalised so
+/// that a constant radiance 1 has `Y = 1` (the estimator of
+/// [`crate::spectral::wavelength::Wavelengths::estimate`], with the lanes' values
+/// already known).
+pub fn sample_xyz(l: &Lanes, wl: &Wavelengths) -> DVec3 {
+    let mut sum = DVec3::ZERO;
+    for ((&lj, &pdf), &nm) in l.iter().zip(&wl.pdf).zip(&wl.lambda) {
+        if pdf > 0.0 {
+            sum += lj / pdf * cie::cmf(nm);
+        }
+    }
+    sum / (N as f64 * cie::y_integral())
+}
+// ANCHOR_END: sample_xyz
+
+/// Draws the wavelengths of one path from a uniform number in `[0, 1)`.
+pub type WavelengthSampler<'a> = &'a (dyn Fn(f64) -> Wavelengths + Sync);
+
+/// Renders pixel `(x, y)` with `spp` samples: the mean and variance of its linear sRGB.
+pub fn render_pixel(
+    scene: &Scene,
+    camera: &Camera,
+    sampler: WavelengthSampler,
+    (x, y): (u32, u32),
+    spp: u32,
+) -> Welford {
+    let to_rgb = cie::xyz_to_linear_srgb_matrix();
+    let w = scene.camera.width;
+    let mut rng = pixel_rng(
+        scene.settings.seed,
+        u64::from(y) * u64::from(w) + u64::from(x),
+    );
+    let mut acc = Welford::default();
+    for _ in 0..spp {
+        let jitter = DVec2::new(rng.random(), rng.random());
+        let ray = camera.ray(x, y, jitter);
+        let mut wl = sampler(rng.random());
+        let l = integrator::radiance(scene, ray.origin, ray.dir, &mut wl, &mut rng);
+        acc.push(to_rgb * sample_xyz(&l, &wl));
+    }
+    acc
+}

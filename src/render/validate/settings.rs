@@ -1,0 +1,134 @@
+//! The checks of `[render]` and `[camera]`, and of the emission wavelength strategy, which
+//! needs the lights. Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
+
+use std::ops::Range;
+
+use toml::Spanned;
+
+use super::Checker;
+use crate::data::DataError;
+use crate::render::format::{MAX_RESOLUTION, RawCamera, RawRender, WAVELENGTH_STRATEGIES};
+use crate::render::scene::{CameraSpec, Emitter, RenderSettings, Wavelength};
+use crate::spectral::emission::{EmissionSampler, colour_proposal};
+use crate::spectral::spectrum::Spectrum;
+use crate::spectral::wavelength::Strategy;
+
+impl Checker<'_> {
+    /// `[render]`: samples per pixel, seed, wavelength strategy (`"emission"` is resolved
+    /// once the lights are known, [`Checker::emission_sampling`]), path-length controls.
+    pub(super) fn render(&self, r: &Spanned<RawRender>) -> Result<RenderSettings, DataError> {
+        let r = r.get_ref();
+        let spp = self.non_negative_int(&r.spp, "spp (samples per pixel)", 1)?;
+        let spp = u32::try_from(spp).or_else(|_| self.err(r.spp.span(), "spp is too large"))?;
+        let seed = match &r.seed {
+            Some(s) => self.non_negative_int(s, "seed", 0)?,
+            None => 0,
+        };
+        let wavelengths = match &r.wavelengths {
+            None => Wavelength::Strategy(Strategy::HeroVisible),
+            // Resolved once the lights are known.
+            Some(w) if w.get_ref() == "emission" => Wavelength::Strategy(Strategy::HeroVisible),
+            Some(w) => match WAVELENGTH_STRATEGIES.iter().find(|(n, _)| n == w.get_ref()) {
+                Some((_, s)) => Wavelength::Strategy(*s),
+                None => {
+                    let names: Vec<&str> = WAVELENGTH_STRATEGIES.iter().map(|(n, _)| *n).collect();
+                    return self.err(
+                        w.span(),
+                        format!(
+                            "unknown wavelength strategy {:?} (there are: {}, emission)",
+                            w.get_ref(),
+                            names.join(", ")
+                        ),
+                    );
+                }
+            },
+        };
+        let depth =
+            |x: &Option<Spanned<i64>>, what: &str, default: u32| -> Result<u32, DataError> {
+                match x {
+                    None => Ok(default),
+                    Some(v) => {
+                        let d = self.non_negative_int(v, what, 0)?;
+                        u32::try_from(d)
+                            .or_else(|_| self.err(v.span(), format!("{what} is too large")))
+                    }
+                }
+            };
+        Ok(RenderSettings {
+            spp,
+            seed,
+            wavelengths,
+            roulette_depth: depth(&r.roulette_depth, "roulette_depth", 3)?,
+            max_depth: depth(&r.max_depth, "max_depth", 1000)?,
+        })
+    }
+
+    /// `[camera]`: finite vectors, a view direction not along `up`, a field of view in
+    /// `(0, 180)` degrees, a resolution in `1..=MAX_RESOLUTION`.
+    pub(super) fn camera(&self, c: &Spanned<RawCamera>) -> Result<CameraSpec, DataError> {
+        let c = c.get_ref();
+        let position = self.vec3(&c.position, "camera position")?;
+        let look_at = self.vec3(&c.look_at, "camera look_at")?;
+        let up = self.vec3(&c.up, "camera up")?;
+        let fov = self.finite(&c.fov_y, "fov_y")?;
+        if !(fov > 0.0 && fov < 180.0) {
+            return self.err(
+                c.fov_y.span(),
+                format!("fov_y is {fov} degrees; it must be in (0, 180)"),
+            );
+        }
+        let forward = look_at - position;
+        if forward.length() == 0.0 {
+            return self.err(
+                c.look_at.span(),
+                "camera look_at is the camera position: no view direction",
+            );
+        }
+        if forward.normalize().cross(up).length() < 1e-9 * up.length() || up.length() == 0.0 {
+            return self.err(
+                c.up.span(),
+                "camera up is zero or parallel to the view direction",
+            );
+        }
+        let [w, h] = *c.resolution.get_ref();
+        if !(1..=MAX_RESOLUTION).contains(&w) || !(1..=MAX_RESOLUTION).contains(&h) {
+            return self.err(
+                c.resolution.span(),
+                format!("resolution {w} x {h}: each side must be in 1..={MAX_RESOLUTION}"),
+            );
+        }
+        Ok(CameraSpec {
+            position,
+            look_at,
+            up,
+            fov_y_deg: fov,
+            width: w as u32,
+            height: h as u32,
+        })
+    }
+
+    /// The emission strategy: needs one light with a tabulated spectrum and no environment.
+    pub(super) fn emission_sampling(
+        &self,
+        span: Range<usize>,
+        lights: &[Emitter],
+        environment: bool,
+    ) -> Result<Wavelength, DataError> {
+        let why = match (lights, environment) {
+            (_, true) => "an environment also emits",
+            ([one], false) => match &one.emission {
+                Spectrum::Table(t) => {
+                    return EmissionSampler::new(&colour_proposal(t))
+                        .map(Wavelength::Emission)
+                        .or_else(|e| self.err(span, format!("wavelengths = \"emission\": {e}")));
+                }
+                _ => "its light's spectrum is not a table (a file or a lamp)",
+            },
+            _ => "it needs exactly one light",
+        };
+        self.err(
+            span,
+            format!("wavelengths = \"emission\" cannot be used here: {why}"),
+        )
+    }
+}
