@@ -94,15 +94,31 @@ pub fn write_outputs(
     image: &Image,
     sidecar: &Sidecar,
 ) -> Result<[PathBuf; 3], FileError> {
+    let mut files = FileSet::new();
+    let paths = stage_outputs(&mut files, dir, stem, image, sidecar)?;
+    files.commit()?;
+    Ok(paths)
+}
+
+/// Stages the three files of a render in `dir` (created if needed) into `files`, to land
+/// with the rest of that set (the reference job commits every render and table at once).
+///
+/// # Errors
+/// A [`FileError`] naming the file (or folder) that could not be written.
+pub fn stage_outputs(
+    files: &mut FileSet,
+    dir: &Path,
+    stem: &str,
+    image: &Image,
+    sidecar: &Sidecar,
+) -> Result<[PathBuf; 3], FileError> {
     output::create_dir_all(dir)?;
     let [exr, png, json] = output_paths(dir, stem);
-    let mut files = FileSet::new();
     files.write_with(&exr, |f| image.encode_exr(f))?;
     let bytes = image
         .encode_png(0.0)
         .map_err(|problem| FileError::new(&png, problem))?;
     files.write(&png, &bytes)?;
     files.write(&json, sidecar.to_json(image).as_bytes())?;
-    files.commit()?;
     Ok([exr, png, json])
 }

@@ -31,7 +31,7 @@ pub mod scene;
 mod validate;
 
 pub use driver::{Progress, TILE, render, render_file, render_with};
-pub use files::{Sidecar, output_paths, write_outputs};
+pub use files::{Sidecar, output_paths, stage_outputs, write_outputs};
 pub use format::{load, parse};
 pub use pixel::{WavelengthSampler, pixel_rng, render_pixel, sample_xyz};
 pub use scene::Scene;

@@ -9,6 +9,15 @@
 mod dedent;
 mod logging;
 mod math;
+/// The project's one writer of files (`src/output.rs` of the library, compiled here as it
+/// is: the book tool does not link the library). The book is made in a staging folder
+/// beside `book/` and swapped in for it whole ([`output::StagedDir::replace`]).
+#[allow(
+    dead_code,
+    reason = "the book needs only the staged folder of the writer"
+)]
+#[path = "../../../src/output.rs"]
+mod output;
 mod preflight;
 
 use std::ffi::OsString;
@@ -23,6 +32,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use mdbook_driver::MDBook;
 use mdbook_driver::book::BookItem;
 use mdbook_driver::config::Config;
+use output::StagedDir;
 use regex::Regex;
 
 const USAGE: &str =
@@ -114,19 +124,8 @@ fn build(args: &Args) -> Result<PathBuf> {
         Some(out) => std::path::absolute(out)?,
         None => root.join(&config.build.build_dir),
     };
-    let name = out
-        .file_name()
-        .with_context(|| format!("output {} has no directory name", out.display()))?
-        .to_string_lossy()
-        .into_owned();
-    let parent = out.parent().unwrap_or(Path::new("/"));
-    fs::create_dir_all(parent).with_context(|| format!("creating {}", parent.display()))?;
-    let pid = std::process::id();
-    let staging = Staging(parent.join(format!("{name}.tmp-{pid}")));
-    if staging.0.exists() {
-        fs::remove_dir_all(&staging.0)?;
-    }
-    config.build.build_dir = staging.0.clone();
+    let staging = StagedDir::beside(&out)?;
+    config.build.build_dir = staging.path().to_path_buf();
 
     let mut md = MDBook::load_with_config(&root, config).context("loading the book")?;
     md.with_preprocessor(dedent::Dedent);
@@ -157,46 +156,13 @@ fn build(args: &Args) -> Result<PathBuf> {
             remote.join("\n")
         );
     }
-    let index_rel = html_dir.strip_prefix(&staging.0)?.join("index.html");
+    let index_rel = html_dir.strip_prefix(staging.path())?.join("index.html");
     if !html_dir.join("index.html").is_file() {
         bail!("mdBook wrote no index.html");
     }
 
-    swap_into_place(staging, &out, pid)?;
+    let out = staging.replace()?;
     Ok(out.join(index_rel))
-}
-
-/// A staging directory, removed on drop unless it has been moved into place.
-struct Staging(PathBuf);
-
-impl Drop for Staging {
-    fn drop(&mut self) {
-        if self.0.exists() {
-            let _ = fs::remove_dir_all(&self.0);
-        }
-    }
-}
-
-/// Renames `out` aside, `staging` to `out`, then deletes the old output.
-fn swap_into_place(staging: Staging, out: &Path, pid: u32) -> Result<()> {
-    let old = out.with_file_name(format!(
-        "{}.old-{pid}",
-        out.file_name().unwrap_or_default().to_string_lossy()
-    ));
-    let had_old = out.exists();
-    if had_old {
-        fs::rename(out, &old).with_context(|| format!("moving {} aside", out.display()))?;
-    }
-    if let Err(e) = fs::rename(&staging.0, out) {
-        if had_old {
-            let _ = fs::rename(&old, out);
-        }
-        return Err(e).with_context(|| format!("renaming the new book to {}", out.display()));
-    }
-    if had_old && let Err(e) = fs::remove_dir_all(&old) {
-        eprintln!("warning: could not remove {}: {e}", old.display());
-    }
-    Ok(())
 }
 
 /// Runs `f`, turning a panic (in mdBook or a preprocessor) into an error with its message.

@@ -4,10 +4,10 @@
 //! into a staging directory first; only when *all* outputs succeeded are they moved into
 //! `figures/` (one rename per file), so a failed run leaves the previous figures intact.
 
-use std::fs;
 use std::path::{Path, PathBuf};
 
 use indicatif::{ProgressBar, ProgressStyle};
+use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
@@ -83,7 +83,9 @@ pub fn write_all(
     write_outputs(dir, &outputs, settings)
 }
 
-/// Produces `outputs` in a staging directory beside `dir`, then moves them into `dir`.
+/// Produces `outputs` and writes them into `dir` as one set of files
+/// ([`raylemma::output::FileSet`]): each is staged beside its destination, and they are
+/// renamed into place only when all succeeded.
 ///
 /// # Errors
 /// Names the first output that failed; `dir` is then left exactly as it was.
@@ -92,49 +94,23 @@ pub fn write_outputs(
     outputs: &[Output],
     settings: &Settings,
 ) -> Result<Vec<PathBuf>, BoxError> {
-    fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let staging = dir.with_file_name(format!(
-        "{}.tmp-{}",
-        dir.file_name()
-            .and_then(|n| n.to_str())
-            .unwrap_or("figures"),
-        std::process::id()
-    ));
-    fs::create_dir_all(&staging)
-        .map_err(|e| format!("cannot create {}: {e}", staging.display()))?;
-    let result = produce(outputs, &staging, settings).and_then(|()| commit(outputs, &staging, dir));
-    let _ = fs::remove_dir_all(&staging);
-    result
-}
-
-fn produce(outputs: &[Output], staging: &Path, settings: &Settings) -> Result<(), BoxError> {
+    output::create_dir_all(dir)?;
     let bar = ProgressBar::new(outputs.len() as u64);
     bar.set_style(
         ProgressStyle::with_template("{elapsed:>4} [{bar:30}] {pos}/{len} {msg}")
             .map_err(|e| e.to_string())?
             .progress_chars("=> "),
     );
-    for output in outputs {
-        bar.set_message(format!("{} ({})", output.file, output.what));
-        let bytes = (output.make)(settings)
-            .map_err(|e| format!("figure {} ({}) failed: {e}", output.file, output.what))?;
-        let path = staging.join(output.file);
-        fs::write(&path, bytes).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let mut set = FileSet::new();
+    for o in outputs {
+        bar.set_message(format!("{} ({})", o.file, o.what));
+        let bytes = (o.make)(settings)
+            .map_err(|e| format!("figure {} ({}) failed: {e}", o.file, o.what))?;
+        set.write(&dir.join(o.file), &bytes)?;
         bar.inc(1);
     }
     bar.finish_with_message("done");
-    Ok(())
-}
-
-fn commit(outputs: &[Output], staging: &Path, dir: &Path) -> Result<Vec<PathBuf>, BoxError> {
-    let mut written = Vec::new();
-    for output in outputs {
-        let target = dir.join(output.file);
-        fs::rename(staging.join(output.file), &target)
-            .map_err(|e| format!("cannot move {} into place: {e}", target.display()))?;
-        written.push(target);
-    }
-    Ok(written)
+    Ok(set.commit()?)
 }
 
 #[cfg(test)]
@@ -208,16 +184,12 @@ mod tests {
         }];
         write_outputs(&dir, &ok, &settings()).unwrap();
         assert_eq!(fs::read_to_string(dir.join("a.md")).unwrap(), "new");
-        let leftovers: Vec<_> = fs::read_dir(dir.parent().unwrap())
+        let names: Vec<_> = fs::read_dir(&dir)
             .unwrap()
             .filter_map(Result::ok)
-            .filter(|e| {
-                e.file_name()
-                    .to_string_lossy()
-                    .starts_with(&format!("raylemma-figures-test-{}.tmp", std::process::id()))
-            })
+            .map(|e| e.file_name().to_string_lossy().into_owned())
             .collect();
-        assert!(leftovers.is_empty(), "staging directory left behind");
+        assert_eq!(names, ["a.md"], "temporary files left behind");
         fs::remove_dir_all(&dir).unwrap();
     }
 }

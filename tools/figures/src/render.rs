@@ -7,13 +7,13 @@
 //! moves it into place only when all of it succeeded.
 
 use std::fmt::Write as _;
-use std::fs;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::Settings;
 use super::timing::{machine, quick_note};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use raylemma::output::FileSet;
 use raylemma::render::compare::{mse_against, noise_level};
 use raylemma::render::image::Image;
 use raylemma::render::scene::Scene;
@@ -312,8 +312,9 @@ fn calibration_md(settings: &Settings) -> Result<String, BoxError> {
     Ok(md)
 }
 
-/// Renders every canonical scene and the speed series, and moves the results into
-/// `figures/reference/` and `figures/` only when all succeeded.
+/// Renders every canonical scene and the speed series, and writes the results into
+/// `figures/reference/` and `figures/` as one set of files, which lands only when all
+/// succeeded.
 ///
 /// # Errors
 /// The scene or file that failed; `figures/` is then unchanged.
@@ -325,46 +326,29 @@ pub fn write_references(figures: &Path, settings: &Settings) -> Result<Vec<PathB
     eprintln!("  cornell: RMSE against time");
     let series = speed_series(&rendered[0].image, settings)?;
     eprintln!("  compare: false alarms and power over pairs of renders");
-    let staging = figures.with_file_name(format!("figures.tmp-render-{}", std::process::id()));
-    let result = (|| -> Result<Vec<PathBuf>, BoxError> {
-        let refs = staging.join("reference");
-        fs::create_dir_all(&refs)?;
-        let mut moves = Vec::new();
-        for r in &rendered {
-            let files = render::write_outputs(&refs, r.name, &r.image, &r.sidecar)?;
-            for f in files {
-                let name = f.file_name().unwrap_or_default().to_owned();
-                moves.push((f, figures.join("reference").join(name)));
-            }
-        }
-        let flat: [(&str, Vec<u8>); 5] = [
-            (
-                "render_compare_calibration.md",
-                calibration_md(settings)?.into_bytes(),
-            ),
-            (
-                "render_references.md",
-                references_md(&rendered, settings).into_bytes(),
-            ),
-            (
-                "render_speed.md",
-                speed_md(&series, &rendered[0], settings).into_bytes(),
-            ),
-            ("render_error_time.png", speed_png(&series)?),
-            ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
-        ];
-        for (name, bytes) in flat {
-            let p = staging.join(name);
-            fs::write(&p, bytes)?;
-            moves.push((p, figures.join(name)));
-        }
-        fs::create_dir_all(figures.join("reference"))?;
-        for (from, to) in &moves {
-            fs::rename(from, to)
-                .map_err(|e| format!("cannot move {} to {}: {e}", from.display(), to.display()))?;
-        }
-        Ok(moves.into_iter().map(|(_, to)| to).collect())
-    })();
-    let _ = fs::remove_dir_all(&staging);
-    result
+    let mut files = FileSet::new();
+    let refs = figures.join("reference");
+    for r in &rendered {
+        render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
+    }
+    let flat: [(&str, Vec<u8>); 5] = [
+        (
+            "render_compare_calibration.md",
+            calibration_md(settings)?.into_bytes(),
+        ),
+        (
+            "render_references.md",
+            references_md(&rendered, settings).into_bytes(),
+        ),
+        (
+            "render_speed.md",
+            speed_md(&series, &rendered[0], settings).into_bytes(),
+        ),
+        ("render_error_time.png", speed_png(&series)?),
+        ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
+    ];
+    for (name, bytes) in flat {
+        files.write(&figures.join(name), &bytes)?;
+    }
+    Ok(files.commit()?)
 }
