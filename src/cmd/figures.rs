@@ -1,0 +1,51 @@
+//! `raylemma figures` and `raylemma references`: run the figure job of the workspace
+//! (`tools/figures/`, the crate `raylemma-figures`), which draws every figure and table into
+//! `figures/` and renders the reference images into `figures/reference/`.
+
+use std::process::ExitCode;
+
+use clap::Args;
+
+use super::{finish, run_tool};
+
+/// `raylemma figures`.
+#[derive(Args, Debug)]
+pub struct FiguresArgs {
+    /// Only outputs whose file name contains this text (e.g. `sphere_speed`).
+    #[arg(long)]
+    pub only: Option<String>,
+}
+
+/// `raylemma references`.
+#[derive(Args, Debug)]
+pub struct ReferencesArgs {}
+
+/// Regenerates the figures (all, or those whose name contains `only`).
+pub fn figures(args: &FiguresArgs, quick: bool) -> Result<(), String> {
+    let mut cmd = vec!["figures"];
+    if let Some(name) = &args.only {
+        cmd.extend(["--only", name]);
+    }
+    if quick {
+        cmd.push("--quick");
+    }
+    run_tool("raylemma-figures", &cmd)
+}
+
+/// Renders the reference images.
+pub fn references(_: &ReferencesArgs, quick: bool) -> Result<(), String> {
+    let mut cmd = vec!["references"];
+    if quick {
+        cmd.push("--quick");
+    }
+    run_tool("raylemma-figures", &cmd)
+}
+
+/// With no subcommand: the figures, the references, then the book.
+pub fn everything(quick: bool) -> ExitCode {
+    finish(
+        figures(&FiguresArgs { only: None }, quick)
+            .and_then(|()| references(&ReferencesArgs {}, quick))
+            .and_then(|()| super::book::build()),
+    )
+}
