@@ -41,42 +41,8 @@ pub struct Image {
     pub var: Vec<DVec3>,
 }
 
-// ANCHOR: welford
-/// A running mean and sum of squared deviations (Welford 1962): adding a sample `x` to
-/// `n` of them moves the mean by `(x - mean) / (n + 1)` and the sum of squares by
-/// `(x - mean_old)(x - mean_new)`, without the cancellation of `sum x^2 - n mean^2`.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Welford {
-    n: u32,
-    mean: DVec3,
-    m2: DVec3,
-}
-
-impl Welford {
-    /// Adds one sample.
-    pub fn push(&mut self, x: DVec3) {
-        self.n += 1;
-        let delta = x - self.mean;
-        self.mean += delta / f64::from(self.n);
-        self.m2 += delta * (x - self.mean);
-    }
-
-    /// The mean of the samples.
-    pub fn mean(&self) -> DVec3 {
-        self.mean
-    }
-
-    /// The variance of the mean, `s^2 / n` with `s^2 = m2 / (n - 1)`; NaN for fewer than
-    /// two samples.
-    pub fn var_of_mean(&self) -> DVec3 {
-        if self.n < 2 {
-            return DVec3::NAN;
-        }
-        let n = f64::from(self.n);
-        self.m2 / ((n - 1.0) * n)
-    }
-}
-// ANCHOR_END: welford
+/// The accumulator of a pixel: the project's one Welford recurrence, on linear sRGB.
+pub type Welford = crate::stats::welford::Welford<DVec3>;
 
 impl Image {
     /// The pixel index of `(x, y)`.

@@ -13,6 +13,7 @@
 //!   or another sample; exact p-values for `n <= 1000` (Marsaglia, Tsang & Wang 2003).
 //! * [`ttest::one_sample`], [`ttest::welch`]: Student's and Welch's t-tests of means, on
 //!   running [`ttest::Summary`] values (Welford).
+//! * [`welford`]: running means and variances (every accumulator of the project).
 //! * [`binomial::wilson`]: the Wilson interval of a rate (false alarms, power).
 //! * [`null`]: experiments in which each test's null is true, for its calibration.
 //!
@@ -40,6 +41,7 @@ pub mod error;
 pub mod ks;
 pub mod null;
 pub mod ttest;
+pub mod welford;
 
 pub use error::StatsError;
 

@@ -9,14 +9,15 @@
 
 use statrs::function::beta::checked_beta_reg;
 
-use super::StatsError;
+use super::{StatsError, welford};
 
 // ANCHOR: summary
 /// Running count, mean and sum of squared deviations of a stream of values (Welford's
 /// algorithm), so that means and variances of millions of samples need no storage.
 ///
-/// Each push updates `mean += (x - mean) / n` and `m2 += (x - mean_old)(x - mean_new)`;
-/// unlike `Σx² - (Σx)²/n` this never subtracts two large nearly equal sums.
+/// Each push updates `mean += (x - mean) / n` and `m2 += (x - mean_old)(x - mean_new)`
+/// ([`welford::update`], the project's one accumulator); unlike `Σx² - (Σx)²/n` this never
+/// subtracts two large nearly equal sums.
 ///
 /// NaN-safe: a NaN or infinite value is counted in `n` but poisons the summary (the mean
 /// and variance become NaN) and is remembered, so that a test on the summary returns
@@ -42,15 +43,13 @@ impl Summary {
         if self.first_non_finite.is_none() && !x.is_finite() {
             self.first_non_finite = Some((self.n, x));
         }
-        self.n += 1;
         if self.first_non_finite.is_some() {
+            self.n += 1;
             self.mean = f64::NAN;
             self.m2 = f64::NAN;
             return;
         }
-        let delta = x - self.mean;
-        self.mean += delta / self.n as f64;
-        self.m2 += delta * (x - self.mean);
+        welford::update(&mut self.n, &mut self.mean, &mut self.m2, x);
     }
     // ANCHOR_END: push
 
@@ -99,15 +98,14 @@ impl Summary {
                 first_non_finite,
             };
         }
-        if self.n == 0 || other.n == 0 {
-            return if self.n == 0 { *other } else { *self };
-        }
-        let (na, nb, nf) = (self.n as f64, other.n as f64, n as f64);
-        let delta = other.mean - self.mean;
+        let (n, mean, m2) = welford::combine(
+            (self.n, self.mean, self.m2),
+            (other.n, other.mean, other.m2),
+        );
         Summary {
             n,
-            mean: self.mean + delta * (nb / nf),
-            m2: self.m2 + other.m2 + delta * delta * (na * nb / nf),
+            mean,
+            m2,
             first_non_finite: None,
         }
     }
