@@ -2,8 +2,8 @@
 //!
 //! Text is drawn with DejaVu Sans embedded in the binary (`assets/fonts/`, Bitstream Vera
 //! licence), registered with plotters' `ab_glyph` backend, so figures render the same on a
-//! machine with no system fonts and no fontconfig. PNG encoding is done by the `image`
-//! crate from plotters' RGB buffer.
+//! machine with no system fonts and no fontconfig. PNG encoding is the library's one
+//! encoder, from plotters' RGB buffer.
 
 use std::error::Error;
 use std::sync::Once;
@@ -328,13 +328,10 @@ pub fn format_linear_tick(v: f64) -> String {
     }
 }
 
-/// Encodes an RGB8 buffer as PNG.
+/// Encodes an RGB8 buffer as PNG, with the library's one encoder
+/// ([`raylemma::spectral::display::encode_png`]).
 pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> Result<Vec<u8>, BoxError> {
-    let img =
-        image::RgbImage::from_raw(width, height, rgb).ok_or("RGB buffer has the wrong size")?;
-    let mut out = std::io::Cursor::new(Vec::new());
-    img.write_to(&mut out, image::ImageFormat::Png)?;
-    Ok(out.into_inner())
+    Ok(raylemma::spectral::display::encode_png(width, height, &rgb)?)
 }
 
 /// One panel of a scatter plot.
