@@ -12,10 +12,11 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::scene::Scene;
+use super::scene::{DirectLight, Scene};
 use super::validate;
 use crate::data::DataError;
 use crate::spectral::wavelength::Strategy;
+use crate::transport::shadow::Heuristic;
 
 /// The names the `wavelengths` key accepts, with their strategies (and `"emission"`,
 /// [`super::scene::Wavelength::Emission`]).
@@ -25,6 +26,14 @@ pub const WAVELENGTH_STRATEGIES: [(&str, Strategy); 5] = [
     ("hero-uniform", Strategy::HeroUniform),
     ("hero-visible", Strategy::HeroVisible),
     ("hero-balance", Strategy::HeroBalance),
+];
+
+/// The names the `direct` key accepts, with their strategies of direct lighting.
+pub const DIRECT_STRATEGIES: [(&str, DirectLight); 4] = [
+    ("mis-power", DirectLight::Mis(Heuristic::Power)),
+    ("mis-balance", DirectLight::Mis(Heuristic::Balance)),
+    ("light", DirectLight::Light),
+    ("bsdf", DirectLight::Bsdf),
 ];
 
 /// The largest accepted image side, in pixels.
@@ -56,6 +65,7 @@ pub(super) struct RawRender {
     pub(super) wavelengths: Option<Spanned<String>>,
     pub(super) roulette_depth: Option<Spanned<i64>>,
     pub(super) max_depth: Option<Spanned<i64>>,
+    pub(super) direct: Option<Spanned<String>>,
 }
 
 /// `[camera]`.
@@ -97,11 +107,14 @@ pub(super) struct RawShape {
     pub(super) emission: Option<Spanned<toml::Value>>,
 }
 
-/// `[environment]`.
+/// `[environment]`: `emission` (constant), or `above`, `below` and `axis` (a gradient).
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawEnvironment {
-    pub(super) emission: Spanned<toml::Value>,
+    pub(super) emission: Option<Spanned<toml::Value>>,
+    pub(super) above: Option<Spanned<toml::Value>>,
+    pub(super) below: Option<Spanned<toml::Value>>,
+    pub(super) axis: Option<Spanned<[f64; 3]>>,
 }
 
 /// An inline or named spectrum definition: exactly one of the kinds.

@@ -17,7 +17,7 @@ use std::f64::consts::FRAC_1_PI;
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 
-use super::scene::{Emitter, Ior, Material, Scene, Surface};
+use super::scene::{DirectLight, Emitter, Ior, Material, Scene, Surface};
 use crate::optics::fresnel::fresnel_dielectric;
 use crate::optics::reflect::{reflect, refract};
 use crate::optics::thinfilm::Film;
@@ -26,7 +26,6 @@ use crate::sampling::cosine::cosine_malley;
 use crate::sampling::frame::Frame;
 use crate::spectral::wavelength::{N, Wavelengths};
 use crate::transport::roulette::roulette;
-use crate::transport::shadow::Heuristic;
 
 /// Radiance (or throughput) at the path's `N` wavelengths.
 pub type Lanes = [f64; N];
@@ -79,7 +78,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
         let Some(hit) = scene.intersect(o, d) else {
             if let Some(env) = &scene.environment {
                 for j in 0..N {
-                    l[j] += beta[j] * env.eval(wl.lambda[j]);
+                    l[j] += beta[j] * env.eval(d, wl.lambda[j]);
                 }
             }
             break;
@@ -88,11 +87,14 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
             // ANCHOR: hit_light
             Surface::Light(k) => {
                 if scene.emits_towards(k, d) {
-                    let w = match bsdf_pdf {
-                        None => 1.0,
-                        Some(pb) => {
+                    // A light reached by a delta bounce (or seen from the camera) counts in
+                    // full; one reached by BSDF sampling counts with the strategy's weight.
+                    let w = match (bsdf_pdf, s.direct) {
+                        (None, _) | (Some(_), DirectLight::Bsdf) => 1.0,
+                        (Some(_), DirectLight::Light) => 0.0,
+                        (Some(pb), DirectLight::Mis(h)) => {
                             let pl = light_choice * scene.lights[k].light().pdf(o, d);
-                            Heuristic::Power.weight(pb, pl)
+                            h.weight(pb, pl)
                         }
                     };
                     let le = emission(&scene.lights[k], wl);
@@ -119,7 +121,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                     DVec2::new(rng.random(), rng.random()),
                 );
                 // Next-event estimation: one light, chosen uniformly, one point on it.
-                if !scene.lights.is_empty() {
+                if s.direct != DirectLight::Bsdf && !scene.lights.is_empty() {
                     let k =
                         ((u_pick * scene.lights.len() as f64) as usize).min(scene.lights.len() - 1);
                     let light = &scene.lights[k];
@@ -132,7 +134,10 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                                 .is_some_and(|h| h.surface == Surface::Light(k))
                         {
                             let pl = light_choice * ls.pdf;
-                            let w = Heuristic::Power.weight(pl, cos * FRAC_1_PI);
+                            let w = match s.direct {
+                                DirectLight::Mis(h) => h.weight(pl, cos * FRAC_1_PI),
+                                _ => 1.0,
+                            };
                             let le = emission(light, wl);
                             for j in 0..N {
                                 l[j] += beta[j] * rho[j] * FRAC_1_PI * le[j] * cos * w / pl;

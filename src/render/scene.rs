@@ -19,6 +19,11 @@ use crate::spectral::spectrum::Spectrum;
 use crate::spectral::wavelength::{N, Strategy, Wavelengths, wrap01};
 use crate::transport::shadow::{Light, QuadLight, SphereLight};
 
+/// The strategies of direct lighting: the shadow-ray chapter's
+/// ([`crate::transport::shadow::Strategy`]), used by the path tracer at every diffuse
+/// bounce.
+pub use crate::transport::shadow::Strategy as DirectLight;
+
 /// A checked scene, ready to render.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -32,8 +37,8 @@ pub struct Scene {
     pub shapes: Vec<Shape>,
     /// The emitters (non-reflecting).
     pub lights: Vec<Emitter>,
-    /// The radiance of a constant environment seen by rays that escape (none: black).
-    pub environment: Option<Spectrum>,
+    /// The radiance seen by rays that escape (none: black).
+    pub environment: Option<Environment>,
     /// A 64-bit FNV-1a hash of the scene file's bytes, for the render's sidecar.
     pub hash: u64,
 }
@@ -99,6 +104,41 @@ impl Wavelength {
 }
 // ANCHOR_END: wavelength
 
+// ANCHOR: environment
+/// The radiance arriving from infinitely far away along a direction that escapes the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Environment {
+    /// The same spectrum from every direction.
+    Constant(Spectrum),
+    /// A sky: `above` towards `axis`, `below` away from it, blended linearly in
+    /// `c = axis . w`: `L(w) = above (1 + c) / 2 + below (1 - c) / 2`. Smooth, so that the
+    /// expected image of a mirror or glass sphere in it is a smooth function a quadrature
+    /// computes exactly, and different in every direction, so that a mistake that only
+    /// moves light between directions changes the image.
+    Gradient {
+        /// The unit direction of `above`.
+        axis: DVec3,
+        /// The spectrum towards `axis`.
+        above: Spectrum,
+        /// The spectrum away from `axis`.
+        below: Spectrum,
+    },
+}
+
+impl Environment {
+    /// The radiance from the unit direction `w` (pointing away from the scene) at `nm`.
+    pub fn eval(&self, w: DVec3, nm: f64) -> f64 {
+        match self {
+            Environment::Constant(s) => s.eval(nm),
+            Environment::Gradient { axis, above, below } => {
+                let c = axis.dot(w).clamp(-1.0, 1.0);
+                0.5 * ((1.0 + c) * above.eval(nm) + (1.0 - c) * below.eval(nm))
+            }
+        }
+    }
+}
+// ANCHOR_END: environment
+
 /// How to render.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RenderSettings {
@@ -108,6 +148,10 @@ pub struct RenderSettings {
     pub seed: u64,
     /// How a path's wavelengths are drawn.
     pub wavelengths: Wavelength,
+    /// How direct light is estimated at a diffuse surface: light sampling, BSDF sampling,
+    /// or both with multiple importance sampling (the default, power heuristic). Every
+    /// choice has the same expected image; the tests compare them.
+    pub direct: DirectLight,
     /// Russian roulette starts after this many bounces.
     pub roulette_depth: u32,
     /// A hard limit on the number of bounces (a safety net; with roulette, paths this long

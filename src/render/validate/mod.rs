@@ -68,9 +68,7 @@ pub(super) fn scene(
     let shapes = ck.shapes(&raw.shape, &names)?;
     let lights = ck.lights(&raw.light, &spectra)?;
     let environment = match &raw.environment {
-        Some(env) => {
-            Some(ck.spectrum(&env.get_ref().emission, &spectra, "environment emission")?)
-        }
+        Some(env) => Some(ck.environment(env, &spectra)?),
         None => None,
     };
     if let Some(w) = &raw.render.get_ref().wavelengths

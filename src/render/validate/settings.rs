@@ -7,8 +7,11 @@ use toml::Spanned;
 
 use super::Checker;
 use crate::data::DataError;
-use crate::render::format::{MAX_RESOLUTION, RawCamera, RawRender, WAVELENGTH_STRATEGIES};
-use crate::render::scene::{CameraSpec, Emitter, RenderSettings, Wavelength};
+use crate::render::format::{
+    DIRECT_STRATEGIES, MAX_RESOLUTION, RawCamera, RawRender, WAVELENGTH_STRATEGIES,
+};
+use crate::render::scene::{CameraSpec, DirectLight, Emitter, RenderSettings, Wavelength};
+use crate::transport::shadow::Heuristic;
 use crate::spectral::emission::{EmissionSampler, colour_proposal};
 use crate::spectral::spectrum::Spectrum;
 use crate::spectral::wavelength::Strategy;
@@ -54,10 +57,28 @@ impl Checker<'_> {
                     }
                 }
             };
+        let direct = match &r.direct {
+            None => DirectLight::Mis(Heuristic::Power),
+            Some(d) => match DIRECT_STRATEGIES.iter().find(|(n, _)| n == d.get_ref()) {
+                Some((_, s)) => *s,
+                None => {
+                    let names: Vec<&str> = DIRECT_STRATEGIES.iter().map(|(n, _)| *n).collect();
+                    return self.err(
+                        d.span(),
+                        format!(
+                            "unknown direct-lighting strategy {:?} (there are: {})",
+                            d.get_ref(),
+                            names.join(", ")
+                        ),
+                    );
+                }
+            },
+        };
         Ok(RenderSettings {
             spp,
             seed,
             wavelengths,
+            direct,
             roulette_depth: depth(&r.roulette_depth, "roulette_depth", 3)?,
             max_depth: depth(&r.max_depth, "max_depth", 1000)?,
         })

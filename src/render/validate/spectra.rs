@@ -1,16 +1,18 @@
 //! The checks of spectra: a number (a constant), the name of an entry of `[spectra]`, or
 //! an inline table of one kind (`constant`, `file` with its `column`, `blackbody` with its
-//! `peak`, `lamp`) with an optional `scale` or `luminance`. Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`).
+//! `peak`, `lamp`) with an optional `scale` or `luminance`; and the environment, made of
+//! spectra. Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
 
 use std::collections::BTreeMap;
 use std::ops::Range;
 
+use glam::DVec3;
 use toml::Spanned;
 
 use super::Checker;
 use crate::data::DataError;
-use crate::render::format::RawSpectrum;
+use crate::render::format::{RawEnvironment, RawSpectrum};
+use crate::render::scene::Environment;
 use crate::spectral::spectrum::{self, Spectrum, Table};
 use crate::spectral::{cie, emission};
 
@@ -188,5 +190,51 @@ impl Checker<'_> {
             None => tables[0].1.clone(),
         };
         Ok(Spectrum::Table(table.scaled(scale)))
+    }
+}
+
+impl Checker<'_> {
+    /// `[environment]`: `emission` (the same spectrum from every direction), or `above`
+    /// and `below` with an optional `axis` (default `[0, 1, 0]`): a gradient between them.
+    pub(super) fn environment(
+        &self,
+        env: &Spanned<RawEnvironment>,
+        named: &BTreeMap<String, Spectrum>,
+    ) -> Result<Environment, DataError> {
+        let e = env.get_ref();
+        let gradient = [
+            ("above", e.above.as_ref().map(Spanned::span)),
+            ("below", e.below.as_ref().map(Spanned::span)),
+            ("axis", e.axis.as_ref().map(Spanned::span)),
+        ];
+        if let Some(emission) = &e.emission {
+            self.refuse_keys(
+                &gradient,
+                "[environment]",
+                "constant environment (one with `emission`)",
+            )?;
+            return Ok(Environment::Constant(self.spectrum(
+                emission,
+                named,
+                "environment emission",
+            )?));
+        }
+        let above = self.required(&e.above, env.span(), "emission` or `above")?;
+        let below = self.required(&e.below, env.span(), "below")?;
+        let axis = match &e.axis {
+            None => DVec3::Y,
+            Some(a) => {
+                let v = self.vec3(a, "environment axis")?;
+                if v.length() == 0.0 {
+                    return self.err(a.span(), "environment axis is the zero vector");
+                }
+                v.normalize()
+            }
+        };
+        Ok(Environment::Gradient {
+            axis,
+            above: self.spectrum(above, named, "environment above")?,
+            below: self.spectrum(below, named, "environment below")?,
+        })
     }
 }

@@ -16,7 +16,7 @@ use raylemma::geometry::Parallelogram;
 use raylemma::render::compare::{compare, two_sided_critical};
 use raylemma::render::image::{Image, Welford};
 use raylemma::render::integrator::offset_origin;
-use raylemma::render::scene::{self, Geometry, Material, Scene, Surface};
+use raylemma::render::scene::{self, Environment, Geometry, Material, Scene, Surface};
 use raylemma::render::{Progress, Sidecar, render, render_with, write_outputs};
 use raylemma::rng;
 use raylemma::sampling::cosine::cosine_malley;
@@ -156,7 +156,9 @@ fn grey_furnace(rho: f64, assumed: f64) -> (Fit, Fit) {
         reflectance: Spectrum::Constant(rho),
     };
     let image = render(&s, s.settings.spp, Progress::Silent);
-    let env = s.environment.clone().unwrap_or(Spectrum::Constant(0.0));
+    let Some(Environment::Constant(env)) = s.environment.clone() else {
+        panic!("the grey furnace has a constant environment")
+    };
     let camera = raylemma::render::camera::Camera::new(&s.camera);
     let Geometry::Sphere(sphere) = s.shapes[0].geometry else {
         panic!("the grey furnace has one sphere")
