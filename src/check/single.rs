@@ -5,7 +5,7 @@
 //!
 //! Errors are in units of `f32::EPSILON` (2⁻²³) and are computed in `f64` from the `f32`
 //! results, so the measurement itself adds no rounding. A NaN or infinite result makes the
-//! worst error NaN (see [`super::max_abs`]), which fails any `err <= bound` check.
+//! worst error NaN (see [`crate::numeric::max_abs`]), which fails any `err <= bound` check.
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use rand::RngExt as _;
@@ -29,7 +29,7 @@ pub fn square_points(n: usize, seed: u64) -> Vec<Vec2> {
 
 /// Worst `| |w| − 1 |` over `points`, in units of `f32::EPSILON`.
 pub fn norm_error(warp: impl Fn(Vec2) -> Vec3, points: &[Vec2]) -> f64 {
-    super::max_abs(
+    crate::numeric::max_abs(
         points
             .iter()
             .map(|&u| (warp(u).as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)),
@@ -44,7 +44,7 @@ pub fn z_error(
     exact: impl Fn(DVec2) -> DVec3,
     points: &[Vec2],
 ) -> f64 {
-    super::max_abs(points.iter().map(|&u| {
+    crate::numeric::max_abs(points.iter().map(|&u| {
         let (z, z64) = (f64::from(warp(u).z), exact(u.as_dvec2()).z);
         let err = if z64 != 0.0 { z / z64 - 1.0 } else { z };
         err / f64::from(f32::EPSILON)

@@ -560,7 +560,7 @@ pub fn round_trip(warp: &dyn Warp, options: &Options) -> Option<Finding> {
         let u = square_point(&mut rng);
         let back = warp.warp(u).and_then(|p| warp.invert(p));
         // `max_abs`, not glam's `max_element`, which drops a NaN in the first component.
-        let err = back.map_or(f64::INFINITY, |b| super::max_abs((b - u).to_array()));
+        let err = back.map_or(f64::INFINITY, |b| crate::numeric::max_abs((b - u).to_array()));
         finding.measure(err, 1e-9, || format!("u = {u:?} came back as {back:?}"));
     }
     Some(finding)
