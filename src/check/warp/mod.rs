@@ -18,7 +18,7 @@
 //! difference images a student can open.
 //!
 //! Called like every checker, `check(&warp, &options)` with the common
-//! [`Options`](super::Options) (samples, seed, level); the grid and the Jacobian points
+//! [`Options`] (samples, seed, level); the grid and the Jacobian points
 //! follow from the number of samples ([`WarpOptions`]). The planted bugs it must reject
 //! are in [`planted`].
 
