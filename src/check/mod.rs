@@ -51,11 +51,13 @@ use std::fmt;
 /// `Options::default()` runs every checker at its documented settings:
 ///
 /// * `cases`: the number of cases per claim (for a statistical claim, the number of
-///   samples). Defaults: [`sphere::CASES`], [`sphere::FAR_RAYS`], [`warp::SAMPLES`],
-///   [`reflect::CASES`], [`fresnel::ANGLES`], [`single::POINTS`].
-/// * `seed`: the seed of the random cases. Defaults: [`sphere::SEED`], [`warp::SEED`],
-///   [`reflect::REFLECTION_SEED`], [`reflect::REFRACTION_SEED`], [`single::SEED`]; the
-///   Fresnel sweep is deterministic and has none.
+///   samples). Defaults: [`sphere::CASES`], [`sphere::FAR_RAYS`],
+///   [`sphere::SELF_HIT_RAYS`], [`warp::SAMPLES`], [`reflect::CASES`], [`fresnel::ANGLES`],
+///   [`single::POINTS`].
+/// * `seed`: the seed of the random cases. Defaults: [`sphere::SEED`],
+///   [`sphere::SELF_HIT_SEED`], [`warp::SEED`], [`reflect::REFLECTION_SEED`],
+///   [`reflect::REFRACTION_SEED`], [`single::SEED`]; the Fresnel sweep is deterministic
+///   and has none.
 /// * `alpha`: the significance level of the statistical claims (the warp checker's
 ///   chi-squared test). Default: the suite's Šidák-corrected level,
 ///   [`crate::stats::test_alpha`].

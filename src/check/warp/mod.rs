@@ -216,7 +216,6 @@ pub struct WarpOptions {
     /// Significance level of the chi-squared test.
     pub alpha: f64,
 }
-// ANCHOR_END: rule
 
 impl From<&Options> for WarpOptions {
     fn from(options: &Options) -> Self {
@@ -235,6 +234,7 @@ impl From<&Options> for WarpOptions {
         }
     }
 }
+// ANCHOR_END: rule
 
 impl From<Options> for WarpOptions {
     fn from(options: Options) -> Self {

@@ -251,3 +251,29 @@ fn expected_counts_are_exact_where_a_jump_cuts_cells() {
     };
     assert!(warp::check(&wrong, &options).failed("chi_squared"));
 }
+
+/// The warp checker's own knobs follow from the samples: the sampler tests' 400 000 give
+/// 21 rows and 5 000 points, the default's 1 000 000 give 51 rows and 10 000 points.
+#[test]
+fn the_grid_follows_the_samples() {
+    let grid = |o: WarpOptions| (o.samples, o.resolution, o.points);
+    let tests = WarpOptions::from(Options::default().cases(warp::TEST_SAMPLES));
+    assert_eq!(grid(tests), (400_000, 21, 5_000));
+    assert_eq!(grid(WarpOptions::default()), (1_000_000, 51, 10_000));
+    assert_eq!(
+        grid(WarpOptions::from(Options::default())),
+        (1_000_000, 51, 10_000)
+    );
+    assert_eq!(
+        grid(WarpOptions::from(Options::default().cases(999_999))).1,
+        21
+    );
+    assert_eq!(
+        grid(WarpOptions::from(Options::default().cases(2_000_000))).1,
+        51
+    );
+    let o = WarpOptions::from(Options::default().seed(7).alpha(0.01));
+    assert_eq!((o.seed, o.alpha), (7, 0.01));
+    assert_eq!(WarpOptions::default().seed, warp::SEED);
+    assert_eq!(WarpOptions::default().alpha, raylemma::stats::test_alpha());
+}
