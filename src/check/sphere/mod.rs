@@ -15,9 +15,9 @@
 //! Errors are measured along the ray (`|t - t*| |D|`) in units of
 //! `eps (|O| + |C| + r)`, the size of the rounding already present in the inputs.
 
-use glam::DVec3;
-
 pub mod planted;
+
+use glam::DVec3;
 
 use super::{Finding, Options, Real, Verdict};
 use crate::rng::{self, Rng, log_uniform, uniform};
