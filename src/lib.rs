@@ -9,6 +9,7 @@
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
 //! * [`data`]: errors of data files (file, line, problem).
+//! * [`numeric`]: small numerical helpers (`max_abs`, a maximum that keeps a NaN).
 //! * [`output`]: the one writer of every file the library writes: atomic files, sets of
 //!   files that land together or not at all, staged folders.
 //! * [`rng`]: the seeded generator every test and figure uses.
@@ -27,6 +28,7 @@
 pub mod check;
 pub mod data;
 pub mod geometry;
+pub mod numeric;
 pub mod optics;
 pub mod output;
 pub mod precision;

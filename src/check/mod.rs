@@ -5,18 +5,118 @@
 //! [`Verdict`]: one [`Finding`] per claim, each saying how many cases were tried, how many
 //! failed, the worst error against its bound, and the first counterexample.
 //!
+//! Every checker is called the same way, with the implementation under test and one
+//! [`Options`]:
+//!
+//! ```rust,ignore
+//! use raylemma::check::{self, Options};
+//! check::sphere::intersection(&my_intersect, &Options::default()).assert_pass();
+//! check::sphere::far(&my_intersect, &Options::default()).assert_pass();
+//! check::warp::check(&my_sampler, &Options::default().cases(400_000)).assert_pass();
+//! check::reflect::reflection(&my_reflect, &Options::default()).assert_pass();
+//! check::reflect::refraction(&my_refract, &Options::default().seed(7)).assert_pass();
+//! check::fresnel::reflectance(&my_fresnel, &Options::default()).assert_pass();
+//! ```
+//!
+//! One module per concept checked, each with its planted bugs beside it (`planted`):
+//!
+//! * [`sphere`]: ray-sphere intersection (*Ray-sphere intersection*);
+//! * [`warp`]: any sampler and the pdf it claims (*Checking a sampler*);
+//! * [`reflect`]: mirror reflection and Snell refraction (*Reflection and refraction*);
+//! * [`fresnel`]: dielectric reflectance (*Fresnel and Schlick*);
+//! * [`single`]: the single-precision accuracy of a warp (the `f32` columns of the
+//!   sampling chapters).
+//!
 //! The project's own tests call the same checkers on the project's code (which must pass)
-//! and on planted bugs (which must fail), so a student's implementation is held to exactly
-//! the standard the book's code is.
+//! and on the planted bugs (which must fail), so a student's implementation is held to
+//! exactly the standard the book's code is.
 
+pub mod fresnel;
 mod real;
+pub mod reflect;
 pub mod single;
 pub mod sphere;
 pub mod warp;
 
+/// Re-exported from [`crate::numeric`], where the derivations find it too.
+pub use crate::numeric::max_abs;
 pub use real::Real;
 
 use std::fmt;
+
+// ANCHOR: options
+/// How thoroughly to check: the one options value every checker takes.
+///
+/// Each field left unset takes the checker's own documented default, so that
+/// `Options::default()` runs every checker at its documented settings:
+///
+/// * `cases`: the number of cases per claim (for a statistical claim, the number of
+///   samples). Defaults: [`sphere::CASES`], [`sphere::FAR_RAYS`],
+///   [`sphere::SELF_HIT_RAYS`], [`warp::SAMPLES`], [`reflect::CASES`], [`fresnel::ANGLES`],
+///   [`single::POINTS`].
+/// * `seed`: the seed of the random cases. Defaults: [`sphere::SEED`],
+///   [`sphere::SELF_HIT_SEED`], [`warp::SEED`], [`reflect::REFLECTION_SEED`],
+///   [`reflect::REFRACTION_SEED`], [`single::SEED`]; the Fresnel sweep is deterministic
+///   and has none.
+/// * `alpha`: the significance level of the statistical claims (the warp checker's
+///   chi-squared test). Default: the suite's Šidák-corrected level,
+///   [`crate::stats::test_alpha`].
+///
+/// Built with `Options::default().cases(20_000).seed(3)`; read by each checker with
+/// [`cases_or`](Options::cases_or), [`seed_or`](Options::seed_or) and
+/// [`level`](Options::level).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Options {
+    cases: Option<usize>,
+    seed: Option<u64>,
+    alpha: Option<f64>,
+}
+// ANCHOR_END: options
+
+impl Options {
+    /// Every field at the checker's default (the same as [`Options::default`], usable in a
+    /// `const`).
+    pub const fn new() -> Self {
+        Self {
+            cases: None,
+            seed: None,
+            alpha: None,
+        }
+    }
+
+    /// The number of cases per claim (samples, for a statistical claim).
+    pub const fn cases(mut self, cases: usize) -> Self {
+        self.cases = Some(cases);
+        self
+    }
+
+    /// The seed of the random cases.
+    pub const fn seed(mut self, seed: u64) -> Self {
+        self.seed = Some(seed);
+        self
+    }
+
+    /// The significance level of the statistical claims.
+    pub const fn alpha(mut self, alpha: f64) -> Self {
+        self.alpha = Some(alpha);
+        self
+    }
+
+    /// The number of cases, or the checker's `default`.
+    pub fn cases_or(&self, default: usize) -> usize {
+        self.cases.unwrap_or(default)
+    }
+
+    /// The seed, or the checker's `default`.
+    pub fn seed_or(&self, default: u64) -> u64 {
+        self.seed.unwrap_or(default)
+    }
+
+    /// The significance level: the one set, or the suite's [`crate::stats::test_alpha`].
+    pub fn level(&self) -> f64 {
+        self.alpha.unwrap_or_else(crate::stats::test_alpha)
+    }
+}
 
 /// The outcome of one claim checked over many cases.
 #[derive(Clone, Debug)]
@@ -175,19 +275,4 @@ impl fmt::Display for Verdict {
         }
         Ok(())
     }
-}
-
-/// The largest `|x|` of `xs` (0 when there are none), or NaN if any `x` is NaN.
-///
-/// For error checks of the form `assert!(max_abs(errors) <= tol)`: `f64::max` and glam's
-/// `max_element` silently drop a NaN (glam's in all but the last component), so an error
-/// computed with them can pass on a NaN; this one makes the comparison fail.
-pub fn max_abs(xs: impl IntoIterator<Item = f64>) -> f64 {
-    xs.into_iter().fold(0.0, |m: f64, x| {
-        if m.is_nan() || x.is_nan() {
-            f64::NAN
-        } else {
-            m.max(x.abs())
-        }
-    })
 }

@@ -115,7 +115,7 @@ impl Frame {
 /// NaN if any component is NaN, so that a broken frame can never pass a bound.
 pub fn orthonormality_error(t: DVec3, b: DVec3, n: DVec3) -> f64 {
     let handedness = (t.cross(b) - n).to_array();
-    crate::check::max_abs(
+    crate::numeric::max_abs(
         [
             t.length() - 1.0,
             b.length() - 1.0,

@@ -1,8 +1,29 @@
 //! Tests of chapter *Coursework*: the verdict a checker returns, as a student reads it
 //! (a claim with no cases fails, a NaN error fails and stays visible, the worst failure is
-//! reported beside the first) and `max_abs`, which keeps a NaN.
+//! reported beside the first), the one `Options` every checker takes, and `max_abs`, which
+//! keeps a NaN.
 
-use raylemma::check::{Finding, Verdict, max_abs};
+use raylemma::check::reflect::{self, REFLECTION_SEED, REFRACTION_SEED};
+use raylemma::check::{Finding, Options, Verdict, max_abs};
+
+#[test]
+fn options_left_unset_take_each_checker_default() {
+    let default = Options::default();
+    assert_eq!(default, Options::new());
+    assert_eq!(default.cases_or(20_000), 20_000);
+    assert_eq!(default.seed_or(0xC41), 0xC41);
+    assert_eq!(default.level(), raylemma::stats::test_alpha());
+    let set = Options::default().cases(1_000).seed(7).alpha(0.01);
+    assert_eq!(
+        (set.cases_or(20_000), set.seed_or(0xC41), set.level()),
+        (1_000, 7, 0.01)
+    );
+    // The same options, two checkers, each with its own default seed: the reflection and
+    // refraction checkers draw different cases from `Options::default()`.
+    assert_ne!(REFLECTION_SEED, REFRACTION_SEED);
+    let verdict = reflect::reflection(&raylemma::optics::reflect::reflect, &Options::default());
+    assert_eq!(verdict.finding("finite").cases, reflect::CASES);
+}
 
 #[test]
 fn max_abs_keeps_a_nan_wherever_it_is() {

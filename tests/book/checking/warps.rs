@@ -2,20 +2,18 @@
 //! planted bug, and say why. Every chi-squared test here runs at the suite's Šidák-corrected
 //! level `raylemma::stats::test_alpha()`, with a fixed seed.
 
-use std::f64::consts::{FRAC_1_PI, PI, TAU};
-
 use glam::{DVec2, DVec3};
-use raylemma::check::Verdict;
-use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp};
+use raylemma::check::warp::{self, Domain, RngWarp, SquareWarp, WarpOptions, planted};
+use raylemma::check::{Options, Verdict};
+use raylemma::sampling::cosine::cosine_pdf;
 use raylemma::sampling::disc::{disc_pdf, disc_polar, disc_polar_invert};
 use raylemma::sampling::sphere::sphere_pdf;
 
-fn opts() -> Options {
-    Options {
-        samples: 200_000,
-        resolution: 21,
+/// 200 000 samples (21 rows by the rule) and 2 000 Jacobian points.
+fn opts() -> WarpOptions {
+    WarpOptions {
         points: 2_000,
-        ..Options::default()
+        ..WarpOptions::from(Options::default().cases(200_000))
     }
 }
 
@@ -25,14 +23,7 @@ fn square(
     sample: fn(DVec2) -> DVec3,
     pdf: fn(DVec3) -> f64,
 ) -> Verdict {
-    let w = SquareWarp {
-        name: name.into(),
-        domain,
-        sample,
-        pdf,
-        invert: None,
-    };
-    warp::check(&w, &opts())
+    warp::check(&SquareWarp::new(name, domain, sample, pdf), &opts())
 }
 
 fn chi2_message(v: &Verdict) -> String {
@@ -47,49 +38,42 @@ fn a_correct_sampler_passes() {
 #[test]
 fn rejects_r_equals_u_on_the_disc() {
     // The classic mistake: r = u instead of sqrt(u) crowds samples at the centre.
-    let v = square(
-        "disc r=u",
-        Domain::Disc,
-        |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
-        disc_pdf,
-    );
+    let v = square("disc r=u", Domain::Disc, planted::disc_r_equals_u, disc_pdf);
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
 }
 
 #[test]
 fn rejects_a_cos_1_1_lobe_claimed_as_cosine() {
     // Samples from cos^1.1 (exponent n: z = u^(1/(n+1))), claimed to follow cos/pi.
-    let sample = |u: DVec2| {
-        let z = (1.0 - u.x).powf(1.0 / 2.1);
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z)
-    };
-    let v = square("cos^1.1 lobe", Domain::Sphere, sample, |w| {
-        w.z.max(0.0) * FRAC_1_PI
-    });
+    let v = square(
+        "cos^1.1 lobe",
+        Domain::Sphere,
+        planted::cosine_power_lobe,
+        cosine_pdf,
+    );
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
 }
 
 #[test]
 fn rejects_a_missing_sin_theta() {
     // theta uniform in [0, pi]: forgets the sin(theta) of the solid-angle element.
-    let sample = |u: DVec2| {
-        let (theta, phi) = (PI * u.x, TAU * u.y);
-        DVec3::new(
-            theta.sin() * phi.cos(),
-            theta.sin() * phi.sin(),
-            theta.cos(),
-        )
-    };
-    let v = square("theta uniform", Domain::Sphere, sample, sphere_pdf);
+    let v = square(
+        "theta uniform",
+        Domain::Sphere,
+        planted::sphere_theta_uniform,
+        sphere_pdf,
+    );
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
 }
 
 #[test]
 fn rejects_a_pdf_that_does_not_integrate_to_one() {
-    let v = square("disc pdf x2", Domain::Disc, disc_polar, |p| {
-        2.0 * disc_pdf(p)
-    });
+    let v = square(
+        "disc pdf x2",
+        Domain::Disc,
+        disc_polar,
+        planted::disc_pdf_doubled,
+    );
     assert!(chi2_message(&v).contains("integrates"), "{v}");
 }
 
@@ -98,7 +82,7 @@ fn rejects_samples_outside_the_domain() {
     let v = square(
         "disc radius 1.01",
         Domain::Disc,
-        |u| disc_polar(u) * 1.01,
+        planted::disc_outside,
         disc_pdf,
     );
     assert!(chi2_message(&v).contains("outside the domain"), "{v}");
@@ -106,35 +90,30 @@ fn rejects_samples_outside_the_domain() {
 
 #[test]
 fn rejects_nan_samples() {
-    let v = square(
-        "nan",
-        Domain::Disc,
-        |u| {
-            if u.x < 1e-3 {
-                DVec3::NAN
-            } else {
-                disc_polar(u)
-            }
-        },
-        disc_pdf,
-    );
+    let v = square("nan", Domain::Disc, planted::disc_nan, disc_pdf);
     assert!(chi2_message(&v).contains("not finite"), "{v}");
 }
 
 #[test]
 fn rejects_a_negative_pdf() {
-    let v = square("negative pdf", Domain::Disc, disc_polar, |p| {
-        if p.x > 0.9 { -1.0 } else { disc_pdf(p) }
-    });
+    let v = square(
+        "negative pdf",
+        Domain::Disc,
+        disc_polar,
+        planted::disc_pdf_negative,
+    );
     assert!(chi2_message(&v).contains("negative"), "{v}");
 }
 
 #[test]
 fn rejects_samples_where_the_pdf_is_zero() {
     // Claims the upper half disc only, samples the whole disc.
-    let v = square("half", Domain::Disc, disc_polar, |p| {
-        if p.y >= 0.0 { 2.0 * disc_pdf(p) } else { 0.0 }
-    });
+    let v = square(
+        "half",
+        Domain::Disc,
+        disc_polar,
+        planted::disc_pdf_upper_half,
+    );
     assert!(chi2_message(&v).contains("integrates to 0"), "{v}");
 }
 
@@ -143,7 +122,7 @@ fn writes_images_on_failure() {
     let v = square(
         "images demo",
         Domain::Disc,
-        |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
+        planted::disc_r_equals_u,
         disc_pdf,
     );
     let message = chi2_message(&v);
@@ -176,17 +155,11 @@ fn round_trip_rejects_an_inverse_returning_nan() {
     // A correct inverse passes; one that loses the first coordinate to NaN must fail
     // (glam's `max_element` would drop that NaN and pass it).
     let check = |invert: fn(DVec3) -> DVec2| {
-        let w = SquareWarp {
-            name: "polar disc".into(),
-            domain: Domain::Disc,
-            sample: disc_polar,
-            pdf: disc_pdf,
-            invert: Some(invert),
-        };
+        let w = SquareWarp::new("polar disc", Domain::Disc, disc_polar, disc_pdf).inverse(invert);
         warp::round_trip(&w, &opts()).expect("an invertible warp gets a round trip")
     };
     assert!(check(disc_polar_invert).passed());
-    let nan_first = check(|p| DVec2::new(f64::NAN, disc_polar_invert(p).y));
+    let nan_first = check(planted::disc_polar_invert_nan);
     assert!(!nan_first.passed(), "{nan_first:?}");
     assert!(nan_first.worst.is_some_and(|(w, _)| w.is_nan()));
 }
@@ -227,7 +200,7 @@ fn interval_domain_checks_a_linear_density() {
     let bad = square(
         "uniform as linear",
         Domain::Interval { lo: 0.0, hi: 1.0 },
-        |u| DVec3::new(u.x, 0.0, 0.0),
+        planted::linear_without_sqrt,
         |p| 2.0 * p.x,
     );
     assert!(bad.failed("chi_squared") && bad.failed("jacobian"), "{bad}");
@@ -248,85 +221,59 @@ fn square_domain_checks_a_product_density() {
         "2y claimed",
         Domain::Square,
         |u| DVec3::new(u.x.sqrt(), u.y, 0.0),
-        |p| 2.0 * p.y,
+        planted::square_linear_pdf_wrong_axis,
     );
     assert!(bad.failed("chi_squared") && bad.failed("jacobian"), "{bad}");
 }
 
-/// Uniform directions in a cone of half-angle `acos(cos_max)` around a tilted axis: a pdf
-/// with a jump (the cone's rim) that cuts the checker's cells obliquely, as a light's
-/// silhouette does. The expected counts of the cut cells must still be exact.
-struct Cone {
-    axis: DVec3,
-    cos_max: f64,
-}
-
-impl warp::Warp for Cone {
-    fn name(&self) -> String {
-        format!("uniform cone, cos_max = {}", self.cos_max)
-    }
-    fn domain(&self) -> Domain {
-        Domain::Sphere
-    }
-    fn sample(&self, rng: &mut raylemma::rng::Rng) -> DVec3 {
-        let u = warp::square_point(rng);
-        let z = 1.0 - u.x * (1.0 - self.cos_max);
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        let local = DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z);
-        raylemma::sampling::frame::Frame::from_normal(self.axis).to_world(local)
-    }
-    fn pdf(&self, p: DVec3) -> f64 {
-        if p.dot(self.axis) >= self.cos_max {
-            1.0 / (TAU * (1.0 - self.cos_max))
-        } else {
-            0.0
-        }
-    }
-}
-
+/// Uniform directions in a cone of half-angle `acos(cos_max)` around a tilted axis
+/// (`planted::Cone` claiming its own pdf): a pdf with a jump (the cone's rim) that cuts the
+/// checker's cells obliquely, as a light's silhouette does. The expected counts of the cut
+/// cells must still be exact.
 #[test]
 fn expected_counts_are_exact_where_a_jump_cuts_cells() {
     // 2 000 000 samples in a cone of 0.1 sr: about 40 cells meet the rim. Integrating each
     // cut cell with one fixed Gauss rule errs by a few percent of its count, which this many
     // samples detect; adaptive subdivision of the cut cells makes the test pass.
-    let cone = Cone {
+    let cone = planted::Cone {
         axis: DVec3::new(0.3, -0.5, 0.8).normalize(),
         cos_max: 0.985,
+        claimed_cos_max: 0.985,
     };
-    let options = Options {
-        samples: 2_000_000,
-        resolution: 51,
-        ..Options::default()
-    };
+    // 2 000 000 samples: 51 rows and 10 000 points by the rule.
+    let options = Options::default().cases(2_000_000);
     let v = warp::check(&cone, &options);
     v.assert_pass();
     // Its planted twin: a cone 2 % wider than the pdf claims puts samples where the pdf is 0.
-    let wide = Cone {
-        axis: cone.axis,
+    let wrong = planted::Cone {
         cos_max: 0.9847,
+        ..cone
     };
-    let wrong = WrongPdf(&wide, cone.cos_max);
     assert!(warp::check(&wrong, &options).failed("chi_squared"));
 }
 
-/// Samples like `.0` but claims the pdf of a cone with `cos_max = .1`.
-struct WrongPdf<'a>(&'a Cone, f64);
-
-impl warp::Warp for WrongPdf<'_> {
-    fn name(&self) -> String {
-        "cone with the pdf of a narrower cone".into()
-    }
-    fn domain(&self) -> Domain {
-        Domain::Sphere
-    }
-    fn sample(&self, rng: &mut raylemma::rng::Rng) -> DVec3 {
-        self.0.sample(rng)
-    }
-    fn pdf(&self, p: DVec3) -> f64 {
-        Cone {
-            axis: self.0.axis,
-            cos_max: self.1,
-        }
-        .pdf(p)
-    }
+/// The warp checker's own knobs follow from the samples: the sampler tests' 400 000 give
+/// 21 rows and 5 000 points, the default's 1 000 000 give 51 rows and 10 000 points.
+#[test]
+fn the_grid_follows_the_samples() {
+    let grid = |o: WarpOptions| (o.samples, o.resolution, o.points);
+    let tests = WarpOptions::from(Options::default().cases(warp::TEST_SAMPLES));
+    assert_eq!(grid(tests), (400_000, 21, 5_000));
+    assert_eq!(grid(WarpOptions::default()), (1_000_000, 51, 10_000));
+    assert_eq!(
+        grid(WarpOptions::from(Options::default())),
+        (1_000_000, 51, 10_000)
+    );
+    assert_eq!(
+        grid(WarpOptions::from(Options::default().cases(999_999))).1,
+        21
+    );
+    assert_eq!(
+        grid(WarpOptions::from(Options::default().cases(2_000_000))).1,
+        51
+    );
+    let o = WarpOptions::from(Options::default().seed(7).alpha(0.01));
+    assert_eq!((o.seed, o.alpha), (7, 0.01));
+    assert_eq!(WarpOptions::default().seed, warp::SEED);
+    assert_eq!(WarpOptions::default().alpha, raylemma::stats::test_alpha());
 }

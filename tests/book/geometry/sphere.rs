@@ -6,15 +6,14 @@
 
 use glam::{DVec3, Vec3};
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
-use raylemma::check::Real;
-use raylemma::check::sphere::{self as check, SILHOUETTE_BAND, T_ERROR_BOUND};
-use raylemma::check::sphere::{SELF_HIT_SEED, self_hit_rate};
+use raylemma::check::sphere::{self as check, SILHOUETTE_BAND, T_ERROR_BOUND, planted};
+use raylemma::check::{Options, Real};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook, nearest_root_above};
 use raylemma::geometry::{Ray, Sphere};
 use raylemma::single::geometry::sphere as single;
 use raylemma::single::geometry::{Ray as Ray32, Sphere as Sphere32};
 
-/// Random cases per claim of the general checker.
+/// Random cases of this file's own loops (as many as the checker's default).
 const CASES: usize = 20_000;
 
 // ---------------------------------------------------------------------------------------
@@ -22,12 +21,12 @@ const CASES: usize = 20_000;
 
 #[test]
 fn stable_form_passes_every_check_f32() {
-    check::sphere_intersection(&single::intersect_stable, CASES).assert_pass();
+    check::intersection(&single::intersect_stable, &Options::default()).assert_pass();
 }
 
 #[test]
 fn stable_form_passes_every_check_f64() {
-    check::sphere_intersection(&intersect_stable, CASES).assert_pass();
+    check::intersection(&intersect_stable, &Options::default()).assert_pass();
 }
 
 // ANCHOR: far_test
@@ -35,14 +34,14 @@ fn stable_form_passes_every_check_f64() {
 /// The stable form answers every ray correctly with a bounded error...
 #[test]
 fn stable_form_survives_far_spheres() {
-    let verdict = check::far_spheres(&single::intersect_stable);
+    let verdict = check::far(&single::intersect_stable, &Options::default());
     verdict.assert_pass();
 }
 
 /// ...while the textbook form fails past some distance: this is why the rewrite exists.
 #[test]
 fn textbook_form_fails_far_spheres() {
-    let verdict = check::far_spheres(&single::intersect_textbook);
+    let verdict = check::far(&single::intersect_textbook, &Options::default());
     for distance in ["far_1e3", "far_3e3", "far_1e4"] {
         assert!(
             verdict.failed(distance),
@@ -50,7 +49,7 @@ fn textbook_form_fails_far_spheres() {
         );
     }
     // Not only inaccurate: wrong about hit or miss for many rays at 1e4 radii.
-    let row = check::far_sphere(&single::intersect_textbook, 1e4, check::FAR_GRID);
+    let row = check::far_row(&single::intersect_textbook, 1e4, &Options::default());
     assert!(
         row.wrong * 10 >= row.rays,
         "only {} of {} rays wrong",
@@ -64,8 +63,9 @@ fn textbook_form_fails_far_spheres() {
 /// textbook's grows past it: the error of the textbook form grows like distance^2.
 #[test]
 fn textbook_error_grows_quadratically_stable_linearly() {
-    let stable = |d| check::far_sphere(&single::intersect_stable, d, 41);
-    let textbook = |d| check::far_sphere(&single::intersect_textbook, d, 41);
+    let options = Options::default().cases(41 * 41); // a 41 x 41 bundle
+    let stable = |d| check::far_row(&single::intersect_stable, d, &options);
+    let textbook = |d| check::far_row(&single::intersect_textbook, d, &options);
     let (s1, s2) = (stable(1e2), stable(1e3));
     let (t1, t2) = (textbook(1e2), textbook(1e3));
     // Ten times farther: the stable error grows by about 10 (allow 3..30), the textbook's
@@ -80,40 +80,32 @@ fn textbook_error_grows_quadratically_stable_linearly() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Planted bugs: each must be rejected by the checker, naming the right claim.
+// Planted bugs (`raylemma::check::sphere::planted`): each must be rejected by the
+// checker, naming the right claim.
 
-fn verdict_f64(f: impl Fn(&Ray, &Sphere, f64) -> Option<f64>) -> raylemma::check::Verdict {
-    check::sphere_intersection(&f, 4_000)
+fn verdict_f64(f: fn(&Ray, &Sphere, f64) -> Option<f64>) -> raylemma::check::Verdict {
+    check::intersection(&f, &Options::default().cases(4_000))
 }
 
 #[test]
 fn checker_rejects_the_textbook_form() {
     // Even at ordinary scales (scenes within 10 radii of the origin) the cancellation in
     // -b + sqrt(b^2 - ac) exceeds the error bound for some rays.
-    let verdict = check::sphere_intersection(&single::intersect_textbook, CASES);
+    let verdict = check::intersection(&single::intersect_textbook, &Options::default());
     assert!(!verdict.passed(), "{verdict}");
 }
 
 #[test]
 fn checker_rejects_the_seeds_t_greater_than_zero_rule() {
     // The seed: "the smallest value that is still greater than 0", ignoring t_min.
-    let seed_rule = |r: &Ray, s: &Sphere, _t_min: f64| intersect_stable(r, s, 0.0);
-    let verdict = verdict_f64(seed_rule);
+    let verdict = verdict_f64(planted::t_greater_than_zero);
     assert!(verdict.failed("surface_origin"), "{verdict}");
     assert!(verdict.failed("nearest_root"), "{verdict}");
 }
 
 #[test]
 fn checker_rejects_always_the_far_root() {
-    let far_root = |r: &Ray, s: &Sphere, t_min: f64| {
-        let (f, a) = (r.origin - s.center, r.dir.dot(r.dir));
-        let (b, c) = (r.dir.dot(f), f.dot(f) - s.radius * s.radius);
-        let disc = b * b - a * c;
-        (disc >= 0.0)
-            .then(|| (-b + disc.sqrt()) / a)
-            .filter(|&t| t > t_min)
-    };
-    let verdict = verdict_f64(far_root);
+    let verdict = verdict_f64(planted::always_far_root);
     assert!(
         verdict.failed("hits") && verdict.failed("nearest_root"),
         "{verdict}"
@@ -122,23 +114,13 @@ fn checker_rejects_always_the_far_root() {
 
 #[test]
 fn checker_rejects_ignoring_t_min() {
-    let no_t_min = |r: &Ray, s: &Sphere, _t_min: f64| intersect_stable(r, s, f64::NEG_INFINITY);
-    assert!(verdict_f64(no_t_min).failed("nearest_root"));
+    assert!(verdict_f64(planted::ignoring_t_min).failed("nearest_root"));
 }
 
 #[test]
 fn checker_rejects_assuming_a_unit_direction() {
     // a = D.D replaced by 1: right only for normalised directions.
-    let unit_a = |r: &Ray, s: &Sphere, t_min: f64| {
-        let f = r.origin - s.center;
-        let (b, c) = (r.dir.dot(f), f.dot(f) - s.radius * s.radius);
-        let disc = b * b - c;
-        if disc < 0.0 {
-            return None;
-        }
-        nearest_root_above(-b - disc.sqrt(), -b + disc.sqrt(), t_min)
-    };
-    let verdict = verdict_f64(unit_a);
+    let verdict = verdict_f64(planted::assuming_unit_direction);
     assert!(
         verdict.failed("direction_scale") && verdict.failed("hits"),
         "{verdict}"
@@ -148,27 +130,12 @@ fn checker_rejects_assuming_a_unit_direction() {
 #[test]
 fn checker_rejects_a_loose_discriminant_test() {
     // Counting near misses as hits (discriminant >= -1% of a r^2), clamped to a real root.
-    let loose = |r: &Ray, s: &Sphere, t_min: f64| {
-        let f = r.origin - s.center;
-        let (a, b, c) = (
-            r.dir.dot(r.dir),
-            r.dir.dot(f),
-            f.dot(f) - s.radius * s.radius,
-        );
-        let disc = b * b - a * c;
-        if disc < -0.01 * a * s.radius * s.radius {
-            return None;
-        }
-        let root = disc.max(0.0).sqrt();
-        nearest_root_above((-b - root) / a, (-b + root) / a, t_min)
-    };
-    assert!(verdict_f64(loose).failed("misses"));
+    assert!(verdict_f64(planted::loose_discriminant).failed("misses"));
 }
 
 #[test]
 fn checker_rejects_nan() {
-    let nan = |_: &Ray32, _: &Sphere32, _: f32| Some(f32::NAN);
-    let verdict = check::sphere_intersection(&nan, 1_000);
+    let verdict = check::intersection(&planted::always_nan, &Options::default().cases(1_000));
     assert!(
         verdict.failed("hits") && verdict.failed("misses"),
         "{verdict}"
@@ -177,8 +144,7 @@ fn checker_rejects_nan() {
 
 #[test]
 fn far_checker_rejects_a_sphere_that_is_never_hit() {
-    let never = |_: &Ray32, _: &Sphere32, _: f32| None;
-    let verdict = check::far_spheres(&never);
+    let verdict = check::far(&planted::never_hits, &Options::default());
     assert!(!verdict.passed(), "{verdict}");
 }
 
@@ -191,9 +157,9 @@ fn far_checker_rejects_a_sphere_that_is_never_hit() {
 #[test]
 fn seed_rule_t_greater_than_zero_self_intersects() {
     for rate in [
-        self_hit_rate(&single::intersect_stable, 20_000, SELF_HIT_SEED),
-        self_hit_rate(&single::intersect_textbook, 20_000, SELF_HIT_SEED),
-        self_hit_rate(&intersect_stable, 20_000, SELF_HIT_SEED),
+        check::self_hit_rate(&single::intersect_stable, &Options::default()),
+        check::self_hit_rate(&single::intersect_textbook, &Options::default()),
+        check::self_hit_rate(&intersect_stable, &Options::default()),
     ] {
         assert!(rate >= 0.2, "self-intersection rate {rate}");
     }
@@ -506,9 +472,10 @@ fn my_intersect(ray: &Ray32, sphere: &Sphere32, t_min: f32) -> Option<f32> {
 
 #[test]
 fn my_intersect_passes_the_chapter_checks() {
-    let verdict = raylemma::check::sphere::sphere_intersection(&my_intersect, 20_000);
+    use raylemma::check::{self, Options};
+    let verdict = check::sphere::intersection(&my_intersect, &Options::default());
     println!("{verdict}"); // shown with `cargo test -- --nocapture`
     verdict.assert_pass(); // on failure, panics with the whole report
-    raylemma::check::sphere::far_spheres(&my_intersect).assert_pass();
+    check::sphere::far(&my_intersect, &Options::default()).assert_pass();
 }
 // ANCHOR_END: coursework

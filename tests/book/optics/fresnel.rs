@@ -6,11 +6,12 @@
 //! stated in the book's table are pinned here to within 20 %.
 
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
-use raylemma::check::max_abs;
+use raylemma::check::fresnel::{self as check, planted};
+use raylemma::check::{Options, max_abs};
 use raylemma::optics::fresnel::{
-    ErrorStats, FresnelFit, SWEEP_ANGLES, amplitudes, approximation_error, brewster_angle, check,
-    cos_transmitted, fresnel_dielectric, fresnel_polarized, fresnel_transmittance, planted, r0,
-    schlick, schlick_seed,
+    ErrorStats, FresnelFit, SWEEP_ANGLES, amplitudes, approximation_error, brewster_angle,
+    cos_transmitted, fresnel_dielectric, fresnel_polarized, fresnel_transmittance, r0, schlick,
+    schlick_seed,
 };
 use raylemma::optics::reflect::critical_angle;
 
@@ -24,13 +25,13 @@ const IORS: [f64; 4] = [1.33, 1.5, 2.4, 1.5 / 1.33];
 
 #[test]
 fn exact_fresnel_passes_every_check() {
-    check::reflectance(&fresnel_dielectric).assert_pass();
+    check::reflectance(&fresnel_dielectric, &Options::default()).assert_pass();
 }
 
 #[test]
 fn checker_rejects_the_naive_formula() {
     // No TIR test: NaN past the critical angle. Matched indices at grazing: 0/0.
-    let verdict = check::reflectance(&planted::fresnel_naive);
+    let verdict = check::reflectance(&planted::fresnel_naive, &Options::default());
     for claim in ["range", "tir", "matched"] {
         assert!(verdict.failed(claim), "{claim}\n{verdict}");
     }
@@ -40,7 +41,7 @@ fn checker_rejects_the_naive_formula() {
 
 #[test]
 fn checker_rejects_a_missing_beam_factor() {
-    let verdict = check::reflectance(&planted::fresnel_without_beam_factor);
+    let verdict = check::reflectance(&planted::fresnel_without_beam_factor, &Options::default());
     assert!(
         verdict.failed("energy") && verdict.failed("normal"),
         "{verdict}"
@@ -49,7 +50,7 @@ fn checker_rejects_a_missing_beam_factor() {
 
 #[test]
 fn checker_rejects_p_paired_like_s() {
-    let verdict = check::reflectance(&planted::fresnel_p_paired_like_s);
+    let verdict = check::reflectance(&planted::fresnel_p_paired_like_s, &Options::default());
     assert!(verdict.failed("energy"), "{verdict}");
     assert!(
         !verdict.failed("normal") && !verdict.failed("tir"),
@@ -61,7 +62,7 @@ fn checker_rejects_p_paired_like_s() {
 /// reciprocity, but not energy, and not matched indices: (1 - cos)^5 is not 0 there.
 #[test]
 fn checker_on_schlick() {
-    let verdict = check::reflectance(&schlick);
+    let verdict = check::reflectance(&schlick, &Options::default());
     for claim in ["range", "normal", "grazing", "tir", "reciprocity"] {
         assert!(!verdict.failed(claim), "{claim}\n{verdict}");
     }
@@ -77,7 +78,7 @@ fn checker_on_schlick() {
 #[test]
 fn checker_on_the_fit() {
     let fit = |c: f64, n1: f64, n2: f64| FresnelFit::new(n1, n2).eval(c);
-    let verdict = check::reflectance(&fit);
+    let verdict = check::reflectance(&fit, &Options::default());
     for claim in ["range", "grazing", "matched", "tir", "reciprocity"] {
         assert!(!verdict.failed(claim), "{claim}\n{verdict}");
     }
@@ -92,7 +93,7 @@ fn checker_on_the_fit() {
 /// ignores total internal reflection and the bending of the ray.
 #[test]
 fn seed_schlick_fails_tir_and_reciprocity() {
-    let verdict = check::reflectance(&schlick_seed);
+    let verdict = check::reflectance(&schlick_seed, &Options::default());
     for claim in ["tir", "reciprocity", "energy"] {
         assert!(verdict.failed(claim), "{claim}\n{verdict}");
     }
@@ -164,7 +165,7 @@ fn brewster_angle_zeroes_r_p() {
 #[test]
 fn matched_indices_reflect_nothing() {
     for n in [1.0, 1.33, 1.5, 2.4] {
-        for &c in &check::sweep_cosines() {
+        for &c in &check::sweep_cosines(&Options::default()) {
             assert_eq!(fresnel_dielectric(c, n, n), 0.0);
             assert_eq!(fresnel_transmittance(c, n, n).unpolarized(), 1.0);
         }
@@ -216,7 +217,7 @@ fn reflectance_plus_transmittance_is_one() {
 #[test]
 fn library_transmittance_balances_reflectance() {
     for &(n1, n2) in &check::PAIRS {
-        for &c in &check::sweep_cosines() {
+        for &c in &check::sweep_cosines(&Options::default()) {
             let (r, t) = (
                 fresnel_polarized(c, n1, n2),
                 fresnel_transmittance(c, n1, n2),

@@ -6,11 +6,10 @@
 
 use glam::DVec3;
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
-use raylemma::optics::reflect::check::{REFLECTION_SEED, REFRACTION_SEED};
-use raylemma::optics::reflect::{Refraction, check, critical_angle, planted, reflect, refract};
+use raylemma::check::Options;
+use raylemma::check::reflect::{self as check, planted};
+use raylemma::optics::reflect::{Refraction, critical_angle, reflect, refract};
 
-/// Random cases per checker run.
-const CASES: usize = 20_000;
 const EPS: f64 = f64::EPSILON;
 
 /// A unit direction at angle `theta` (radians) from `-n`, tilted towards `t`.
@@ -35,13 +34,13 @@ fn transmitted(r: Refraction) -> DVec3 {
 
 #[test]
 fn reflect_passes_every_check() {
-    let verdict = check::reflection(&reflect, CASES, REFLECTION_SEED);
+    let verdict = check::reflection(&reflect, &Options::default());
     verdict.assert_pass();
 }
 
 #[test]
 fn refract_passes_every_check() {
-    let verdict = check::refraction(&refract, CASES, REFRACTION_SEED);
+    let verdict = check::refraction(&refract, &Options::default());
     verdict.assert_pass();
 }
 
@@ -53,7 +52,7 @@ fn refract_passes_every_check() {
 /// even a unit vector (|2n + w_i|^2 = 5 - 4 cos_i) and leaves at the wrong angle.
 #[test]
 fn seed_reflection_fails_unit_length_and_equal_angles() {
-    let verdict = check::reflection(&planted::seed_reflect, CASES, REFLECTION_SEED);
+    let verdict = check::reflection(&planted::seed_reflect, &Options::default());
     assert!(verdict.failed("unit_length"), "{verdict}");
     assert!(verdict.failed("equal_angles"), "{verdict}");
     // It stays in the plane of incidence and retraces itself: those claims cannot see it.
@@ -111,7 +110,7 @@ fn seed_refraction_components_are_right() {
 
 #[test]
 fn checker_rejects_a_missing_square_root() {
-    let verdict = check::refraction(&planted::refract_without_sqrt, CASES, REFRACTION_SEED);
+    let verdict = check::refraction(&planted::refract_without_sqrt, &Options::default());
     assert!(
         verdict.failed("unit_length") && verdict.failed("snell"),
         "{verdict}"
@@ -120,7 +119,7 @@ fn checker_rejects_a_missing_square_root() {
 
 #[test]
 fn checker_rejects_swapped_indices() {
-    let verdict = check::refraction(&planted::refract_swapped_indices, CASES, REFRACTION_SEED);
+    let verdict = check::refraction(&planted::refract_swapped_indices, &Options::default());
     assert!(
         verdict.failed("snell") && verdict.failed("tir_iff"),
         "{verdict}"
@@ -129,7 +128,7 @@ fn checker_rejects_swapped_indices() {
 
 #[test]
 fn checker_rejects_nan_for_total_internal_reflection() {
-    let verdict = check::refraction(&planted::refract_nan_tir, CASES, REFRACTION_SEED);
+    let verdict = check::refraction(&planted::refract_nan_tir, &Options::default());
     assert!(
         verdict.failed("finite") && verdict.failed("tir_iff"),
         "{verdict}"
@@ -138,7 +137,7 @@ fn checker_rejects_nan_for_total_internal_reflection() {
 
 #[test]
 fn checker_rejects_an_unflipped_normal() {
-    let verdict = check::refraction(&planted::refract_unflipped_normal, CASES, REFRACTION_SEED);
+    let verdict = check::refraction(&planted::refract_unflipped_normal, &Options::default());
     assert!(
         verdict.failed("normal_side") && verdict.failed("far_side"),
         "{verdict}"
@@ -148,14 +147,13 @@ fn checker_rejects_an_unflipped_normal() {
 #[test]
 fn reflection_checker_rejects_nan_and_identity() {
     // The identity map is reversible and coplanar: only the angle claim sees it.
-    let nan = |_: DVec3, _: DVec3| DVec3::NAN;
-    let verdict = check::reflection(&nan, 1_000, 3);
+    let options = Options::default().cases(1_000);
+    let verdict = check::reflection(&planted::reflect_nan, &options);
     assert!(
         verdict.failed("finite") && verdict.failed("unit_length"),
         "{verdict}"
     );
-    let identity = |w: DVec3, _: DVec3| w;
-    let verdict = check::reflection(&identity, 1_000, 3);
+    let verdict = check::reflection(&planted::reflect_identity, &options);
     assert!(
         verdict.failed("equal_angles") && !verdict.failed("reversible"),
         "{verdict}"

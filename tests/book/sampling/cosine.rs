@@ -1,20 +1,23 @@
 //! Tests of the chapter *Cosine-weighted hemisphere* (`src/sampling/cosine.rs`).
 //! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
 
-use raylemma::check::max_abs;
-use std::f64::consts::{FRAC_1_PI, TAU};
+use std::f64::consts::FRAC_1_PI;
 
 use glam::{DVec2, DVec3};
-use raylemma::check::warp::{self, Domain};
+use raylemma::check::warp::{self, Domain, SquareWarp, planted};
+use raylemma::check::{Options, max_abs};
 use raylemma::sampling::cosine::*;
 use raylemma::sampling::disc::disc_concentric;
 
+/// The warp checker at the sampler tests' settings (400 000 samples, 21 rows and 5 000
+/// points by its rule).
 fn check(
     name: &str,
     sample: fn(DVec2) -> DVec3,
     pdf: fn(DVec3) -> f64,
 ) -> raylemma::check::Verdict {
-    warp::check_square(name, Domain::Sphere, sample, pdf, None)
+    let w = SquareWarp::new(name, Domain::Sphere, sample, pdf);
+    warp::check(&w, &Options::default().cases(warp::TEST_SAMPLES))
 }
 
 #[test]
@@ -45,29 +48,23 @@ fn seed_angles_and_cartesian_agree_pointwise() {
 
 #[test]
 fn a_uniform_hemisphere_claimed_as_cosine_is_rejected() {
-    let uniform = |u: DVec2| {
-        let z = u.x;
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z)
-    };
-    let v = check("uniform as cosine", uniform, cosine_pdf);
+    let v = check("uniform as cosine", planted::hemisphere_uniform, cosine_pdf);
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
 }
 
 #[test]
 fn a_cos_1_1_lobe_is_rejected() {
-    let lobe = |u: DVec2| {
-        let z = (1.0 - u.x).powf(1.0 / 2.1);
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        DVec3::new(r * (TAU * u.y).cos(), r * (TAU * u.y).sin(), z)
-    };
-    let v = check("cos^1.1", lobe, cosine_pdf);
+    let v = check("cos^1.1", planted::cosine_power_lobe, cosine_pdf);
     assert!(v.failed("chi_squared"), "{v}");
 }
 
 #[test]
 fn the_pdf_without_1_over_pi_is_rejected() {
-    let v = check("cosine, pdf cos", cosine_malley, |w| w.z.max(0.0));
+    let v = check(
+        "cosine, pdf cos",
+        cosine_malley,
+        planted::cosine_pdf_without_1_over_pi,
+    );
     // Refused by name (the pdf integrates to pi), and the Jacobian check sees it too.
     let message = v.finding("chi_squared").example.clone().unwrap_or_default();
     assert!(message.contains("integrates to 3.14159"), "{v}");
@@ -133,11 +130,11 @@ fn naive_malley_loses_the_rim() {
 /// The planted twin, Malley's lift written `z = sqrt(1 − x² − y²)`, cancels at the rim.
 #[test]
 fn single_precision_directions_are_unit_and_keep_cos_theta() {
-    use raylemma::check::single::{norm_error, square_points, z_error};
+    use raylemma::check::single::{norm_error, planted, square_points, z_error};
     use raylemma::single::sampling::cosine as single;
     type F32 = fn(glam::Vec2) -> glam::Vec3;
     type F64 = fn(glam::DVec2) -> DVec3;
-    let points = square_points(200_000, 0xF32);
+    let points = square_points(&Options::default());
     let forms = [
         (
             "seed angles",
@@ -160,10 +157,6 @@ fn single_precision_directions_are_unit_and_keep_cos_theta() {
             assert!(z <= 2.0, "{name}: worst cos θ error {z} ε");
         }
     }
-    let naive = |u: glam::Vec2| {
-        let p = raylemma::single::sampling::disc::disc_concentric(u);
-        glam::Vec3::new(p.x, p.y, (1.0 - p.x * p.x - p.y * p.y).max(0.0).sqrt())
-    };
-    let z = z_error(naive, cosine_malley, &points);
+    let z = z_error(planted::malley_naive_lift, cosine_malley, &points);
     assert!(z.is_nan() || z >= 1000.0, "the naive lift passed: {z} ε");
 }

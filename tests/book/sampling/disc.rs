@@ -2,16 +2,19 @@
 //! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
 
 use glam::{DVec2, DVec3};
-use raylemma::check::max_abs;
-use raylemma::check::warp::{self, Domain};
+use raylemma::check::warp::{self, Domain, SquareWarp, planted};
+use raylemma::check::{Options, max_abs};
 use raylemma::sampling::disc::*;
 
+/// The warp checker at the sampler tests' settings (400 000 samples, 21 rows and 5 000
+/// points by its rule), with the round trip.
 fn check(
     name: &str,
     sample: fn(DVec2) -> DVec3,
     invert: fn(DVec3) -> DVec2,
 ) -> raylemma::check::Verdict {
-    warp::check_square(name, Domain::Disc, sample, disc_pdf, Some(invert))
+    let w = SquareWarp::new(name, Domain::Disc, sample, disc_pdf).inverse(invert);
+    warp::check(&w, &Options::default().cases(warp::TEST_SAMPLES))
 }
 
 #[test]
@@ -30,11 +33,7 @@ fn concentric_map_passes_every_check() {
 
 #[test]
 fn r_equals_u_is_rejected() {
-    let v = check(
-        "disc r = u",
-        |u| disc_polar(DVec2::new(u.x * u.x, u.y)),
-        disc_polar_invert,
-    );
+    let v = check("disc r = u", planted::disc_r_equals_u, disc_polar_invert);
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
     // The report speaks in the disc's terms: r = u crowds the centre, so the worst cell is
     // the innermost ring, with more samples than the pdf predicts.
@@ -52,16 +51,11 @@ fn r_equals_u_is_rejected() {
 #[test]
 fn concentric_with_a_wrong_wedge_angle_is_rejected() {
     // Planted bug: pi/2 instead of pi/4 in the first wedge folds the disc over itself.
-    let bad = |u: DVec2| {
-        let a = 2.0 * u - DVec2::ONE;
-        if a.x.abs() > a.y.abs() {
-            let phi = std::f64::consts::FRAC_PI_2 * (a.y / a.x);
-            DVec3::new(a.x * phi.cos(), a.x * phi.sin(), 0.0)
-        } else {
-            disc_concentric(u)
-        }
-    };
-    let v = check("concentric bad wedge", bad, disc_concentric_invert);
+    let v = check(
+        "concentric bad wedge",
+        planted::concentric_wrong_wedge,
+        disc_concentric_invert,
+    );
     assert!(v.failed("chi_squared"), "{v}");
 }
 

@@ -1,33 +1,30 @@
 //! Tests of the chapter *Uniform sphere and hemisphere* (`src/sampling/sphere.rs`).
 //! Chi-squared tests run at `raylemma::stats::test_alpha()` with fixed seeds.
 
-use raylemma::check::max_abs;
 use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
-use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp};
+use raylemma::check::warp::{self, Domain, RngWarp, SquareWarp, planted};
+use raylemma::check::{Options, max_abs};
 use raylemma::rng::{self, Rng};
 use raylemma::sampling::sphere::*;
 use raylemma::stats::{chi2, test_alpha};
 
+/// The sampler tests' settings: 400 000 samples, and by the warp checker's rule 21 rows of
+/// cells and 5 000 Jacobian and round-trip points.
 fn opts() -> Options {
-    Options {
-        samples: 400_000,
-        resolution: 21,
-        points: 5_000,
-        ..Options::default()
-    }
+    Options::default().cases(warp::TEST_SAMPLES)
 }
 
 #[test]
 fn inverse_cdf_passes_chi_squared_jacobian_and_round_trip() {
-    let w = SquareWarp {
-        name: "sphere inverse cdf".into(),
-        domain: Domain::Sphere,
-        sample: sphere_inverse_cdf,
-        pdf: sphere_pdf,
-        invert: Some(sphere_inverse_cdf_invert),
-    };
+    let w = SquareWarp::new(
+        "sphere inverse cdf",
+        Domain::Sphere,
+        sphere_inverse_cdf,
+        sphere_pdf,
+    )
+    .inverse(sphere_inverse_cdf_invert);
     let v = warp::check(&w, &opts());
     v.assert_pass();
     assert_eq!(v.findings.len(), 3);
@@ -118,12 +115,11 @@ fn hemisphere_by_flipping_passes() {
 #[test]
 fn hemisphere_claimed_at_the_sphere_density_is_rejected() {
     // Planted bug: flipping without doubling the pdf (the pdf then integrates to 1/2).
-    let n = DVec3::Z;
     let w = RngWarp {
         name: "hemisphere, sphere pdf".into(),
         domain: Domain::Sphere,
-        sample: move |rng: &mut Rng| hemisphere_flip(sphere_gaussian(rng), n),
-        pdf: move |w: DVec3| if w.dot(n) >= 0.0 { SPHERE_PDF } else { 0.0 },
+        sample: |rng: &mut Rng| hemisphere_flip(sphere_gaussian(rng), DVec3::Z),
+        pdf: planted::hemisphere_pdf_not_doubled,
     };
     let v = warp::check(&w, &opts());
     assert!(v.failed("chi_squared"), "{v}");
@@ -199,7 +195,7 @@ fn inverse_at_the_azimuth_seam() {
 fn single_precision_directions_are_unit() {
     use raylemma::check::single::{norm_error, square_points, z_error};
     use raylemma::single::sampling::sphere as single;
-    let points = square_points(200_000, 0x5F32);
+    let points = square_points(&Options::default());
     let n = norm_error(single::sphere_inverse_cdf, &points);
     assert!(n <= 2.0, "inverse CDF: worst norm error {n} ε");
     let z = z_error(single::sphere_inverse_cdf, sphere_inverse_cdf, &points);

@@ -8,7 +8,8 @@
 //! Statistical tests in this file (correct code that must pass): 11.
 
 use glam::DVec3;
-use raylemma::check::warp::{self, Domain, Options, SquareWarp};
+use raylemma::check::Options;
+use raylemma::check::warp::{self, Domain, SquareWarp, WarpOptions, planted};
 use raylemma::rng;
 use raylemma::spectral::spectrum::{Table, builtin, planck_normalised};
 use raylemma::spectral::wavelength::*;
@@ -141,39 +142,30 @@ fn visible_pdf_integrates_to_one_and_inverts() {
 /// constants copied for another range), claimed with our pdf: rejected by both checks.
 #[test]
 fn visible_sampler_draws_its_pdf() {
-    let options = Options {
-        samples: 400_000,
+    // 400 000 samples on 47 x 47 cells of the interval, 10 000 Jacobian points.
+    let options = WarpOptions {
         resolution: 47,
-        ..Options::default()
+        points: 10_000,
+        ..WarpOptions::from(Options::default().cases(400_000))
     };
     let domain = Domain::Interval {
         lo: LAMBDA_MIN,
         hi: LAMBDA_MAX,
     };
-    let ok = SquareWarp {
-        name: "visible pdf".into(),
+    let ok = SquareWarp::new(
+        "visible pdf",
         domain,
-        sample: |u: glam::DVec2| DVec3::new(sample_visible(u.x), 0.0, 0.0),
-        pdf: |p: DVec3| visible_pdf(p.x),
-        invert: None,
-    };
+        |u: glam::DVec2| DVec3::new(sample_visible(u.x), 0.0, 0.0),
+        |p: DVec3| visible_pdf(p.x),
+    );
     let v = warp::check(&ok, &options);
     assert!(v.passed(), "{v}");
-    let bad = SquareWarp {
-        name: "visible pdf, other range".into(),
+    let bad = SquareWarp::new(
+        "visible pdf, other range",
         domain,
-        sample: |u: glam::DVec2| {
-            let t = |l: f64| (VISIBLE_A * (l - VISIBLE_C)).tanh();
-            let (t0, t1) = (t(380.0), t(780.0));
-            DVec3::new(
-                VISIBLE_C + (t0 + u.x * (t1 - t0)).atanh() / VISIBLE_A,
-                0.0,
-                0.0,
-            )
-        },
-        pdf: |p: DVec3| visible_pdf(p.x),
-        invert: None,
-    };
+        planted::visible_other_range,
+        |p: DVec3| visible_pdf(p.x),
+    );
     let v = warp::check(&bad, &options);
     assert!(
         v.failed("chi_squared") && v.failed("jacobian"),

@@ -9,8 +9,9 @@
 use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
-use raylemma::check::max_abs;
-use raylemma::check::warp::{self, Domain, Options, RngWarp, square_point};
+use raylemma::check::warp::planted::{self, AreaToSolidAngle as Convert, LIGHT_PDFS as PLANTED};
+use raylemma::check::warp::{self, Domain, RngWarp, WarpOptions, square_point};
+use raylemma::check::{Options, max_abs};
 use raylemma::rng::{self, Rng};
 use raylemma::stats::test_alpha;
 use raylemma::stats::ttest::{Summary, one_sample};
@@ -61,26 +62,9 @@ fn accepts(s: &Summary, mu: f64) -> bool {
     p_value(s, mu) >= test_alpha()
 }
 
-// The planted bugs, as wrong conversions of a correct sample to a solid-angle pdf.
-type Convert = fn(pdf_area: f64, dist: f64, cos_light: f64) -> f64;
-fn missing_r2(pa: f64, _r: f64, c: f64) -> f64 {
-    pa / c.abs()
-}
-fn missing_cos(pa: f64, r: f64, _c: f64) -> f64 {
-    pa * r * r
-}
-fn signed_cos(pa: f64, r: f64, c: f64) -> f64 {
-    pa * r * r / c // the seed's formula, n . r without the absolute value
-}
-fn unnormalised(_pa: f64, r: f64, c: f64) -> f64 {
-    r * r / c.abs() // p_A = 1 instead of 1 / area
-}
-const PLANTED: [(&str, Convert); 4] = [
-    ("missing r^2", missing_r2),
-    ("missing cosine", missing_cos),
-    ("signed cosine", signed_cos),
-    ("area pdf = 1", unnormalised),
-];
+// The planted bugs, as wrong conversions of a correct sample to a solid-angle pdf:
+// `raylemma::check::warp::planted::LIGHT_PDFS` (a missing r^2, a missing cosine, the seed's
+// signed cosine, an area pdf of 1).
 
 // ---------------------------------------------------------------------------------------
 // (a) The subtended solid angle, as the mean of 1 / p_w.
@@ -370,11 +354,11 @@ fn harness(
     warp::check(&w, &harness_options())
 }
 
-fn harness_options() -> Options {
-    Options {
-        samples: 50_000,
+/// 50 000 samples on 41 rows of cells (5 000 Jacobian points, by the rule).
+fn harness_options() -> WarpOptions {
+    WarpOptions {
         resolution: 41,
-        ..Options::tests()
+        ..WarpOptions::from(Options::default().cases(50_000))
     }
 }
 
@@ -404,7 +388,7 @@ fn harness_accepts_the_sphere_cone_pdf() {
         "sphere cone, area pdf = 1",
         SphereCone(light),
         p,
-        Some(unnormalised),
+        Some(planted::unnormalised),
         1.0,
     );
     assert!(v.failed("chi_squared"), "{v}");

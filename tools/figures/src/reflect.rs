@@ -6,9 +6,9 @@ use glam::DVec3;
 
 use super::{Output, Settings};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use raylemma::check::Verdict;
-use raylemma::optics::reflect::check::{REFLECTION_SEED, REFRACTION_SEED};
-use raylemma::optics::reflect::{Refraction, check, planted, reflect, refract};
+use raylemma::check::reflect::{self as check, planted};
+use raylemma::check::{Options, Verdict};
+use raylemma::optics::reflect::{Refraction, reflect, refract};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -54,7 +54,8 @@ fn verdict_table(md: &mut String, rows: &[(&str, Verdict)]) -> std::fmt::Result 
 }
 
 fn checks_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    let cases = if settings.quick { 2_000 } else { 20_000 };
+    let cases = if settings.quick { 2_000 } else { check::CASES };
+    let options = Options::default().cases(cases); // seeds: the checker's defaults
     let reflectors: [(&str, Reflector); 2] = [
         ("`reflect`", reflect),
         ("seed: `w_o = 2n + w_i`", planted::seed_reflect),
@@ -75,13 +76,13 @@ fn checks_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut md = String::from("**Reflection**\n\n");
     let rows: Vec<_> = reflectors
         .iter()
-        .map(|(name, f)| (*name, check::reflection(f, cases, REFLECTION_SEED)))
+        .map(|(name, f)| (*name, check::reflection(f, &options)))
         .collect();
     verdict_table(&mut md, &rows)?;
     md.push_str("\n**Refraction**\n\n");
     let rows: Vec<_> = refractors
         .iter()
-        .map(|(name, f)| (*name, check::refraction(f, cases, REFRACTION_SEED)))
+        .map(|(name, f)| (*name, check::refraction(f, &options)))
         .collect();
     verdict_table(&mut md, &rows)?;
     writeln!(

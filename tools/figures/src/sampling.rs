@@ -10,7 +10,8 @@ use rayon::prelude::*;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use raylemma::check::warp::{self, Domain, Options, RngWarp, SquareWarp, Warp, planted};
+use raylemma::check::Options;
+use raylemma::check::warp::{self, Domain, RngWarp, SquareWarp, Warp, WarpOptions, planted};
 use raylemma::rng::{self, Rng};
 use raylemma::sampling::cosine::*;
 use raylemma::sampling::disc::*;
@@ -71,13 +72,7 @@ fn square_warp(
     sample: fn(DVec2) -> DVec3,
     pdf: fn(DVec3) -> f64,
 ) -> Boxed {
-    Box::new(SquareWarp {
-        name: name.into(),
-        domain,
-        sample,
-        pdf,
-        invert: None,
-    })
+    Box::new(SquareWarp::new(name, domain, sample, pdf))
 }
 
 fn hemisphere_pdf_z(w: DVec3) -> f64 {
@@ -140,12 +135,10 @@ fn correct_samplers() -> Vec<Boxed> {
 /// (which none of the figure's samplers should produce) is a NaN p-value, which every
 /// table shows and no rate counts as a rejection.
 fn chi2_p(w: &dyn Warp, samples: usize, seed: u64) -> f64 {
-    let options = Options {
-        samples,
+    let options = WarpOptions {
         resolution: 21,
         points: 0,
-        seed,
-        alpha: stats::test_alpha(),
+        ..WarpOptions::from(Options::default().cases(samples).seed(seed))
     };
     warp::chi_squared(w, &options).map_or(f64::NAN, |(c, _, _)| c.p_value)
 }
@@ -169,12 +162,9 @@ fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             }
             acc.to_bits()
         });
-        let p = chi2_p(w.as_ref(), samples, 0xC41);
-        let options = Options {
-            points: 10_000,
-            ..Options::default()
-        };
-        let jac = warp::jacobian(w.as_ref(), &options)
+        let p = chi2_p(w.as_ref(), samples, warp::SEED);
+        // The checker's default: 10 000 Jacobian points.
+        let jac = warp::jacobian(w.as_ref(), &Options::default())
             .and_then(|f| f.worst)
             .map_or("n/a (not a warp of the square)".to_string(), |(e, _)| {
                 format!("{e:.1e}")
@@ -219,7 +209,7 @@ fn single_precision(name: &str) -> (String, String) {
     use raylemma::single::sampling as single;
     type F32 = fn(Vec2) -> Vec3;
     type F64 = fn(DVec2) -> DVec3;
-    let points = square_points(200_000, 0xF32);
+    let points = square_points(&Options::default());
     let both = |f: F32, exact: F64| {
         (
             format!("{:.2}", norm_error(f, &points)),

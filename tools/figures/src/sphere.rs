@@ -7,9 +7,8 @@ use glam::DVec3;
 
 use super::{Output, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
-use raylemma::check::Real;
 use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
-use raylemma::check::sphere::{SELF_HIT_SEED, self_hit_rate};
+use raylemma::check::{Options, Real};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
 use raylemma::single::geometry::sphere::{
     intersect_stable as stable32, intersect_textbook as textbook32,
@@ -59,14 +58,24 @@ fn figure_distances() -> Vec<f64> {
     (1..=20).map(|k| 10f64.powf(k as f64 / 4.0)).collect()
 }
 
+/// The far-sphere bundle: the checker's default ([`check::FAR_RAYS`] rays per distance),
+/// or a 41 x 41 bundle in quick mode.
+fn far_options(settings: &Settings) -> Options {
+    if settings.quick {
+        Options::default().cases(41 * 41)
+    } else {
+        Options::default()
+    }
+}
+
 fn far_error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    let grid = if settings.quick { 41 } else { check::FAR_GRID };
+    let options = far_options(settings);
     let forms: [(&str, &dyn Fn(f64) -> FarRow); 2] = [
         ("textbook (seed)", &|d| {
-            check::far_sphere(&textbook32, d, grid)
+            check::far_row(&textbook32, d, &options)
         }),
         ("stable (RTG ch. 7)", &|d| {
-            check::far_sphere(&stable32, d, grid)
+            check::far_row(&stable32, d, &options)
         }),
     ];
     let distances = figure_distances();
@@ -108,7 +117,8 @@ fn far_error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 }
 
 fn far_table_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    let grid = if settings.quick { 41 } else { check::FAR_GRID };
+    let options = far_options(settings);
+    let grid = check::far_grid(&options);
     let mut md = String::new();
     writeln!(
         md,
@@ -117,8 +127,8 @@ fn far_table_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     writeln!(md, "|---:|---|---:|---:|---:|---:|")?;
     for &d in &FAR_DISTANCES {
         for (name, row) in [
-            ("textbook", check::far_sphere(&textbook32, d, grid)),
-            ("stable", check::far_sphere(&stable32, d, grid)),
+            ("textbook", check::far_row(&textbook32, d, &options)),
+            ("stable", check::far_row(&stable32, d, &options)),
         ] {
             writeln!(
                 md,
@@ -204,6 +214,7 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 
 fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let rays = if settings.quick { 20_000 } else { 200_000 };
+    let options = Options::default().cases(rays); // seed: check::SELF_HIT_SEED
     let mut md = String::new();
     writeln!(
         md,
@@ -214,22 +225,18 @@ fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         (
             "textbook",
             "f32",
-            self_hit_rate(&textbook32, rays, SELF_HIT_SEED),
+            check::self_hit_rate(&textbook32, &options),
         ),
-        (
-            "stable",
-            "f32",
-            self_hit_rate(&stable32, rays, SELF_HIT_SEED),
-        ),
+        ("stable", "f32", check::self_hit_rate(&stable32, &options)),
         (
             "textbook",
             "f64",
-            self_hit_rate(&intersect_textbook, rays, SELF_HIT_SEED),
+            check::self_hit_rate(&intersect_textbook, &options),
         ),
         (
             "stable",
             "f64",
-            self_hit_rate(&intersect_stable, rays, SELF_HIT_SEED),
+            check::self_hit_rate(&intersect_stable, &options),
         ),
     ];
     for (form, precision, rate) in rows {
@@ -243,15 +250,19 @@ fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 }
 
 fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    let cases = if settings.quick { 2_000 } else { 20_000 };
+    let options = if settings.quick {
+        Options::default().cases(2_000)
+    } else {
+        Options::default() // check::CASES = 20 000 cases per claim
+    };
     let mut md = String::from("```text\n");
     for verdict in [
-        check::sphere_intersection(&stable32, cases),
-        check::sphere_intersection(&textbook32, cases),
-        check::sphere_intersection(&intersect_stable, cases),
-        check::sphere_intersection(&intersect_textbook, cases),
-        check::far_spheres(&stable32),
-        check::far_spheres(&textbook32),
+        check::intersection(&stable32, &options),
+        check::intersection(&textbook32, &options),
+        check::intersection(&intersect_stable, &options),
+        check::intersection(&intersect_textbook, &options),
+        check::far(&stable32, &Options::default()),
+        check::far(&textbook32, &Options::default()),
     ] {
         writeln!(md, "{verdict}")?;
     }

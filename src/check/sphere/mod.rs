@@ -1,4 +1,13 @@
-//! Checks for any ray-sphere intersection routine. Chapter: *Ray-sphere intersection*.
+//! Checks for any ray-sphere intersection routine. Chapter: *Ray-sphere intersection*
+//! (`chapters/geometry/sphere.md`).
+//!
+//! * [`intersection`]: six claims on constructed rays, in either precision;
+//! * [`far`]: the hard case, a unit sphere `1e2` to `1e4` radii away, in `f32`
+//!   ([`far_row`] measures one distance, for the chapter's table and figure);
+//! * [`self_hit_rate`]: how often a ray leaving the surface finds its own sphere with
+//!   `t_min = 0` (the seed's rule);
+//! * [`planted`]: the intersectors with the classic mistakes, which the checker must
+//!   reject.
 //!
 //! Every case is *constructed* with a known answer rather than solved by a reference
 //! routine: a ray is aimed at a chosen point of the sphere, or passes the centre at a
@@ -6,9 +15,11 @@
 //! Errors are measured along the ray (`|t - t*| |D|`) in units of
 //! `eps (|O| + |C| + r)`, the size of the rounding already present in the inputs.
 
+pub mod planted;
+
 use glam::DVec3;
 
-use super::{Finding, Real, Verdict};
+use super::{Finding, Options, Real, Verdict};
 use crate::rng::{self, Rng, log_uniform, uniform};
 use crate::single::geometry::{Ray, Sphere};
 
@@ -40,8 +51,11 @@ pub const ON_SPHERE_BOUND: f64 = 16.0;
 pub const SILHOUETTE_BAND: f64 = 16.0;
 // ANCHOR_END: bounds
 
-/// The seed for every case of [`sphere_intersection`].
+/// The default seed of [`intersection`] and [`far`].
 pub const SEED: u64 = 0x5eed_5fe7e;
+
+/// The default number of random cases per claim of [`intersection`].
+pub const CASES: usize = 20_000;
 
 /// A constructed case: a ray, a sphere, and their widened (`f64`) values.
 struct Case<R: Real> {
@@ -91,10 +105,11 @@ fn random_frame(rng: &mut Rng) -> (DVec3, f64, DVec3) {
     (center, radius, dir)
 }
 
-/// Runs every check of the chapter on `f` and returns the verdict. `cases` sets the
-/// number of random cases per claim (the tests use 20 000).
-pub fn sphere_intersection<R: Real>(f: &impl SphereIntersector<R>, cases: usize) -> Verdict {
-    let mut rng = rng::seeded(SEED);
+/// Runs every check of the chapter on `f` and returns the verdict: `options` sets the
+/// number of random cases per claim (default [`CASES`]) and their seed (default [`SEED`]).
+pub fn intersection<R: Real>(f: &impl SphereIntersector<R>, options: &Options) -> Verdict {
+    let cases = options.cases_or(CASES);
+    let mut rng = rng::seeded(options.seed_or(SEED));
     let mut verdict = Verdict::new(format!("ray-sphere intersection ({})", R::NAME));
     verdict.findings.push(hits(f, &mut rng, cases));
     verdict.findings.push(misses(f, &mut rng, cases));
@@ -344,12 +359,15 @@ const FAR_CENTER: DVec3 = DVec3::new(1.25, -0.5, 2.0);
 
 /// Shoots a `grid x grid` bundle of parallel f32 rays at a unit sphere `distance` radii
 /// away, over offsets in `[-1.25, 1.25]^2` across the direction, and counts wrong
-/// answers and the worst `t` error.
+/// answers and the worst `t` error. The grid is [`far_grid`]`(options)` (default
+/// [`FAR_GRID`]); the bundle's direction is drawn from the seed (default [`SEED`]) and
+/// the distance.
 ///
 /// The answers are computed in `f64` from the f32 inputs (exactly representable in
 /// `f64`): the f64 rounding errors are about 1e-9 of the f32 ones.
-pub fn far_sphere(f: &impl SphereIntersector<f32>, distance: f64, grid: usize) -> FarRow {
-    let mut rng = rng::seeded(SEED ^ distance.to_bits());
+pub fn far_row(f: &impl SphereIntersector<f32>, distance: f64, options: &Options) -> FarRow {
+    let grid = far_grid(options);
+    let mut rng = rng::seeded(options.seed_or(SEED) ^ distance.to_bits());
     let d_hat = rng::unit_vector(&mut rng);
     let (e1, e2) = d_hat.any_orthonormal_pair();
     let sphere = Sphere::new(FAR_CENTER.as_vec3(), 1.0);
@@ -405,15 +423,27 @@ pub fn far_sphere(f: &impl SphereIntersector<f32>, distance: f64, grid: usize) -
 /// The distances of the hard-case test: a unit sphere 1e2 to 1e4 radii away.
 pub const FAR_DISTANCES: [f64; 5] = [1e2, 3e2, 1e3, 3e3, 1e4];
 
-/// Grid size of the hard-case test (`grid^2` rays per distance).
+/// Grid size of the hard-case test by default (`grid^2` rays per distance).
 pub const FAR_GRID: usize = 101;
 
+/// The default number of rays per distance of [`far`] and [`far_row`]: `FAR_GRID^2`.
+pub const FAR_RAYS: usize = FAR_GRID * FAR_GRID;
+
+/// The side of the square bundle of the far-sphere test: the largest `grid` with
+/// `grid^2` at most the number of cases (default [`FAR_RAYS`], so [`FAR_GRID`]), and at
+/// least 1.
+pub fn far_grid(options: &Options) -> usize {
+    options.cases_or(FAR_RAYS).isqrt().max(1)
+}
+
 /// The hard case as a verdict: at every distance in [`FAR_DISTANCES`], no wrong hit/miss
-/// outside the silhouette band and the `t` error within [`T_ERROR_BOUND`].
-pub fn far_spheres(f: &impl SphereIntersector<f32>) -> Verdict {
+/// outside the silhouette band and the `t` error within [`T_ERROR_BOUND`]. `options`
+/// sets the rays per distance (default [`FAR_RAYS`], see [`far_grid`]) and the seed
+/// (default [`SEED`]).
+pub fn far(f: &impl SphereIntersector<f32>, options: &Options) -> Verdict {
     let mut verdict = Verdict::new("ray-sphere intersection, far-away unit sphere (f32)");
     for &distance in &FAR_DISTANCES {
-        let row = far_sphere(f, distance, FAR_GRID);
+        let row = far_row(f, distance, options);
         let mut finding = Finding::new(
             format!("far_{distance:.0e}"),
             format!(
@@ -437,9 +467,12 @@ pub fn far_spheres(f: &impl SphereIntersector<f32>) -> Verdict {
 }
 
 /// Rays leaving a sphere from a point on its surface, with `t_min = 0` as the seed
-/// prescribes: the fraction that "hits" the sphere again at a tiny `t`.
-pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, rays: usize, seed: u64) -> f64 {
-    let mut rng = rng::seeded(seed);
+/// prescribes: the fraction that "hits" the sphere again at a tiny `t`. `options` sets
+/// the number of rays (default [`SELF_HIT_RAYS`]) and their seed (default
+/// [`SELF_HIT_SEED`]).
+pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, options: &Options) -> f64 {
+    let rays = options.cases_or(SELF_HIT_RAYS);
+    let mut rng = rng::seeded(options.seed_or(SELF_HIT_SEED));
     let mut hits = 0;
     for _ in 0..rays {
         let radius = log_uniform(&mut rng, 1e-1, 1e1);
@@ -462,5 +495,8 @@ pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, rays: usize, seed: 
     hits as f64 / rays as f64
 }
 
-/// Seed of the self-intersection measurement (shared with its test).
+/// The default seed of [`self_hit_rate`] (its test and the chapter's table use it).
 pub const SELF_HIT_SEED: u64 = 0x5e1f;
+
+/// The default number of rays of [`self_hit_rate`].
+pub const SELF_HIT_RAYS: usize = 20_000;

@@ -1,0 +1,152 @@
+//! The checker of dielectric reflectance: any unpolarised reflectance routine
+//! `f(cos_i, n1, n2) -> R` (such as [`crate::optics::fresnel::fresnel_dielectric`]) can be
+//! checked against the claims of the chapter *Fresnel and Schlick*
+//! (`chapters/optics/fresnel.md`): range, normal and grazing incidence, matched indices,
+//! total internal reflection, `R + T = 1` and reciprocity. Its planted bugs are in
+//! [`planted`].
+//!
+//! The cases are a deterministic sweep: [`PAIRS`] of indices times the cosines of
+//! [`sweep_cosines`]. Of the [`Options`], the number of cases is the number of evenly
+//! spaced angles from 0 to 90 degrees (default [`ANGLES`], every 0.25 degree); the seed
+//! is not used.
+
+pub mod planted;
+
+use super::{Finding, Options, Verdict};
+
+/// Index pairs `(n1, n2)`: water, glass and diamond from both sides, glass under water,
+/// a strong contrast, a tiny one, and matched indices.
+pub const PAIRS: [(f64, f64); 12] = [
+    (1.0, 1.33),
+    (1.33, 1.0),
+    (1.0, 1.5),
+    (1.5, 1.0),
+    (1.0, 2.4),
+    (2.4, 1.0),
+    (1.33, 1.5),
+    (1.5, 1.33),
+    (1.0, 4.0),
+    (1.0001, 1.0),
+    (1.0, 1.0),
+    (1.5, 1.5),
+];
+
+/// Bound of the exact-value claims (normal, grazing, matched, TIR), absolute.
+pub const VALUE_BOUND: f64 = 4.0 * f64::EPSILON;
+/// Bound of the energy and reciprocity claims, in units of
+/// `eps (1 + 1 / min(cos_i, cos_t))`: computing one cosine from the other is
+/// ill-conditioned where either is near 0 (grazing, or near the critical angle).
+pub const BALANCE_BOUND: f64 = 64.0;
+
+/// The default number of evenly spaced angles of the sweep: 0 to 90 degrees in steps of
+/// 0.25 degree.
+pub const ANGLES: usize = 361;
+
+/// The cosines of the sweep: `options`' number of evenly spaced angles from 0 to 90
+/// degrees (default [`ANGLES`], every 0.25 degree; at least 2, both ends), then awkward
+/// values.
+pub fn sweep_cosines(options: &Options) -> Vec<f64> {
+    let angles = options.cases_or(ANGLES).max(2);
+    let step = 90.0 / (angles - 1) as f64;
+    let mut c: Vec<f64> = (0..angles)
+        .map(|k| (k as f64 * step).to_radians().cos())
+        .collect();
+    c.extend([
+        0.0,
+        -0.0,
+        1.0,
+        f64::MIN_POSITIVE,
+        5e-324,
+        1e-300,
+        1e-8,
+        1.0 - f64::EPSILON,
+        -0.5,
+        1.0 + f64::EPSILON, // a dot product of unit vectors, rounded up
+    ]);
+    c
+}
+
+/// `cos theta_t` and the transmittance `T = (n2 cos_t)/(n1 cos_i) (t_s^2 + t_p^2)/2`,
+/// computed here, from the angles, independently of the code under test. `None`
+/// under total internal reflection.
+pub fn independent_transmittance(cos_i: f64, n1: f64, n2: f64) -> Option<(f64, f64)> {
+    let c = cos_i.abs().min(1.0);
+    let sin_i = ((1.0 - c) * (1.0 + c)).sqrt();
+    let sin_t = n1 * sin_i / n2;
+    if sin_t > 1.0 {
+        return None;
+    }
+    let cos_t = ((1.0 - sin_t) * (1.0 + sin_t)).sqrt();
+    let t_s = 2.0 * n1 * c / (n1 * c + n2 * cos_t);
+    let t_p = 2.0 * n1 * c / (n2 * c + n1 * cos_t);
+    let t = n2 * cos_t / (n1 * c) * 0.5 * (t_s * t_s + t_p * t_p);
+    Some((cos_t, t))
+}
+
+// ANCHOR: claims
+/// Runs every claim on `f` over [`PAIRS`] and [`sweep_cosines`]`(options)`.
+pub fn reflectance(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdict {
+    let cosines = sweep_cosines(options);
+    let mut range = Finding::new("range", "R is finite and in [0, 1] for every input");
+    let mut normal = Finding::new("normal", "R(cos_i = 1) = ((n1 - n2)/(n1 + n2))^2");
+    let mut grazing = Finding::new("grazing", "R(cos_i = 0) = 1 when n1 != n2");
+    let mut matched = Finding::new("matched", "R = 0 at every angle when n1 = n2");
+    let mut tir = Finding::new("tir", "R = 1 past the critical angle");
+    let mut energy = Finding::new(
+        "energy",
+        "R + T = 1, T from the transmission amplitudes, within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
+    );
+    let mut reciprocity = Finding::new(
+        "reciprocity",
+        "R(cos_i; n1 -> n2) = R(cos_t; n2 -> n1), within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
+    );
+    for &(n1, n2) in &PAIRS {
+        for &cos_i in &cosines {
+            let r = f(cos_i, n1, n2);
+            let angle = cos_i.abs().min(1.0).acos().to_degrees();
+            let show = || format!("f({cos_i:e}, {n1}, {n2}) = {r:e} (theta_i = {angle:.3} deg)");
+            range.record(r.is_finite() && (0.0..=1.0).contains(&r), show);
+            let c = cos_i.abs();
+            if c >= 1.0 {
+                let r0 = ((n1 - n2) / (n1 + n2)).powi(2);
+                normal.measure((r - r0).abs(), VALUE_BOUND, show);
+            }
+            if n1 == n2 {
+                matched.measure(r.abs(), VALUE_BOUND, show);
+                continue;
+            }
+            if c == 0.0 {
+                grazing.measure((r - 1.0).abs(), VALUE_BOUND, show);
+            }
+            match independent_transmittance(cos_i, n1, n2) {
+                None => tir.measure((r - 1.0).abs(), VALUE_BOUND, || {
+                    let critical = (n2 / n1).asin().to_degrees();
+                    format!(
+                        "{}: past the critical angle {critical:.3} deg from {n1} into {n2}, R must be 1",
+                        show()
+                    )
+                }),
+                // Subnormal cosines would overflow the beam factor: skip them here.
+                Some((cos_t, t)) if c > 1e-100 && cos_t > 0.0 => {
+                    let unit = f64::EPSILON * (1.0 + 1.0 / c.min(cos_t));
+                    energy.measure((r + t - 1.0).abs() / unit, BALANCE_BOUND, || {
+                        format!("{}: R = {r:.6e}, T = {t:.6e}, R + T - 1 = {:.3e}", show(), r + t - 1.0)
+                    });
+                    let back = f(cos_t, n2, n1);
+                    reciprocity.measure((r - back).abs() / unit, BALANCE_BOUND, || {
+                        format!(
+                            "{}, but from the other side f({cos_t:e}, {n2}, {n1}) = {back:e} (theta_t = {:.3} deg)",
+                            show(),
+                            cos_t.acos().to_degrees()
+                        )
+                    });
+                }
+                Some(_) => {}
+            }
+        }
+    }
+    let mut verdict = Verdict::new("dielectric reflectance");
+    verdict.findings = vec![range, normal, grazing, matched, tir, energy, reciprocity];
+    verdict
+}
+// ANCHOR_END: claims
