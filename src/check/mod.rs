@@ -34,6 +34,7 @@
 pub mod fresnel;
 mod real;
 pub mod reflect;
+pub mod render;
 pub mod single;
 pub mod sphere;
 pub mod warp;

@@ -48,8 +48,49 @@ pub fn render_with(
     progress: Progress,
     sampler: WavelengthSampler,
 ) -> Image {
+    let whole = Window::of(scene);
+    render_window(scene, spp, whole, progress, sampler)
+}
+
+/// A rectangle of an image's pixels: `width x height` from the pixel `(x, y)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// The left column.
+    pub x: u32,
+    /// The top row.
+    pub y: u32,
+    /// Columns.
+    pub width: u32,
+    /// Rows.
+    pub height: u32,
+}
+
+impl Window {
+    /// The whole image of `scene`'s camera.
+    pub fn of(scene: &Scene) -> Self {
+        Window {
+            x: 0,
+            y: 0,
+            width: scene.camera.width,
+            height: scene.camera.height,
+        }
+    }
+}
+
+/// Renders only the pixels of `window` (which must lie inside the image): an image of the
+/// window's size whose pixels are exactly those of the whole render, since every pixel's
+/// generator depends on its index in the whole image ([`super::pixel::pixel_rng`]). The
+/// tests render a crop of a canonical scene this way and compare it with the committed
+/// reference.
+pub fn render_window(
+    scene: &Scene,
+    spp: u32,
+    window: Window,
+    progress: Progress,
+    sampler: WavelengthSampler,
+) -> Image {
     let camera = Camera::new(&scene.camera);
-    let (w, h) = (scene.camera.width, scene.camera.height);
+    let (w, h) = (window.width, window.height);
     let tiles: Vec<(u32, u32)> = (0..h.div_ceil(TILE))
         .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
         .collect();
@@ -71,7 +112,8 @@ pub fn render_with(
             for y in y0..(y0 + TILE).min(h) {
                 for x in x0..(x0 + TILE).min(w) {
                     let idx = y as usize * w as usize + x as usize;
-                    out.push((idx, render_pixel(scene, &camera, sampler, (x, y), spp)));
+                    let pixel = (window.x + x, window.y + y);
+                    out.push((idx, render_pixel(scene, &camera, sampler, pixel, spp)));
                 }
             }
             bar.inc(1);

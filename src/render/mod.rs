@@ -30,7 +30,7 @@ pub mod pixel;
 pub mod scene;
 mod validate;
 
-pub use driver::{Progress, TILE, render, render_file, render_with};
+pub use driver::{Progress, TILE, Window, render, render_file, render_window, render_with};
 pub use files::{Sidecar, output_paths, stage_outputs, write_outputs};
 pub use format::{load, parse};
 pub use pixel::{WavelengthSampler, pixel_rng, render_pixel, sample_xyz};

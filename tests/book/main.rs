@@ -49,6 +49,7 @@ mod spectral {
 mod renderer {
     mod render;
     mod scene;
+    mod testing;
 }
 
 /// The command line: subcommands end to end, their errors and exit statuses.

@@ -11,10 +11,10 @@ use crate::render::format::{
     DIRECT_STRATEGIES, MAX_RESOLUTION, RawCamera, RawRender, WAVELENGTH_STRATEGIES,
 };
 use crate::render::scene::{CameraSpec, DirectLight, Emitter, RenderSettings, Wavelength};
-use crate::transport::shadow::Heuristic;
 use crate::spectral::emission::{EmissionSampler, colour_proposal};
 use crate::spectral::spectrum::Spectrum;
 use crate::spectral::wavelength::Strategy;
+use crate::transport::shadow::Heuristic;
 
 impl Checker<'_> {
     /// `[render]`: samples per pixel, seed, wavelength strategy (`"emission"` is resolved

@@ -331,7 +331,9 @@ pub fn format_linear_tick(v: f64) -> String {
 /// Encodes an RGB8 buffer as PNG, with the library's one encoder
 /// ([`raylemma::spectral::display::encode_png`]).
 pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> Result<Vec<u8>, BoxError> {
-    Ok(raylemma::spectral::display::encode_png(width, height, &rgb)?)
+    Ok(raylemma::spectral::display::encode_png(
+        width, height, &rgb,
+    )?)
 }
 
 /// One panel of a scatter plot.

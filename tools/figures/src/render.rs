@@ -13,6 +13,7 @@ use std::time::Instant;
 use super::Settings;
 use super::timing::{machine, quick_note};
 use crate::plot::{self, BoxError, Panel, Scale, Series};
+use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
 use raylemma::render::compare::{mse_against, noise_level};
 use raylemma::render::image::Image;
@@ -22,29 +23,10 @@ use raylemma::spectral::display;
 use raylemma::stats::binomial::wilson;
 
 /// The canonical scenes: the name of the reference files, and the scene file under
-/// `scenes/`.
-pub const SCENES: [(&str, &str); 11] = [
-    ("cornell", "cornell.toml"),
-    ("cornell-diffuse", "cornell-diffuse.toml"),
-    ("lamps-amber-led", "lamps/amber-led.toml"),
-    ("lamps-incandescent", "lamps/incandescent.toml"),
-    (
-        "lamps-cool-white-fluorescent",
-        "lamps/cool-white-fluorescent.toml",
-    ),
-    (
-        "lamps-low-pressure-sodium",
-        "lamps/low-pressure-sodium.toml",
-    ),
-    (
-        "lamps-high-pressure-sodium",
-        "lamps/high-pressure-sodium.toml",
-    ),
-    ("dispersion", "dispersion.toml"),
-    ("bubble", "bubble.toml"),
-    ("furnace", "furnace.toml"),
-    ("furnace-grey", "furnace-grey.toml"),
-];
+/// `scenes/` (the library's list, which the renderer's tests also read).
+fn scenes() -> impl Iterator<Item = (&'static str, &'static str)> {
+    CANONICAL.iter().map(|c| (c.name, c.file))
+}
 
 /// The samples per pixel of a reference: the scene file's in full mode, a 32nd of it (at
 /// least 4) in quick mode.
@@ -320,7 +302,7 @@ fn calibration_md(settings: &Settings) -> Result<String, BoxError> {
 /// The scene or file that failed; `figures/` is then unchanged.
 pub fn write_references(figures: &Path, settings: &Settings) -> Result<Vec<PathBuf>, BoxError> {
     let mut rendered = Vec::new();
-    for (name, file) in SCENES {
+    for (name, file) in scenes() {
         rendered.push(render_one(name, file, settings)?);
     }
     eprintln!("  cornell: RMSE against time");

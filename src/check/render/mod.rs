@@ -1,0 +1,299 @@
+//! Checks of a renderer: its images against answers known independently of it. Chapter:
+//! *Testing the renderer* (`chapters/renderer/testing.md`).
+//!
+//! A renderer is any function from a [`Scene`] to an [`Image`] (the means and variances of
+//! the pixels); raylemma's own is [`ours`]. Each checker renders the scenes of
+//! [`scenes`] and compares the images by the pooled z-tests of [`pool`]:
+//!
+//! * [`exact`]: scenes whose expected image is known exactly ([`mod@exact`]): a
+//!   Lambertian floor under a quad light, a sphere light and both, and a glass sphere, a
+//!   mirror sphere and a thin film in a sky;
+//! * [`agreement`]: one scene with every material, two lights and a sky, rendered with
+//!   light sampling only, BSDF sampling only and both heuristics of multiple importance
+//!   sampling, and with every wavelength strategy: all must have the same expected image;
+//! * [`references::render_references`]: a window of every canonical scene against the
+//!   committed reference image.
+//!
+//! Every claim is a statistical test at `options.level` shared by Šidák between the
+//! claims of one check, with a fixed seed; the planted twins of [`planted`] are biases of
+//! known size that each check must reject.
+
+pub mod exact;
+pub mod planted;
+pub mod pool;
+pub mod references;
+pub mod scenes;
+
+use super::{Finding, Options, Verdict};
+use crate::render::image::Image;
+use crate::render::scene::{DirectLight, Scene, Wavelength};
+use crate::render::{Progress, render};
+use crate::spectral::emission::{EmissionSampler, colour_proposal};
+use crate::spectral::spectrum::Spectrum;
+use crate::spectral::wavelength::Strategy;
+use crate::stats::sidak;
+use crate::transport::shadow::Heuristic;
+use pool::{Expected, Pooled};
+
+/// A renderer under test: the image of a scene at its settings (samples, seed, strategies).
+pub type Renderer<'a> = &'a (dyn Fn(&Scene) -> Image + Sync);
+
+/// raylemma's own renderer ([`crate::render::render`]), silently.
+pub fn ours(scene: &Scene) -> Image {
+    render(scene, scene.settings.spp, Progress::Silent)
+}
+
+/// The two findings of one pooled comparison, named `what: global` and `what: blocks`.
+fn findings(what: &str, p: &Pooled) -> [Finding; 2] {
+    let mut global = Finding::new(
+        format!("{what}: global"),
+        format!(
+            "the mean over the {} tested pixels matches the expected image: |z| <= {:.2} \
+             (a global bias of {:.2} % is detected nine times in ten)",
+            p.pixels,
+            p.critical,
+            100.0 * p.detectable_bias()
+        ),
+    );
+    global.measure(p.global_z, p.critical, || {
+        format!(
+            "|z| = {:.2}: the image is {:+.3} % off in luminance",
+            p.global_z,
+            100.0 * p.relative_difference
+        )
+    });
+    let mut blocks = Finding::new(
+        format!("{what}: blocks"),
+        format!(
+            "every one of the {} blocks of {b}x{b} pixels matches: |z| <= {:.2}",
+            p.blocks,
+            p.critical,
+            b = p.block
+        ),
+    );
+    blocks.measure(p.block_z, p.critical, || {
+        format!(
+            "the block at pixel ({}, {}) has |z| = {:.2}",
+            p.worst_block.0, p.worst_block.1, p.block_z
+        )
+    });
+    [global, blocks]
+}
+
+/// One exact scene: its name, the scene (side in pixels, samples per pixel) and how its
+/// expected image is computed.
+pub struct ExactScene {
+    /// For reports.
+    pub name: String,
+    /// The scene.
+    pub scene: Scene,
+    /// Its expected image.
+    pub expected: fn(&Scene) -> Expected,
+}
+
+/// The wavelength strategies of the fluorescent floor: every unbiased strategy of the
+/// wavelength chapter, and the emission strategy (the light's colour proposal).
+pub fn wavelength_variants() -> Vec<(&'static str, Wavelength)> {
+    let mut v: Vec<(&str, Wavelength)> = [
+        ("hero, visible pdf", Strategy::HeroVisible),
+        ("hero, uniform", Strategy::HeroUniform),
+        ("hero, balance heuristic", Strategy::HeroBalance),
+        ("one wavelength, visible pdf", Strategy::Visible),
+        ("one wavelength, uniform", Strategy::Uniform),
+    ]
+    .into_iter()
+    .map(|(n, s)| (n, Wavelength::Strategy(s)))
+    .collect();
+    let proposal = colour_proposal(match &scenes::fluorescent() {
+        Spectrum::Table(t) => t,
+        _ => unreachable!("the fluorescent spectrum is a table"),
+    });
+    if let Ok(sampler) = EmissionSampler::new(&proposal) {
+        v.push(("emission (colour proposal)", Wavelength::Emission(sampler)));
+    }
+    v
+}
+
+/// The direct-lighting strategies: multiple importance sampling with either heuristic,
+/// light sampling only, BSDF sampling only.
+pub const DIRECT_VARIANTS: [(&str, DirectLight); 4] = [
+    ("MIS, power heuristic", DirectLight::Mis(Heuristic::Power)),
+    (
+        "MIS, balance heuristic",
+        DirectLight::Mis(Heuristic::Balance),
+    ),
+    ("light sampling only", DirectLight::Light),
+    ("BSDF sampling only", DirectLight::Bsdf),
+];
+
+/// The exact scenes at the tests' sizes, seed `seed`, each at its own samples per pixel
+/// (chosen so that a global bias of about half a percent is detected where the noise
+/// allows it) times `scale`:
+///
+/// * the floor under the quad light, under the sphere light, and under both with every
+///   direct-lighting strategy ([`DIRECT_VARIANTS`]);
+/// * the floor under the fluorescent light with every wavelength strategy
+///   ([`wavelength_variants`]);
+/// * the glass sphere, the mirror sphere and the thin film in the sky.
+pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
+    let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
+    let mut list = vec![
+        ExactScene {
+            name: "floor under a quad light".into(),
+            scene: scenes::floor_under_quad(32, spp(512)),
+            expected: exact::direct,
+        },
+        ExactScene {
+            name: "floor under a sphere light".into(),
+            scene: scenes::floor_under_sphere(32, spp(1536)),
+            expected: exact::direct,
+        },
+    ];
+    for (name, direct) in DIRECT_VARIANTS {
+        let mut scene = scenes::floor_under_two_lights(32, spp(512));
+        scene.settings.direct = direct;
+        list.push(ExactScene {
+            name: format!("floor under two lights, {name}"),
+            scene,
+            expected: exact::direct,
+        });
+    }
+    for (name, wavelengths) in wavelength_variants() {
+        list.push(ExactScene {
+            name: format!("floor under a fluorescent light, {name}"),
+            scene: scenes::floor_under_fluorescent(32, spp(64), wavelengths),
+            expected: exact::direct,
+        });
+    }
+    list.extend([
+        ExactScene {
+            name: "glass sphere in a sky".into(),
+            scene: scenes::glass_in_sky(40, spp(256)),
+            expected: exact::specular,
+        },
+        ExactScene {
+            name: "mirror sphere in a sky".into(),
+            scene: scenes::mirror_in_sky(32, spp(64)),
+            expected: exact::specular,
+        },
+        ExactScene {
+            name: "thin film in a sky".into(),
+            scene: scenes::film_in_sky(16, spp(512)),
+            expected: exact::specular,
+        },
+    ]);
+    for s in &mut list {
+        s.scene.settings.seed = seed;
+    }
+    list
+}
+
+/// The default seed of the renderer checks.
+pub const SEED: u64 = 0x5ce9e;
+
+/// One rendered comparison: what was rendered, the image, and what it is compared with.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    /// For reports.
+    pub name: String,
+    /// The image under test.
+    pub image: Image,
+    /// What it must match.
+    pub expected: Expected,
+    /// The side of the pooled blocks ([`pool::BLOCK`], or larger for scenes with rare
+    /// bright paths).
+    pub block: u32,
+}
+
+/// The two findings of each of `rendered`, the claims sharing the level `level` by Šidák.
+pub fn judge(subject: &str, rendered: &[Rendered], level: f64) -> Verdict {
+    let level = sidak(level, rendered.len().max(1) as u32);
+    let mut verdict = Verdict::new(subject);
+    for r in rendered {
+        let p = pool::pool_blocks(&r.image, &r.expected, level, r.block);
+        verdict.findings.extend(findings(&r.name, &p));
+    }
+    verdict
+}
+
+/// The exact scenes ([`exact_scenes`], `options.cases` percent of their samples, default
+/// 100) rendered by `renderer`, each with its expected image.
+pub fn render_exact(renderer: Renderer, options: &Options) -> Vec<Rendered> {
+    let list = exact_scenes(options.cases_or(100) as f64 / 100.0, options.seed_or(SEED));
+    list.into_iter()
+        .map(|s| Rendered {
+            image: renderer(&s.scene),
+            expected: (s.expected)(&s.scene),
+            name: s.name,
+            block: pool::BLOCK,
+        })
+        .collect()
+}
+
+/// Renders every exact scene ([`exact_scenes`]) with `renderer` and compares each image
+/// with its expected image, globally and in blocks.
+pub fn exact(renderer: Renderer, options: &Options) -> Verdict {
+    judge(
+        "renderer against exact images",
+        &render_exact(renderer, options),
+        options.level(),
+    )
+}
+
+/// The variants of [`agreement`]: every direct-lighting strategy but the first, and every
+/// unbiased wavelength strategy but hero-visible.
+pub fn variants() -> Vec<(String, DirectLight, Wavelength)> {
+    let hero = Wavelength::Strategy(Strategy::HeroVisible);
+    let power = DirectLight::Mis(Heuristic::Power);
+    let mut v: Vec<(String, DirectLight, Wavelength)> = DIRECT_VARIANTS[1..]
+        .iter()
+        .map(|&(name, d)| (name.to_string(), d, hero.clone()))
+        .collect();
+    for (name, s) in [
+        ("one uniform wavelength", Strategy::Uniform),
+        ("one visible wavelength", Strategy::Visible),
+        ("hero, uniform", Strategy::HeroUniform),
+        ("hero, balance heuristic", Strategy::HeroBalance),
+    ] {
+        v.push((name.to_string(), power, Wavelength::Strategy(s)));
+    }
+    v
+}
+
+/// The scene of everything ([`scenes::everything`], 32 x 32 pixels, `options.cases`
+/// samples per pixel, default 64) rendered by `renderer` with MIS (power heuristic) and
+/// hero-visible wavelengths, and with each of [`variants`] (each with its own seed), each
+/// variant compared with the first render.
+pub fn render_agreement(renderer: Renderer, options: &Options) -> Vec<Rendered> {
+    let spp = options.cases_or(64) as u32;
+    let seed = options.seed_or(SEED);
+    let mut base = scenes::everything(32, spp);
+    base.settings.seed = seed;
+    let reference = renderer(&base);
+    let expected = Expected::render(&reference, |_, _| true);
+    variants()
+        .into_iter()
+        .enumerate()
+        .map(|(k, (name, direct, wavelengths))| {
+            let mut s = base.clone();
+            s.settings.direct = direct;
+            s.settings.wavelengths = wavelengths;
+            s.settings.seed = seed + 1 + k as u64;
+            Rendered {
+                name,
+                image: renderer(&s),
+                expected: expected.clone(),
+                block: pool::BLOCK,
+            }
+        })
+        .collect()
+}
+
+/// Every estimator of one scene agrees: [`render_agreement`], judged.
+pub fn agreement(renderer: Renderer, options: &Options) -> Verdict {
+    judge(
+        "renderer: every estimator of one scene agrees",
+        &render_agreement(renderer, options),
+        options.level(),
+    )
+}
