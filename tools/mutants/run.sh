@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
-# Mutation testing of the derivation modules (sampling, optics, spectral, transport) with
-# cargo-mutants: does some test fail when the code is changed?
+# Mutation testing with cargo-mutants: does some test fail when the code is changed?
 #
 #   tools/mutants/run.sh [N [SHARD...]]      (default N = 40, SHARD = 0)
 #
-# Every source file is mutated with cargo-mutants' systematic samples `--shard K/N` for each
-# SHARD K (every N-th mutant of the file, starting at the K-th: about 1/N of all per shard),
-# and each mutant is tested with the file's own
-# chapter's tests (`cargo test --test book CHAPTER::`), not the
-# whole suite: that is what a student sees, and it keeps one mutant under a minute on 2
-# cores. The full run (N = 1) is some 3600 mutants, days on this machine. The summary,
+# Three groups of files (chapter "Tests of the tests"):
+#   * the derivation modules (sampling, optics, spectral, transport) and the checkers
+#     (src/check/): a systematic sample, cargo-mutants' `--shard K/N` for each SHARD K
+#     (every N-th mutant of the file, starting at the K-th), each mutant tested with the
+#     file's own chapter's tests (`cargo test --test book CHAPTER::`): what a student who
+#     changed that module would run. The full run (N = 1) is days on 2 cores.
+#   * the renderer (src/render/: integrator, camera, scene, pixel, image, compare, driver,
+#     files): every mutant, tested with the renderer's tests (`renderer::`).
+# Mutants are made in place (cargo-mutants --in-place), so that every build after the
+# first is incremental: run it in a clean checkout of its own, never in one you are
+# editing. A timeout counts as caught (the mutant made a test loop). The summary,
 # figures/mutants.md, gives the share caught per group with a 95 % Wilson interval, and
 # every surviving mutant. Results accumulate in $OUT (default /tmp/raylemma-mutants).
 set -euo pipefail
@@ -21,9 +25,14 @@ shards=("${@:-0}")
 [ "${#shards[@]}" -gt 0 ] || shards=(0)
 out="${OUT:-/tmp/raylemma-mutants}"
 command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
+cd "$root"
+if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
+  echo "run.sh mutates files in place: run it in a clean checkout (git worktree add ...)" >&2
+  exit 2
+fi
 mkdir -p "$out"
-# source file -> its chapter's test module in tests/book/
-map=(
+# sampled: source file -> its chapter's test module in tests/book/
+sampled=(
   "src/sampling/sphere.rs sampling::sphere"
   "src/sampling/disc.rs sampling::disc"
   "src/sampling/cosine.rs sampling::cosine"
@@ -44,20 +53,33 @@ map=(
   "src/transport/lambert.rs transport::lambert"
   "src/transport/roulette.rs transport::roulette"
   "src/transport/shadow.rs transport::shadow"
+  "src/check/sphere/mod.rs geometry::sphere"
+  "src/check/warp/mod.rs checking::warps"
+  "src/check/warp/cells.rs checking::warps"
+  "src/check/reflect/mod.rs optics::reflect"
+  "src/check/fresnel/mod.rs optics::fresnel"
 )
-cd "$root"
+# complete: every mutant, with the renderer's tests
+complete=(
+  src/render/integrator.rs src/render/camera.rs src/render/scene.rs src/render/pixel.rs
+  src/render/image.rs src/render/compare.rs src/render/driver.rs src/render/files.rs
+)
+mutate() { # name, test filter, cargo-mutants arguments...
+  local name="$1" filter="$2"
+  shift 2
+  [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $name: done before"; return; }
+  echo "== $name (tests: $filter)"
+  cargo mutants --in-place --no-shuffle --baseline skip --timeout 300 --build-timeout 900 \
+    -o "$out/$name" "$@" -C --test=book -- "$filter" || true
+}
 for shard in "${shards[@]}"; do
-for entry in "${map[@]}"; do
-  set -- $entry
-  file="$1"; shift
-  name="$(echo "$file" | tr '/' '_').s$shard"
-  [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $file shard $shard: done before"; continue; }
-  # -C restricts the build to the book's test binary; the module path after `--` restricts
-  # the run to this chapter's tests.
-  echo "== $file shard $shard/$n (tests: $*)"
-  cargo mutants --no-shuffle -f "$file" --shard "$shard/$n" --baseline skip \
-    --timeout 300 --build-timeout 900 -o "$out/$name" -C --test=book -- "$1::" || true
+  for entry in "${sampled[@]}"; do
+    set -- $entry
+    mutate "$(echo "$1" | tr '/' '_').s$shard" "$2::" -f "$1" --shard "$shard/$n"
+  done
 done
+for file in "${complete[@]}"; do
+  mutate "$(echo "$file" | tr '/' '_').all" "renderer::" -f "$file"
 done
 python3 "$here/summary.py" "$out" "$n" > "$root/figures/mutants.md"
 cat "$root/figures/mutants.md"

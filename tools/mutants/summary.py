@@ -1,10 +1,11 @@
-"""Summarises cargo-mutants outcomes per module group (figures/mutants.md)."""
+"""Summarises cargo-mutants outcomes per group of modules (figures/mutants.md)."""
 import json, math, os, sys
 from collections import defaultdict
 
 out, n = sys.argv[1], int(sys.argv[2])
 groups = defaultdict(lambda: defaultdict(int))
-missed = []
+complete = set()
+missed = defaultdict(list)
 for d in sorted(os.listdir(out)):
     path = os.path.join(out, d, "mutants.out", "outcomes.json")
     if not os.path.exists(path):
@@ -15,12 +16,14 @@ for d in sorted(os.listdir(out)):
             continue  # the baseline
         m = scenario["Mutant"]
         file = m["file"]
-        group = file.split("/")[1]
+        group = "/".join(file.split("/")[:2])
+        if d.endswith(".all"):
+            complete.add(group)
         summary = o["summary"]
         groups[group][summary] += 1
         if summary == "MissedMutant":
             line = m.get("span", {}).get("start", {}).get("line", "?")
-            missed.append(m.get("name") or f"{file}:{line}: {m.get('replacement', '')}")
+            missed[group].append(m.get("name") or f"{file}:{line}: {m.get('replacement', '')}")
 
 def wilson(k, t, z=1.96):
     if t == 0:
@@ -30,27 +33,29 @@ def wilson(k, t, z=1.96):
     h = z * math.sqrt(p * (1 - p) / t + z * z / (4 * t * t)) / (1 + z * z / t)
     return (c - h, c + h)
 
-print("| modules | mutants tested | caught | missed | timeouts | unviable | caught share | 95 % interval |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|")
-tot = defaultdict(int)
-for g in sorted(groups):
-    s = groups[g]
-    for k, v in s.items():
-        tot[k] += v
+def row(name, s, which):
     caught, miss, to = s["CaughtMutant"], s["MissedMutant"], s["Timeout"]
     viable = caught + miss + to
     lo, hi = wilson(caught + to, viable)
-    print(f"| `src/{g}/` | {viable} | {caught} | {miss} | {to} | {s['Unviable']} | {100*(caught+to)/max(viable,1):.0f} % | {100*lo:.0f}–{100*hi:.0f} % |")
-caught, miss, to = tot["CaughtMutant"], tot["MissedMutant"], tot["Timeout"]
-viable = caught + miss + to
-lo, hi = wilson(caught + to, viable)
-print(f"| **all four** | {viable} | {caught} | {miss} | {to} | {tot['Unviable']} | {100*(caught+to)/max(viable,1):.0f} % | {100*lo:.0f}–{100*hi:.0f} % |")
+    share = 100 * (caught + to) / max(viable, 1)
+    return f"| {name} | {which} | {viable} | {caught} | {miss} | {to} | {s['Unviable']} | {share:.0f} % | {100*lo:.0f}–{100*hi:.0f} % |"
+
+print("| modules | mutants | tested | caught | missed | timeouts | unviable | caught share | 95 % interval |")
+print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+order = ["src/sampling", "src/optics", "src/spectral", "src/transport", "src/check", "src/render"]
+for g in sorted(groups, key=lambda g: order.index(g) if g in order else len(order)):
+    which = "every one" if g in complete else f"a sample, 1 in {n}" if n > 1 else "every one"
+    print(row(f"`{g}/`", groups[g], which))
 print()
-shards = sorted({d.rsplit(".s", 1)[1] for d in os.listdir(out) if ".s" in d}, key=int) or ["0"]
-print(f"*cargo-mutants, {len(shards)} of every {n} mutants of each file (`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's test file and the unit tests; a timeout counts as caught (the mutant made a test loop). Regenerate with `tools/mutants/run.sh {n} {' '.join(shards)}`.*")
-print()
-if missed:
-    print("Surviving mutants:")
+shards = sorted({d.rsplit(".s", 1)[1] for d in os.listdir(out) if ".s" in d and not d.endswith(".all")}, key=int) or ["0"]
+print(f"*cargo-mutants. The derivations and checkers: {len(shards)} of every {n} mutants of each file "
+      f"(`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's tests; the "
+      "renderer: every mutant, tested with the renderer's tests. A timeout counts as caught (the "
+      f"mutant made a test loop). Regenerate with `tools/mutants/run.sh {n} {' '.join(shards)}` "
+      "in a clean checkout.*")
+for g in sorted(missed, key=lambda g: order.index(g) if g in order else len(order)):
     print()
-    for m in missed:
+    print(f"Surviving mutants of `{g}/`:")
+    print()
+    for m in missed[g]:
         print(f"- `{m}`")

@@ -28,6 +28,7 @@ mod specular;
 mod sphere;
 mod stats;
 mod tabulated;
+mod testing;
 mod thinfilm;
 mod upsample;
 mod wavelength;
@@ -71,6 +72,7 @@ fn main() -> ExitCode {
     let root = cli
         .root
         .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../.."));
+    let root = std::fs::canonicalize(&root).unwrap_or(root);
     let settings = Settings {
         quick: cli.quick,
         root,

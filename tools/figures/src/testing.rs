@@ -1,0 +1,159 @@
+//! Tables of the chapter *Testing the renderer*: the power of each renderer check against
+//! planted biases of known size, and its false alarms, over many seeds.
+//!
+//! Each check's images are rendered once per seed; biases are then planted in copies of the
+//! images (every pixel `1 + b` times brighter, or only the block at the image's middle) and
+//! the check's own test is run on each copy at the level it has in `cargo test` (the
+//! suite's per-test level, shared by Šidák between the check's scenes).
+
+use std::fmt::Write as _;
+
+use rayon::prelude::*;
+
+use super::{Output, Settings};
+use crate::plot::BoxError;
+use raylemma::check::Options;
+use raylemma::check::render::pool::pool_blocks;
+use raylemma::check::render::{
+    Rendered, ours, planted, references, render_agreement, render_exact,
+};
+use raylemma::stats::{sidak, test_alpha};
+
+/// The outputs of this chapter.
+pub fn outputs() -> Vec<Output> {
+    vec![Output {
+        file: "render_test_power.md",
+        what: "power of the renderer checks",
+        make: power_md,
+    }]
+}
+
+/// The planted biases, relative.
+const BIASES: [f64; 16] = [
+    0.001, 0.002, 0.003, 0.005, 0.0075, 0.01, 0.015, 0.02, 0.03, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3,
+    0.5,
+];
+
+/// Whether the check's test of `r` (at `level`) fails with `plant` applied to its image.
+fn fails(r: &Rendered, level: f64, plant: impl Fn(&mut Rendered)) -> bool {
+    let mut r = r.clone();
+    plant(&mut r);
+    !pool_blocks(&r.image, &r.expected, level, r.block).passed()
+}
+
+/// The centre block of `r`'s image, aligned to its blocks.
+fn centre(r: &Rendered) -> (u32, u32) {
+    let b = r.block;
+    (r.image.width / 2 / b * b, r.image.height / 2 / b * b)
+}
+
+/// One row: the smallest bias detected in at least 9 of 10 seeds, globally and in the
+/// centre block, and the false alarms without a bias.
+struct Row {
+    check: &'static str,
+    name: String,
+    pixels: usize,
+    block: u32,
+    global: Option<f64>,
+    local: Option<f64>,
+    false_alarms: usize,
+}
+
+fn rows_of(check: &'static str, runs: &[Vec<Rendered>]) -> Vec<Row> {
+    let items = runs[0].len();
+    let level = sidak(test_alpha(), items as u32);
+    let seeds = runs.len();
+    let need = (9 * seeds).div_ceil(10);
+    (0..items)
+        .map(|i| {
+            let smallest = |plant: &dyn Fn(&mut Rendered, f64)| {
+                BIASES.iter().copied().find(|&b| {
+                    runs.iter()
+                        .filter(|run| fails(&run[i], level, |r| plant(r, b)))
+                        .count()
+                        >= need
+                })
+            };
+            Row {
+                check,
+                name: runs[0][i].name.clone(),
+                pixels: runs[0][i].expected.tested(),
+                block: runs[0][i].block,
+                global: smallest(&|r, b| planted::brighten(&mut r.image, b)),
+                local: smallest(&|r, b| {
+                    let at = centre(r);
+                    let side = r.block;
+                    planted::brighten_square(&mut r.image, b, at, side);
+                }),
+                false_alarms: runs
+                    .iter()
+                    .filter(|run| fails(&run[i], level, |_| ()))
+                    .count(),
+            }
+        })
+        .collect()
+}
+
+fn percent(b: Option<f64>) -> String {
+    b.map_or_else(|| "> 50 %".into(), |b| format!("{} %", 100.0 * b))
+}
+
+fn power_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let seeds: u64 = if settings.quick { 2 } else { 10 };
+    let root = settings.root.clone();
+    let options = |s: u64| Options::default().seed(0xB1A5 + s);
+    let exact: Vec<Vec<Rendered>> = (0..seeds)
+        .into_par_iter()
+        .map(|s| render_exact(&ours, &options(s)))
+        .collect();
+    let agreement: Vec<Vec<Rendered>> = (0..seeds)
+        .into_par_iter()
+        .map(|s| render_agreement(&ours, &options(s)))
+        .collect();
+    let refs: Vec<Vec<Rendered>> = (0..seeds)
+        .into_par_iter()
+        .map(|s| references::render_references(&references::ours_window, &root, &options(s)))
+        .collect::<Result<_, _>>()?;
+    let mut rows = rows_of("exact", &exact);
+    rows.extend(rows_of("agreement", &agreement));
+    rows.extend(rows_of("references", &refs));
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| check | scene | pixels | block | smallest global bias detected | smallest bias of one block detected | false alarms in {seeds} seeds |"
+    )?;
+    writeln!(md, "|---|---|---:|---:|---:|---:|---:|")?;
+    for r in &rows {
+        writeln!(
+            md,
+            "| {} | {} | {} | {b} x {b} | {} | {} | {} |",
+            r.check,
+            r.name,
+            r.pixels,
+            percent(r.global),
+            percent(r.local),
+            r.false_alarms,
+            b = r.block
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*Each check's images rendered with {seeds} seeds at the settings of `cargo test` \
+         (`tests/book/renderer/testing.rs`); a bias counts as detected when the check's test \
+         fails for at least {} of the {seeds} seeds, at the level it has in the suite (the \
+         per-test level split by Šidák between the check's scenes). Biases tried: {} %. \
+         \"One block\": the block at the middle of the image alone made brighter.{}*",
+        (9 * seeds).div_ceil(10),
+        BIASES
+            .iter()
+            .map(|b| format!("{}", 100.0 * b))
+            .collect::<Vec<_>>()
+            .join(", "),
+        if settings.quick {
+            " Quick mode: 2 seeds."
+        } else {
+            ""
+        }
+    )?;
+    Ok(md.into_bytes())
+}
