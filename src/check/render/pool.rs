@@ -139,6 +139,7 @@ pub fn pool(image: &Image, expected: &Expected, level: f64) -> Pooled {
     pool_blocks(image, expected, level, BLOCK)
 }
 
+// ANCHOR: pool
 /// [`pool`] with blocks of `block`² pixels. Larger blocks hold more samples, which a scene
 /// with rare bright paths (caustics, a light seen through glass) needs before a block's
 /// total is normal.
@@ -203,3 +204,4 @@ pub fn pool_blocks(image: &Image, expected: &Expected, level: f64, block: u32) -
         relative_error: se_y / expected_y,
     }
 }
+// ANCHOR_END: pool
