@@ -6,6 +6,7 @@
 //!
 //! Run with `cargo bench --bench optics`.
 
+use raylemma::sampling::sphere::sphere_uniform;
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -55,7 +56,7 @@ fn fresnel(c: &mut Criterion) {
 fn directions(c: &mut Criterion) {
     let mut rng = rng::seeded(0xd1);
     let pairs: Vec<(DVec3, DVec3)> = (0..4096)
-        .map(|_| (rng::unit_vector(&mut rng), rng::unit_vector(&mut rng)))
+        .map(|_| (sphere_uniform(&mut rng), sphere_uniform(&mut rng)))
         .collect();
     let mut group = c.benchmark_group("directions");
     group.throughput(Throughput::Elements(pairs.len() as u64));

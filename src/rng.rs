@@ -24,15 +24,6 @@ pub fn log_uniform(rng: &mut Rng, lo: f64, hi: f64) -> f64 {
     (uniform(rng, lo.ln(), hi.ln())).exp()
 }
 
-/// A uniformly distributed unit vector, by Archimedes' hat-box theorem: `z` uniform in
-/// `[-1, 1]`, azimuth uniform. (The sampling chapters derive and test this map.)
-pub fn unit_vector(rng: &mut Rng) -> DVec3 {
-    let z = uniform(rng, -1.0, 1.0);
-    let phi = uniform(rng, 0.0, std::f64::consts::TAU);
-    let s = (1.0 - z * z).max(0.0).sqrt();
-    DVec3::new(s * phi.cos(), s * phi.sin(), z)
-}
-
 /// A unit vector perpendicular to the unit vector `n` (any one, chosen stably).
 pub fn perpendicular(n: DVec3) -> DVec3 {
     n.any_orthonormal_vector()

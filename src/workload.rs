@@ -2,6 +2,7 @@
 //! and the criterion benches (`cargo bench`) both time, so that the two measure the same
 //! work. Each is drawn from its own fixed seed.
 
+use crate::sampling::sphere::sphere_uniform;
 use glam::DVec3;
 use rand::RngExt as _;
 
@@ -22,8 +23,8 @@ pub fn timing_rays<R: Real>(n: usize) -> (Vec<R::Ray>, R::Sphere) {
     let mut rng = rng::seeded(0x7157);
     let rays = (0..n)
         .map(|_| {
-            let origin = rng::unit_vector(&mut rng) * 5.0;
-            let target = rng::unit_vector(&mut rng) * 1.4 * rng::uniform(&mut rng, 0.0, 1.0).cbrt();
+            let origin = sphere_uniform(&mut rng) * 5.0;
+            let target = sphere_uniform(&mut rng) * 1.4 * rng::uniform(&mut rng, 0.0, 1.0).cbrt();
             R::ray(origin, target - origin)
         })
         .collect();
@@ -39,7 +40,7 @@ pub fn timing_cosines(n: usize) -> Vec<f64> {
 /// `n` random unit normals for timing (fixed seed).
 pub fn timing_normals(n: usize) -> Vec<DVec3> {
     let mut r = rng::seeded(0xf4a);
-    (0..n).map(|_| rng::unit_vector(&mut r)).collect()
+    (0..n).map(|_| sphere_uniform(&mut r)).collect()
 }
 
 /// Table sizes of the speed table and the benchmark.

@@ -11,6 +11,7 @@
 //! * a white furnace: a mirror or glass sphere inside a constant environment must return
 //!   exactly the environment's radiance, for every path.
 
+use crate::sampling::sphere::sphere_uniform;
 use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
@@ -161,7 +162,7 @@ pub fn furnace_path(
 /// A ray from 3 radii away aimed at a uniformly random point of the sphere's silhouette
 /// disc, so that it hits.
 pub fn furnace_camera_ray(rng: &mut Rng) -> Ray {
-    let origin = rng::unit_vector(rng) * 3.0;
+    let origin = sphere_uniform(rng) * 3.0;
     let (t, b) = (-origin.normalize()).any_orthonormal_pair();
     let r = rng::uniform(rng, 0.0, 1.0).sqrt() * 0.999;
     let phi = rng::uniform(rng, 0.0, TAU);

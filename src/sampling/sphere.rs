@@ -57,6 +57,12 @@ pub fn sphere_inverse_cdf_invert(w: V3) -> V2 {
     V2::new((1.0 - w.z) / 2.0, phi / consts::TAU)
 }
 
+/// A uniform direction drawn with `rng`: [`sphere_inverse_cdf`] of two uniform numbers. The
+/// project's one way to draw a random direction (checks, tests and timing inputs use it).
+pub fn sphere_uniform(rng: &mut Rng) -> V3 {
+    sphere_inverse_cdf(V2::new(rng.random(), rng.random()))
+}
+
 // ANCHOR: gaussian
 /// Two independent standard normal numbers from two uniforms (Box-Muller). `1 - u1` is
 /// in `(0, 1]`, so the logarithm is finite.

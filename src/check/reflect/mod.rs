@@ -16,6 +16,7 @@
 
 pub mod planted;
 
+use crate::sampling::sphere::sphere_uniform;
 use glam::DVec3;
 
 use super::{Finding, Options, Verdict};
@@ -72,11 +73,11 @@ pub struct Case {
 /// exactly 0, so the side the light comes from is always defined.
 pub fn random_case(rng: &mut Rng, k: usize) -> Case {
     loop {
-        let mut m = rng::unit_vector(rng);
+        let mut m = sphere_uniform(rng);
         let w_i = match k % 16 {
             0 => -m,
             1 => rng::perpendicular(m),
-            _ => rng::unit_vector(rng),
+            _ => sphere_uniform(rng),
         };
         if w_i.dot(m) == 0.0 {
             continue; // exactly grazing: no side to come from; draw again

@@ -17,6 +17,7 @@
 
 pub mod planted;
 
+use crate::sampling::sphere::sphere_uniform;
 use glam::DVec3;
 
 use super::{Finding, Options, Real, Verdict};
@@ -101,7 +102,7 @@ fn random_frame(rng: &mut Rng) -> (DVec3, f64, DVec3) {
         uniform(rng, -10.0, 10.0),
         uniform(rng, -10.0, 10.0),
     ) * radius;
-    let dir = rng::unit_vector(rng) * log_uniform(rng, 1e-2, 1e2);
+    let dir = sphere_uniform(rng) * log_uniform(rng, 1e-2, 1e2);
     (center, radius, dir)
 }
 
@@ -130,7 +131,7 @@ fn hits<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize) -> Find
     );
     for _ in 0..n {
         let (center, radius, dir) = random_frame(rng);
-        let u = rng::unit_vector(rng);
+        let u = sphere_uniform(rng);
         let dir = if dir.dot(u) > 0.0 { -dir } else { dir }; // entering through the front
         // The angle to the inward normal is at most ~84 degrees, keeping the entry
         // well-conditioned (tangents are checked separately).
@@ -271,7 +272,7 @@ fn surface_origin<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usiz
     );
     for i in 0..n {
         let (center, radius, dir) = random_frame(rng);
-        let u = rng::unit_vector(rng);
+        let u = sphere_uniform(rng);
         let d_len = dir.length();
         let cos = dir.dot(u) / d_len;
         if cos.abs() < 0.1 {
@@ -311,7 +312,7 @@ fn direction_scale<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usi
     let scales = [1e-3, 0.5, 3.0, 1e3];
     for i in 0..n {
         let (center, radius, dir) = random_frame(rng);
-        let u = rng::unit_vector(rng);
+        let u = sphere_uniform(rng);
         let dir = if dir.dot(u) > 0.0 { -dir } else { dir };
         if -dir.normalize().dot(u) < 0.1 {
             continue;
@@ -368,7 +369,7 @@ const FAR_CENTER: DVec3 = DVec3::new(1.25, -0.5, 2.0);
 pub fn far_row(f: &impl SphereIntersector<f32>, distance: f64, options: &Options) -> FarRow {
     let grid = far_grid(options);
     let mut rng = rng::seeded(options.seed_or(SEED) ^ distance.to_bits());
-    let d_hat = rng::unit_vector(&mut rng);
+    let d_hat = sphere_uniform(&mut rng);
     let (e1, e2) = d_hat.any_orthonormal_pair();
     let sphere = Sphere::new(FAR_CENTER.as_vec3(), 1.0);
     let c = FAR_CENTER;
@@ -481,8 +482,8 @@ pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, options: &Options) 
             uniform(&mut rng, -10.0, 10.0),
             uniform(&mut rng, -10.0, 10.0),
         );
-        let u = rng::unit_vector(&mut rng);
-        let mut dir = rng::unit_vector(&mut rng);
+        let u = sphere_uniform(&mut rng);
+        let mut dir = sphere_uniform(&mut rng);
         if dir.dot(u) < 0.0 {
             dir = -dir; // outward
         }

@@ -208,9 +208,10 @@ fn textbook_form_is_right_where_well_conditioned() {
     let mut rng = raylemma::rng::seeded(11);
     let mut hits = 0;
     for _ in 0..10_000 {
-        let origin = raylemma::rng::unit_vector(&mut rng) * 5.0;
-        let target =
-            raylemma::rng::unit_vector(&mut rng) * 1.5 * raylemma::rng::uniform(&mut rng, 0.0, 1.0);
+        let origin = raylemma::sampling::sphere::sphere_uniform(&mut rng) * 5.0;
+        let target = raylemma::sampling::sphere::sphere_uniform(&mut rng)
+            * 1.5
+            * raylemma::rng::uniform(&mut rng, 0.0, 1.0);
         let scale = raylemma::rng::log_uniform(&mut rng, 0.1, 10.0);
         let ray = Ray::new(origin, (target - origin) * scale);
         let sphere = Sphere::new(DVec3::new(0.1, -0.2, 0.3), 1.0);

@@ -5,6 +5,7 @@
 //! `(0, 0, -1)` that Duff et al.'s passes everywhere.
 
 use raylemma::check::max_abs;
+use raylemma::sampling::sphere::sphere_uniform;
 use std::f64::consts::TAU;
 
 use glam::{DVec3, Vec3};
@@ -67,7 +68,7 @@ fn worst64(normals: impl Iterator<Item = DVec3>, f: Construction) -> f64 {
 
 fn random_normals(seed: u64, n: usize) -> Vec<DVec3> {
     let mut r = rng::seeded(seed);
-    (0..n).map(|_| rng::unit_vector(&mut r)).collect()
+    (0..n).map(|_| sphere_uniform(&mut r)).collect()
 }
 
 // ---------------------------------------------------------------------------------------
@@ -198,7 +199,7 @@ fn round_trip_and_axes() {
             max_abs((z - DVec3::Z).to_array()) <= 4.0 * f64::EPSILON,
             "{n}: {z}"
         );
-        let v = rng::unit_vector(&mut r) * rng::log_uniform(&mut r, 1e-3, 1e3);
+        let v = sphere_uniform(&mut r) * rng::log_uniform(&mut r, 1e-3, 1e3);
         let back = f.to_world(f.to_local(v));
         assert!(
             (back - v).length() <= 8.0 * f64::EPSILON * v.length(),
@@ -219,7 +220,7 @@ fn round_trip_and_axes() {
 fn local_upper_hemisphere_maps_to_the_normals_side() {
     let mut r = rng::seeded(7);
     for n in random_normals(8, 10_000) {
-        let mut local = rng::unit_vector(&mut r);
+        let mut local = sphere_uniform(&mut r);
         local.z = local.z.abs().max(1e-6);
         let w = Frame::from_normal(n).to_world(local);
         assert!(w.dot(n) > 0.0);

@@ -203,7 +203,7 @@ fn single_precision_directions_are_unit() {
     // Normalising f32 vectors of every length from 1e-30 to 1e30.
     let mut r = raylemma::rng::seeded(0x5F33);
     let worst = max_abs((0..100_000).map(|_| {
-        let v = raylemma::rng::unit_vector(&mut r).as_vec3()
+        let v = raylemma::sampling::sphere::sphere_uniform(&mut r).as_vec3()
             * 10f32.powf(raylemma::rng::uniform(&mut r, -30.0, 30.0) as f32);
         let w = single::normalize_robust(v).expect("non-zero finite vector");
         (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)

@@ -2,6 +2,7 @@
 //! t-tests run at `raylemma::stats::test_alpha()` (Šidák across the suite), fixed seeds;
 //! each planted bug is a twin of a passing test that must be rejected.
 
+use raylemma::sampling::sphere::sphere_uniform;
 use std::f64::consts::{FRAC_1_PI, PI, TAU};
 
 use glam::{DVec2, DVec3};
@@ -91,7 +92,7 @@ fn albedo_of_rho_over_pi_is_rho_by_monte_carlo() {
 fn reciprocity() {
     let mut r = rng::seeded(12);
     for _ in 0..10_000 {
-        let (a, b) = (rng::unit_vector(&mut r), rng::unit_vector(&mut r));
+        let (a, b) = (sphere_uniform(&mut r), sphere_uniform(&mut r));
         assert_eq!(lambert_brdf(RHO, a, b), lambert_brdf(RHO, b, a));
     }
 }

@@ -6,6 +6,7 @@
 //! normalised by the area (and, for the sphere, normalised by the whole sphere instead of
 //! the visible cap).
 
+use raylemma::sampling::sphere::sphere_uniform;
 use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
@@ -294,11 +295,11 @@ fn sampled_pdf_equals_evaluated_pdf() {
     let mut rng = rng::seeded(30);
     // Shading points in front of the quad, from 1e-4 to 10 away from its plane.
     let front = |r: &mut Rng| {
-        let v = rng::unit_vector(r);
+        let v = sphere_uniform(r);
         DVec3::new(v.x * 3.0, v.y * 3.0, 1.2 - rng::log_uniform(r, 1e-4, 10.0))
     };
     // Shading points from 1e-6 to 1e3 radii outside the unit sphere.
-    let outside = |r: &mut Rng| rng::unit_vector(r) * (1.0 + rng::log_uniform(r, 1e-6, 1e3));
+    let outside = |r: &mut Rng| sphere_uniform(r) * (1.0 + rng::log_uniform(r, 1e-6, 1e3));
     let sph = SphereLight::new(DVec3::ZERO, 1.0).unwrap();
     let results = [
         ("quad", worst_pdf_mismatch(&quad(), &mut rng, front)),

@@ -1,5 +1,6 @@
 //! Figures and tables of the chapter *Tangent frames*.
 
+use raylemma::sampling::sphere::sphere_uniform;
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -123,7 +124,7 @@ fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 fn errors_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 10_000 } else { 100_000 };
     let mut r = rng::seeded(1);
-    let random: Vec<DVec3> = (0..n).map(|_| rng::unit_vector(&mut r)).collect();
+    let random: Vec<DVec3> = (0..n).map(|_| sphere_uniform(&mut r)).collect();
     let upper: Vec<DVec3> = random
         .iter()
         .map(|v| DVec3::new(v.x, v.y, v.z.abs()))

@@ -1,6 +1,7 @@
 //! Figures and tables of the chapters *Checking a sampler*, *Uniform sphere and
 //! hemisphere*, *The unit disc* and *Cosine-weighted hemisphere*.
 
+use raylemma::sampling::sphere::sphere_uniform;
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -224,7 +225,7 @@ fn single_precision(name: &str) -> (String, String) {
         "sphere, Gaussian" | "sphere, rejection" => {
             let mut r = rng::seeded(0x5F33);
             let worst = raylemma::check::max_abs((0..200_000).map(|_| {
-                let v = rng::unit_vector(&mut r).as_vec3()
+                let v = sphere_uniform(&mut r).as_vec3()
                     * 10f32.powf(rng::uniform(&mut r, -30.0, 30.0) as f32);
                 single::sphere::normalize_robust(v).map_or(f64::NAN, |w| {
                     (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
