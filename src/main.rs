@@ -29,8 +29,9 @@ struct Cli {
 enum Cmd {
     /// Regenerate every figure and generated table into figures/.
     Figures(cmd::figures::FiguresArgs),
-    /// Render every canonical scene into figures/reference/ (EXR, PNG, JSON), with the
-    /// noise-level table and the cornell scene's RMSE against time.
+    /// Render the canonical scenes whose references in figures/reference/ are out of date
+    /// (each records what it was made from), with the noise-level table and the cornell
+    /// scene's RMSE against time.
     References(cmd::figures::ReferencesArgs),
     /// Build the HTML book from chapters/ into book/ (mdBook as a library, math as MathML).
     Book,

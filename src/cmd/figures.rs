@@ -18,7 +18,15 @@ pub struct FiguresArgs {
 
 /// `raylemma references`.
 #[derive(Args, Debug)]
-pub struct ReferencesArgs {}
+pub struct ReferencesArgs {
+    /// Render every reference, current or not.
+    #[arg(long)]
+    pub force: bool,
+    /// Render nothing: exit with status 1, naming each reference that is out of date and
+    /// why, unless all are current (CI runs this).
+    #[arg(long, conflicts_with = "force")]
+    pub check: bool,
+}
 
 /// Regenerates the figures (all, or those whose name contains `only`).
 pub fn figures(args: &FiguresArgs, quick: bool) -> Result<(), String> {
@@ -32,9 +40,15 @@ pub fn figures(args: &FiguresArgs, quick: bool) -> Result<(), String> {
     run_tool("raylemma-figures", &cmd)
 }
 
-/// Renders the reference images.
-pub fn references(_: &ReferencesArgs, quick: bool) -> Result<(), String> {
+/// Renders the reference images that are out of date (or all, or checks them).
+pub fn references(args: &ReferencesArgs, quick: bool) -> Result<(), String> {
     let mut cmd = vec!["references"];
+    if args.force {
+        cmd.push("--force");
+    }
+    if args.check {
+        cmd.push("--check");
+    }
     if quick {
         cmd.push("--quick");
     }
@@ -45,7 +59,15 @@ pub fn references(_: &ReferencesArgs, quick: bool) -> Result<(), String> {
 pub fn everything(quick: bool) -> ExitCode {
     finish(
         figures(&FiguresArgs { only: None }, quick)
-            .and_then(|()| references(&ReferencesArgs {}, quick))
+            .and_then(|()| {
+                references(
+                    &ReferencesArgs {
+                        force: false,
+                        check: false,
+                    },
+                    quick,
+                )
+            })
             .and_then(|()| super::book::build()),
     )
 }

@@ -164,6 +164,7 @@ pub fn render_file(
         wavelengths: name.to_string(),
         seconds,
         threads: rayon::current_num_threads(),
+        made_from: None,
     };
     Ok((scene, image, sidecar))
 }

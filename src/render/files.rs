@@ -7,9 +7,10 @@
 
 use std::path::{Path, PathBuf};
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::image::Image;
+use super::provenance::MadeFrom;
 use crate::output::{self, FileError, FileSet};
 
 /// What a render was, for its JSON sidecar.
@@ -29,6 +30,8 @@ pub struct Sidecar {
     pub seconds: f64,
     /// Worker threads.
     pub threads: usize,
+    /// What the render was made from, for a reference render ([`MadeFrom`]).
+    pub made_from: Option<MadeFrom>,
 }
 
 /// The sidecar as written, key by key in the order of the renderer chapter.
@@ -48,6 +51,21 @@ struct Json<'a> {
     threads: usize,
     /// Rounded to an integer.
     pixel_samples_per_second: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    made_from: Option<&'a MadeFrom>,
+}
+
+/// The keys of a sidecar that are read back (by the reference job).
+#[derive(Deserialize)]
+struct Read {
+    scene: String,
+    scene_hash: String,
+    spp: u32,
+    seed: u64,
+    wavelengths: String,
+    seconds: f64,
+    threads: usize,
+    made_from: Option<MadeFrom>,
 }
 
 impl Sidecar {
@@ -68,11 +86,34 @@ impl Sidecar {
             threads: self.threads,
             // A float-to-integer `as` saturates (and takes NaN to 0).
             pixel_samples_per_second: (samples / self.seconds.max(1e-9)).round() as u64,
+            made_from: self.made_from.as_ref(),
         };
         // Serialising plain strings and numbers into a string cannot fail.
         let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
         text.push('\n');
         text
+    }
+
+    /// Reads a sidecar written by [`Sidecar::to_json`].
+    ///
+    /// # Errors
+    /// A [`FileError`] naming the file when it cannot be read or is not such a sidecar.
+    pub fn read(path: &Path) -> Result<Sidecar, FileError> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| FileError::new(path, format!("cannot read: {e}")))?;
+        let r: Read = serde_json::from_str(&text)
+            .map_err(|e| FileError::new(path, format!("not a render's sidecar: {e}")))?;
+        Ok(Sidecar {
+            scene: r.scene,
+            scene_hash: u64::from_str_radix(&r.scene_hash, 16)
+                .map_err(|e| FileError::new(path, format!("scene_hash: {e}")))?,
+            spp: r.spp,
+            seed: r.seed,
+            wavelengths: r.wavelengths,
+            seconds: r.seconds,
+            threads: r.threads,
+            made_from: r.made_from,
+        })
     }
 }
 

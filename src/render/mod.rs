@@ -27,6 +27,7 @@ pub mod format;
 pub mod image;
 pub mod integrator;
 pub mod pixel;
+pub mod provenance;
 pub mod scene;
 mod validate;
 

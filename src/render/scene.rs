@@ -41,6 +41,9 @@ pub struct Scene {
     pub environment: Option<Environment>,
     /// A 64-bit FNV-1a hash of the scene file's bytes, for the render's sidecar.
     pub hash: u64,
+    /// The data files the scene file made it read (spectrum tables), in order: with the
+    /// scene file, what a render is made from ([`super::provenance`]).
+    pub files: Vec<std::path::PathBuf>,
 }
 
 /// A pinhole camera.

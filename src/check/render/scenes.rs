@@ -147,6 +147,7 @@ fn floor_scene(side: u32, spp: u32, lights: Vec<Emitter>) -> Scene {
         lights,
         environment: None,
         hash: 0,
+        files: Vec::new(),
     }
 }
 
@@ -216,6 +217,7 @@ fn sky_scene(side: u32, spp: u32, material: Material, geometry: Geometry) -> Sce
         lights: Vec::new(),
         environment: Some(sky()),
         hash: 0,
+        files: Vec::new(),
     }
 }
 
@@ -321,5 +323,6 @@ pub fn everything(side: u32, spp: u32) -> Scene {
         lights: vec![quad_light(), sphere_light()],
         environment: Some(sky()),
         hash: 0,
+        files: Vec::new(),
     }
 }

@@ -32,6 +32,8 @@ struct Checker<'a> {
     file: &'a str,
     text: &'a str,
     dir: PathBuf,
+    /// The data files read so far, in order (the scene's provenance).
+    read: std::cell::RefCell<Vec<PathBuf>>,
 }
 
 /// Checks the raw tables `raw` of the scene file `file` (text `text`, folder `dir`), table
@@ -51,6 +53,7 @@ pub(super) fn scene(
         file,
         text,
         dir: dir.to_path_buf(),
+        read: std::cell::RefCell::new(Vec::new()),
     };
     let mut settings = ck.render(&raw.render)?;
     let camera = ck.camera(&raw.camera)?;
@@ -91,6 +94,7 @@ pub(super) fn scene(
         lights,
         environment,
         hash: fnv1a(text.as_bytes()),
+        files: ck.read.into_inner(),
     })
 }
 

@@ -184,6 +184,12 @@ impl Checker<'_> {
             );
         }
         let tables = spectrum::load_csv(&path)?;
+        {
+            let mut read = self.read.borrow_mut();
+            if !read.contains(&path) {
+                read.push(path.clone());
+            }
+        }
         let table: Table = match &raw.column {
             Some(c) => spectrum::column(&tables, c, &path.display().to_string())
                 .or_else(|e| self.err(span.clone(), format!("{what}: {}", e.problem)))?,

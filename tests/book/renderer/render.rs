@@ -525,6 +525,7 @@ fn sidecar_strings_are_valid_json() {
             wavelengths: "hero-visible".into(),
             seconds: 0.25,
             threads: 2,
+            made_from: None,
         };
         let text = sidecar.to_json(&image);
         assert!(text.contains(&format!("\"scene\": {written}")), "{text}");
@@ -568,6 +569,7 @@ fn a_failed_write_leaves_the_earlier_render_whole() {
         wavelengths: "hero-visible".into(),
         seconds: 1.0,
         threads: 1,
+        made_from: None,
     };
     let first = render(&s, 2, Progress::Silent);
     let [exr, png, json] = write_outputs(&dir, "tiny", &first, &sidecar(1)).unwrap();
@@ -604,4 +606,74 @@ fn a_failed_write_leaves_the_earlier_render_whole() {
             .contains("\"seed\": 2")
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn the_renderer_source_closure_holds_what_makes_pixels_and_nothing_of_the_checks() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let files: Vec<String> = raylemma::render::provenance::source_closure(root)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .iter()
+        .map(|f| f.display().to_string())
+        .collect();
+    for needed in [
+        "src/render/integrator.rs",
+        "src/render/pixel.rs",
+        "src/geometry/ray.rs",
+        "src/optics/fresnel.rs",
+        "src/sampling/cosine.rs",
+        "src/sampling/disc.rs",
+        "src/spectral/cie.rs",
+        "src/transport/shadow.rs",
+        "data/cie1931_2deg_cmf_1nm.csv",
+        "data/sellmeier.csv",
+        "Cargo.lock",
+    ] {
+        assert!(
+            files.iter().any(|f| f == needed),
+            "{needed} missing from {files:?}"
+        );
+    }
+    for unrelated in [
+        "src/check/",
+        "src/render/compare.rs",
+        "src/spectral/upsample.rs",
+        "src/stats/ks.rs",
+    ] {
+        assert!(
+            !files.iter().any(|f| f.starts_with(unrelated)),
+            "{unrelated} in {files:?}"
+        );
+    }
+}
+
+#[test]
+fn a_reference_record_names_what_changed() {
+    use raylemma::render::provenance::{MadeFrom, code_text, code_version};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let file = root.join("scenes/cornell.toml");
+    let scene = load("cornell.toml");
+    let code = code_version(root).unwrap_or_else(|e| panic!("{e}"));
+    let now = MadeFrom::of(root, &file, &scene, &code).unwrap_or_else(|e| panic!("{e}"));
+    assert!(now.differences(&now).is_empty());
+    assert!(
+        now.data
+            .iter()
+            .any(|d| d.file == "data/cornell_box_reflectance.csv"),
+        "{now:?}"
+    );
+    let mut old = now.clone();
+    old.code = "0".into();
+    old.settings.spp += 1;
+    old.data[0].fnv1a = "0".into();
+    let why = now.differences(&old).join("; ");
+    assert!(
+        why.contains("code") && why.contains("settings") && why.contains(&now.data[0].file),
+        "{why}"
+    );
+    // Comments and blank lines are not code: documentation edits keep references current.
+    assert_eq!(
+        code_text("let a = 1; // one\n\n// note\nlet b = 2;  "),
+        "let a = 1; // one\nlet b = 2;"
+    );
 }

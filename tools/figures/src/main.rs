@@ -62,9 +62,18 @@ enum Cmd {
         #[arg(long)]
         only: Option<String>,
     },
-    /// Render every canonical scene into figures/reference/ (EXR, PNG, JSON), with the
-    /// noise-level table and the cornell scene's RMSE against time.
-    References,
+    /// Render the canonical scenes whose references in figures/reference/ are out of date
+    /// (EXR, PNG, JSON, each recording what it was made from), with the noise-level table
+    /// and the cornell scene's RMSE against time.
+    References {
+        /// Render every reference, current or not.
+        #[arg(long)]
+        force: bool,
+        /// Render nothing: exit with status 1, naming each reference that is out of date
+        /// and why, unless all are current.
+        #[arg(long, conflicts_with = "force")]
+        check: bool,
+    },
 }
 
 fn main() -> ExitCode {
@@ -83,12 +92,39 @@ fn main() -> ExitCode {
             eprintln!("raylemma: regenerating figures into {}", dir.display());
             job::write_all(&dir, &settings, only.as_deref())
         }
-        Cmd::References => {
+        Cmd::References { check: true, .. } => {
+            return match render::stale_references(&dir, &settings) {
+                Ok(stale) if stale.is_empty() => {
+                    eprintln!(
+                        "raylemma: every reference in {} is current",
+                        dir.join("reference").display()
+                    );
+                    ExitCode::SUCCESS
+                }
+                Ok(stale) => {
+                    for (name, why) in &stale {
+                        eprintln!(
+                            "raylemma: figures/reference/{name}.exr is out of date: {}",
+                            why.join("; ")
+                        );
+                    }
+                    eprintln!(
+                        "raylemma: regenerate with `cargo run --release -- references` (it renders only these) and commit figures/"
+                    );
+                    ExitCode::FAILURE
+                }
+                Err(e) => {
+                    eprintln!("raylemma: error: {e}");
+                    ExitCode::from(2)
+                }
+            };
+        }
+        Cmd::References { force, .. } => {
             eprintln!(
-                "raylemma: rendering the reference images into {}",
+                "raylemma: the reference images in {}",
                 dir.join("reference").display()
             );
-            render::write_references(&dir, &settings)
+            render::write_references(&dir, &settings, *force)
         }
     };
     match result {

@@ -17,6 +17,7 @@ use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
 use raylemma::render::compare::{mse_against, noise_level};
 use raylemma::render::image::Image;
+use raylemma::render::provenance::{self, MadeFrom};
 use raylemma::render::scene::Scene;
 use raylemma::render::{self, Progress, Sidecar};
 use raylemma::spectral::display;
@@ -49,26 +50,98 @@ fn scenes_dir(settings: &Settings) -> PathBuf {
     settings.root.join("scenes")
 }
 
+/// What a reference is made from now (its scene at the job's samples per pixel).
+fn made_from_now(
+    file: &str,
+    settings: &Settings,
+    code: &(String, usize),
+) -> Result<(Scene, MadeFrom), BoxError> {
+    let path = scenes_dir(settings).join(file);
+    let mut s = render::load(&path)?;
+    s.settings.spp = reference_spp(&s, settings);
+    let now = MadeFrom::of(&settings.root, &path, &s, code)?;
+    Ok((s, now))
+}
+
+/// Why the committed reference `name` must be rendered again (empty when it is current):
+/// its files are missing, it has no record of what it was made from, or the record differs.
+fn staleness(figures: &Path, name: &str, now: &MadeFrom) -> Vec<String> {
+    let refs = figures.join("reference");
+    let [exr, png, json] = render::output_paths(&refs, name);
+    if !(exr.is_file() && png.is_file() && json.is_file()) {
+        return vec!["its files are missing".into()];
+    }
+    match Sidecar::read(&json) {
+        Err(e) => vec![format!("its sidecar cannot be read ({e})")],
+        Ok(Sidecar {
+            made_from: None, ..
+        }) => vec!["its sidecar has no record of what it was made from".into()],
+        Ok(Sidecar {
+            made_from: Some(recorded),
+            ..
+        }) => now.differences(&recorded),
+    }
+}
+
 fn render_one(
     name: &'static str,
     file: &'static str,
-    settings: &Settings,
+    scene: Scene,
+    made_from: MadeFrom,
 ) -> Result<Rendered, BoxError> {
-    let path = scenes_dir(settings).join(file);
-    let s = render::load(&path)?;
-    let spp = reference_spp(&s, settings);
     eprintln!(
-        "  {name}: {}x{}, {spp} spp",
-        s.camera.width, s.camera.height
+        "  {name}: {}x{}, {} spp",
+        scene.camera.width, scene.camera.height, scene.settings.spp
     );
-    let (_, image, mut sidecar) = render::render_file(&path, Some(spp), None, Progress::Bar)?;
-    sidecar.scene = format!("scenes/{file}");
+    let start = Instant::now();
+    let image = render::render(&scene, scene.settings.spp, Progress::Bar);
+    let sidecar = Sidecar {
+        scene: format!("scenes/{file}"),
+        scene_hash: scene.hash,
+        spp: scene.settings.spp,
+        seed: scene.settings.seed,
+        wavelengths: scene.settings.wavelengths.name().to_string(),
+        seconds: start.elapsed().as_secs_f64(),
+        threads: rayon::current_num_threads(),
+        made_from: Some(made_from),
+    };
     Ok(Rendered {
         name,
         scene_file: file,
         image,
         sidecar,
     })
+}
+
+/// The committed reference `name`, read back.
+fn read_one(figures: &Path, name: &'static str, file: &'static str) -> Result<Rendered, BoxError> {
+    let [exr, _, json] = render::output_paths(&figures.join("reference"), name);
+    Ok(Rendered {
+        name,
+        scene_file: file,
+        image: Image::read_exr(&exr)?,
+        sidecar: Sidecar::read(&json)?,
+    })
+}
+
+/// The canonical scenes whose committed references are out of date, each with why.
+///
+/// # Errors
+/// A scene file or data file that cannot be read.
+pub fn stale_references(
+    figures: &Path,
+    settings: &Settings,
+) -> Result<Vec<(&'static str, Vec<String>)>, BoxError> {
+    let code = provenance::code_version(&settings.root)?;
+    let mut stale = Vec::new();
+    for (name, file) in scenes() {
+        let (_, now) = made_from_now(file, settings, &code)?;
+        let why = staleness(figures, name, &now);
+        if !why.is_empty() {
+            stale.push((name, why));
+        }
+    }
+    Ok(stale)
 }
 
 /// The cornell scene at increasing sample counts: `(spp, seconds, RMSE)` against the
@@ -294,23 +367,57 @@ fn calibration_md(settings: &Settings) -> Result<String, BoxError> {
     Ok(md)
 }
 
-/// Renders every canonical scene and the speed series, and writes the results into
-/// `figures/reference/` and `figures/` as one set of files, which lands only when all
-/// succeeded.
+/// Renders every canonical scene whose committed reference is out of date (all of them
+/// with `force`), saying which it skips and why, then the speed series and the tables, and
+/// writes the results into `figures/reference/` and `figures/` as one set of files, which
+/// lands only when all succeeded. When every reference is current, nothing is rendered
+/// and the tables made from the renders are kept.
 ///
 /// # Errors
 /// The scene or file that failed; `figures/` is then unchanged.
-pub fn write_references(figures: &Path, settings: &Settings) -> Result<Vec<PathBuf>, BoxError> {
+pub fn write_references(
+    figures: &Path,
+    settings: &Settings,
+    force: bool,
+) -> Result<Vec<PathBuf>, BoxError> {
+    let code = provenance::code_version(&settings.root)?;
+    eprintln!(
+        "  the renderer's code version: {} ({} files of src/ and data/, and Cargo.lock)",
+        code.0, code.1
+    );
     let mut rendered = Vec::new();
+    let mut fresh = Vec::new();
     for (name, file) in scenes() {
-        rendered.push(render_one(name, file, settings)?);
+        let (scene, now) = made_from_now(file, settings, &code)?;
+        let why = staleness(figures, name, &now);
+        if why.is_empty() && !force {
+            eprintln!(
+                "  {name}: current (its scene, data, the renderer's code and the settings are as recorded): kept"
+            );
+            rendered.push(read_one(figures, name, file)?);
+        } else {
+            let why = if force {
+                "--force".to_string()
+            } else {
+                why.join("; ")
+            };
+            eprintln!("  {name}: rendering ({why})");
+            fresh.push(name);
+            rendered.push(render_one(name, file, scene, now)?);
+        }
+    }
+    if fresh.is_empty() {
+        eprintln!(
+            "  every reference is current: the noise table, the RMSE against time and the calibration of compare are kept (`references --force` renders them all)"
+        );
+        return Ok(Vec::new());
     }
     eprintln!("  cornell: RMSE against time");
     let series = speed_series(&rendered[0].image, settings)?;
     eprintln!("  compare: false alarms and power over pairs of renders");
     let mut files = FileSet::new();
     let refs = figures.join("reference");
-    for r in &rendered {
+    for r in rendered.iter().filter(|r| fresh.contains(&r.name)) {
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
     let flat: [(&str, Vec<u8>); 5] = [
