@@ -48,10 +48,14 @@ pub struct Parallelogram {
     corner: DVec3,
     e1: DVec3,
     e2: DVec3,
-    /// `e1 x e2`.
-    cross: DVec3,
     normal: DVec3,
     area: f64,
+    /// `n . corner`: the plane is `n . p = plane`.
+    plane: f64,
+    /// The dual basis of the edges in the plane: `a = q . dual_a`, `b = q . dual_b` for a
+    /// point `corner + q` of the plane.
+    dual_a: DVec3,
+    dual_b: DVec3,
 }
 
 impl Parallelogram {
@@ -80,13 +84,17 @@ impl Parallelogram {
         if area.is_nan() || area <= 1e-12 * l1 * l2 || area.is_infinite() {
             return Err(Degenerate::ParallelEdges);
         }
+        let normal = cross / area;
+        let cc = cross.length_squared();
         Ok(Self {
             corner,
             e1,
             e2,
-            cross,
-            normal: cross / area,
+            normal,
             area,
+            plane: normal.dot(corner),
+            dual_a: e2.cross(cross) / cc,
+            dual_b: cross.cross(e1) / cc,
         })
     }
     // ANCHOR_END: new
@@ -117,6 +125,13 @@ impl Parallelogram {
         self.normal
     }
 
+    /// The plane and the dual basis [`Parallelogram::hit_before`] tests with: the unit
+    /// normal `n`, `n . corner`, and the dual vectors of the edges (for a renderer that
+    /// keeps them in arrays of its own).
+    pub fn plane_and_duals(&self) -> (DVec3, f64, DVec3, DVec3) {
+        (self.normal, self.plane, self.dual_a, self.dual_b)
+    }
+
     /// The area `|e1 x e2|`.
     pub fn area(&self) -> f64 {
         self.area
@@ -132,20 +147,27 @@ impl Parallelogram {
 
     // ANCHOR: hit
     /// Where the ray `o + t d` meets the parallelogram, from either side: the `t > 0`
-    /// (finite; in units of `|d|`), or `None`. The ray meets the plane at
-    /// `t = n . (corner - o) / (n . d)`; the hit's coordinates in the edge basis are
-    /// `a = ((q x e2) . c) / c.c` and `b = ((e1 x q) . c) / c.c` with `q = o + t d - corner`
-    /// and `c = e1 x e2`, and it is inside when both are in `[0, 1]`. A ray parallel to the
-    /// plane (`n . d = 0`) gives an infinite or NaN `t`: a miss.
+    /// (finite; in units of `|d|`), or `None`. The ray meets the plane `n . p = n . c`
+    /// (`c` the corner) at `t = (n . c - n . o) / (n . d)`. The point's coordinates in the
+    /// edge basis, `q = o + t d - c = a e1 + b e2`, are read off with the dual basis: with
+    /// `k = e1 x e2`, `a = q . (e2 x k) / (k . k)` and `b = q . (k x e1) / (k . k)` (each
+    /// dual vector is perpendicular to the other edge and to the normal, and has a dot
+    /// product of 1 with its own edge), both precomputed, so a test costs three dot
+    /// products. Inside when both are in `[0, 1]`. A ray parallel to the plane
+    /// (`n . d = 0`) gives an infinite or NaN `t`: a miss.
     pub fn hit(&self, o: DVec3, d: DVec3) -> Option<f64> {
-        let t = self.normal.dot(self.corner - o) / self.normal.dot(d);
-        if !(t > 0.0 && t.is_finite()) {
+        self.hit_before(o, d, f64::INFINITY)
+    }
+
+    /// [`Parallelogram::hit`], for a hit nearer than `t_max` only (the renderer's nearest
+    /// hit so far): beyond it, the point is not computed at all.
+    pub fn hit_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<f64> {
+        let t = (self.plane - self.normal.dot(o)) / self.normal.dot(d);
+        if !(t > 0.0 && t < t_max && t.is_finite()) {
             return None;
         }
         let q = o + t * d - self.corner;
-        let cc = self.cross.length_squared();
-        let a = q.cross(self.e2).dot(self.cross) / cc;
-        let b = self.e1.cross(q).dot(self.cross) / cc;
+        let (a, b) = (q.dot(self.dual_a), q.dot(self.dual_b));
         ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)).then_some(t)
     }
     // ANCHOR_END: hit

@@ -17,6 +17,7 @@ use super::format;
 use super::image::{Image, Welford};
 use super::pixel::{WavelengthSampler, render_pixel};
 use super::scene::Scene;
+use super::tracer::Tracer;
 
 /// The side of the square tiles the image is split into for the worker threads.
 pub const TILE: u32 = 16;
@@ -90,6 +91,7 @@ pub fn render_window(
     sampler: WavelengthSampler,
 ) -> Image {
     let camera = Camera::new(&scene.camera);
+    let tracer = Tracer::new(scene);
     let (w, h) = (window.width, window.height);
     let tiles: Vec<(u32, u32)> = (0..h.div_ceil(TILE))
         .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
@@ -113,7 +115,7 @@ pub fn render_window(
                 for x in x0..(x0 + TILE).min(w) {
                     let idx = y as usize * w as usize + x as usize;
                     let pixel = (window.x + x, window.y + y);
-                    out.push((idx, render_pixel(scene, &camera, sampler, pixel, spp)));
+                    out.push((idx, render_pixel(&tracer, &camera, sampler, pixel, spp)));
                 }
             }
             bar.inc(1);

@@ -17,7 +17,8 @@ use std::f64::consts::FRAC_1_PI;
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 
-use super::scene::{DirectLight, Emitter, Ior, Material, Scene, Surface};
+use super::scene::{DirectLight, Emitter, Ior, Material, Surface};
+use super::tracer::Tracer;
 use crate::optics::fresnel::fresnel_dielectric;
 use crate::optics::reflect::{reflect, refract};
 use crate::optics::thinfilm::Film;
@@ -61,11 +62,32 @@ fn emission(e: &Emitter, wl: &Wavelengths) -> Lanes {
     lanes(|j| e.emission.eval(wl.lambda[j]))
 }
 
+/// Spectra evaluated at the path's wavelengths once per path: a path's wavelengths never
+/// change (a dispersive refraction only ends the secondary lanes), so the reflectance of
+/// material `i` and the emission of light `i` are the same at every bounce. The first
+/// `K` of each are kept; any beyond are evaluated each time.
+struct PerPath<const K: usize>([Option<Lanes>; K]);
+
+impl<const K: usize> PerPath<K> {
+    fn new() -> Self {
+        PerPath([None; K])
+    }
+
+    /// Entry `i`, evaluated by `eval` the first time.
+    fn get(&mut self, i: usize, eval: impl FnOnce() -> Lanes) -> Lanes {
+        match self.0.get_mut(i) {
+            Some(slot) => *slot.get_or_insert_with(eval),
+            None => eval(),
+        }
+    }
+}
+
 // ANCHOR: radiance
 /// The radiance arriving at `o` from the direction `-d` (`d` of unit length), at the
 /// wavelengths `wl`, estimated along one path. `wl` may be changed: a dispersive
 /// refraction terminates the secondary lanes.
-pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &mut Rng) -> Lanes {
+pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &mut Rng) -> Lanes {
+    let scene = tracer.scene;
     let s = &scene.settings;
     let mut l = [0.0; N];
     let mut beta = [1.0; N];
@@ -74,8 +96,9 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
     // the camera), where a light that is hit counts in full.
     let mut bsdf_pdf: Option<f64> = None;
     let light_choice = 1.0 / scene.lights.len().max(1) as f64;
+    let (mut reflectances, mut emissions) = (PerPath::<8>::new(), PerPath::<4>::new());
     for depth in 0..=s.max_depth {
-        let Some(hit) = scene.intersect(o, d) else {
+        let Some(hit) = tracer.intersect(o, d) else {
             if let Some(env) = &scene.environment {
                 for j in 0..N {
                     l[j] += beta[j] * env.eval(d, wl.lambda[j]);
@@ -97,7 +120,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                             h.weight(pb, pl)
                         }
                     };
-                    let le = emission(&scene.lights[k], wl);
+                    let le = emissions.get(k, || emission(&scene.lights[k], wl));
                     for j in 0..N {
                         l[j] += w * beta[j] * le[j];
                     }
@@ -113,7 +136,8 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
             Material::Lambert { reflectance } => {
                 // Shade on the side the ray arrived from (two-sided).
                 let n = if n.dot(d) < 0.0 { n } else { -n };
-                let rho = lanes(|j| reflectance.eval(wl.lambda[j]));
+                let material = scene.shapes[i].material;
+                let rho = reflectances.get(material, || lanes(|j| reflectance.eval(wl.lambda[j])));
                 let po = offset_origin(p, n, n);
                 let (u_pick, u_light, u_bsdf) = (
                     rng.random::<f64>(),
@@ -129,8 +153,8 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                         let cos = n.dot(ls.dir);
                         if cos > 0.0
                             && ls.cos_light < 0.0
-                            && scene
-                                .intersect(po, ls.dir)
+                            && tracer
+                                .intersect_before(po, ls.dir, ls.dist * (1.0 + 1e-9))
                                 .is_some_and(|h| h.surface == Surface::Light(k))
                         {
                             let pl = light_choice * ls.pdf;
@@ -138,7 +162,7 @@ pub fn radiance(scene: &Scene, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &m
                                 DirectLight::Mis(h) => h.weight(pl, cos * FRAC_1_PI),
                                 _ => 1.0,
                             };
-                            let le = emission(light, wl);
+                            let le = emissions.get(k, || emission(light, wl));
                             for j in 0..N {
                                 l[j] += beta[j] * rho[j] * FRAC_1_PI * le[j] * cos * w / pl;
                             }

@@ -29,6 +29,7 @@ pub mod integrator;
 pub mod pixel;
 pub mod provenance;
 pub mod scene;
+pub mod tracer;
 mod validate;
 
 pub use driver::{Progress, TILE, Window, render, render_file, render_window, render_with};

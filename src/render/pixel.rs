@@ -9,7 +9,7 @@ use rand::RngExt;
 use super::camera::Camera;
 use super::image::Welford;
 use super::integrator::{self, Lanes};
-use super::scene::Scene;
+use super::tracer::Tracer;
 use crate::rng::Rng;
 use crate::spectral::cie;
 use crate::spectral::wavelength::{N, Wavelengths};
@@ -46,12 +46,13 @@ pub type WavelengthSampler<'a> = &'a (dyn Fn(f64) -> Wavelengths + Sync);
 
 /// Renders pixel `(x, y)` with `spp` samples: the mean and variance of its linear sRGB.
 pub fn render_pixel(
-    scene: &Scene,
+    tracer: &Tracer,
     camera: &Camera,
     sampler: WavelengthSampler,
     (x, y): (u32, u32),
     spp: u32,
 ) -> Welford {
+    let scene = tracer.scene;
     let to_rgb = cie::xyz_to_linear_srgb_matrix();
     let w = scene.camera.width;
     let mut rng = pixel_rng(
@@ -63,7 +64,7 @@ pub fn render_pixel(
         let jitter = DVec2::new(rng.random(), rng.random());
         let ray = camera.ray(x, y, jitter);
         let mut wl = sampler(rng.random());
-        let l = integrator::radiance(scene, ray.origin, ray.dir, &mut wl, &mut rng);
+        let l = integrator::radiance(tracer, ray.origin, ray.dir, &mut wl, &mut rng);
         acc.push(to_rgb * sample_xyz(&l, &wl));
     }
     acc

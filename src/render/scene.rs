@@ -300,31 +300,43 @@ impl Scene {
     /// The first shape or light along the ray from `o` in the unit direction `d`.
     /// A linear loop: the canonical scenes have at most a dozen surfaces.
     pub fn intersect(&self, o: DVec3, d: DVec3) -> Option<Hit> {
+        self.intersect_before(o, d, f64::INFINITY)
+    }
+
+    /// The first shape or light along the ray nearer than `t_max`. Each parallelogram is
+    /// tested only against the nearest hit found so far ([`Parallelogram::hit_before`]),
+    /// so that one behind it costs a single dot product and a division.
+    pub fn intersect_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<Hit> {
         let mut best: Option<Hit> = None;
-        let mut consider = |t: Option<f64>, surface| {
-            if let Some(t) = t
-                && t > 0.0
-                && best.is_none_or(|b| t < b.t)
-            {
-                best = Some(Hit { t, surface });
-            }
-        };
+        let mut nearest = t_max;
         let ray = Ray::new(o, d);
         for (i, s) in self.shapes.iter().enumerate() {
             let t = match &s.geometry {
                 Geometry::Sphere(sp) => intersect_stable(&ray, sp, 0.0),
-                Geometry::Quad(q) => q.hit(o, d),
+                Geometry::Quad(q) => q.hit_before(o, d, nearest),
             };
-            consider(t, Surface::Shape(i));
+            if let Some(t) = t.filter(|&t| t > 0.0 && t < nearest) {
+                nearest = t;
+                best = Some(Hit {
+                    t,
+                    surface: Surface::Shape(i),
+                });
+            }
         }
         for (i, l) in self.lights.iter().enumerate() {
             let t = match &l.shape {
                 LightShape::Sphere(sp) => {
                     intersect_stable(&ray, &Sphere::new(sp.center(), sp.radius()), 0.0)
                 }
-                LightShape::Quad(q) => q.shape().hit(o, d),
+                LightShape::Quad(q) => q.shape().hit_before(o, d, nearest),
             };
-            consider(t, Surface::Light(i));
+            if let Some(t) = t.filter(|&t| t > 0.0 && t < nearest) {
+                nearest = t;
+                best = Some(Hit {
+                    t,
+                    surface: Surface::Light(i),
+                });
+            }
         }
         best
     }

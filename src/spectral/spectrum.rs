@@ -29,6 +29,19 @@ pub const WIEN_B: f64 = 2.897_771_955e-3;
 pub struct Table {
     nm: Vec<f64>,
     values: Vec<f64>,
+    /// `1 / step` when the wavelengths are evenly spaced (as most measured tables are),
+    /// so that [`Table::eval`] finds a segment by one multiplication instead of a binary
+    /// search.
+    inv_step: Option<f64>,
+}
+
+/// `1 / step` if the knots `nm` are evenly spaced (every step within `1e-9` of the first),
+/// else `None`.
+fn even_spacing(nm: &[f64]) -> Option<f64> {
+    let step = nm[1] - nm[0];
+    nm.windows(2)
+        .all(|w| ((w[1] - w[0]) - step).abs() <= 1e-9 * step)
+        .then_some(1.0 / step)
 }
 
 impl Table {
@@ -63,7 +76,12 @@ impl Table {
                 ));
             }
         }
-        Ok(Table { nm, values })
+        let inv_step = even_spacing(&nm);
+        Ok(Table {
+            nm,
+            values,
+            inv_step,
+        })
     }
 
     /// The value at `nm`: linear interpolation, zero outside the table.
@@ -74,13 +92,46 @@ impl Table {
             return 0.0;
         }
         // The first knot strictly above nm; nm == last lands in the final segment.
-        let hi = self.nm.partition_point(|&x| x <= nm).min(self.nm.len() - 1);
+        let hi = self.segment_end(nm);
         let lo = hi - 1;
         let t = (nm - self.nm[lo]) / (self.nm[hi] - self.nm[lo]);
         // This form returns the knot values exactly at t = 0 and t = 1 (the last knot).
         (1.0 - t) * self.values[lo] + t * self.values[hi]
     }
     // ANCHOR_END: table
+
+    /// The index of the first knot strictly above `nm` (at most the last one), for `nm`
+    /// inside the table: the binary search's answer, `partition_point(|x| x <= nm)`. On
+    /// evenly spaced knots it is computed from `(nm - nm[0]) / step` and then moved by one
+    /// where rounding put it on the wrong side of a knot, so that both ways pick the same
+    /// segment and give the same value to the last bit (a test checks it).
+    fn segment_end(&self, nm: f64) -> usize {
+        let n = self.nm.len();
+        let Some(inv) = self.inv_step else {
+            return self.nm.partition_point(|&x| x <= nm).min(n - 1);
+        };
+        let mut hi = (((nm - self.nm[0]) * inv) as usize + 1).min(n - 1);
+        // Rounding can only put it one knot off.
+        if hi > 1 && self.nm[hi - 1] > nm {
+            hi -= 1;
+        } else if hi < n - 1 && self.nm[hi] <= nm {
+            hi += 1;
+        }
+        hi
+    }
+
+    /// [`Table::eval`] by the binary search alone, whatever the spacing (the form the
+    /// even-spacing shortcut must agree with).
+    pub fn eval_by_search(&self, nm: f64) -> f64 {
+        let (first, last) = (self.nm[0], self.nm[self.nm.len() - 1]);
+        if !(nm >= first && nm <= last) {
+            return 0.0;
+        }
+        let hi = self.nm.partition_point(|&x| x <= nm).min(self.nm.len() - 1);
+        let lo = hi - 1;
+        let t = (nm - self.nm[lo]) / (self.nm[hi] - self.nm[lo]);
+        (1.0 - t) * self.values[lo] + t * self.values[hi]
+    }
 
     /// The wavelengths, nm.
     pub fn wavelengths(&self) -> &[f64] {
@@ -96,6 +147,7 @@ impl Table {
     pub fn scaled(&self, k: f64) -> Table {
         Table {
             nm: self.nm.clone(),
+            inv_step: self.inv_step,
             values: self.values.iter().map(|v| v * k).collect(),
         }
     }

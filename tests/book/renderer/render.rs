@@ -12,6 +12,7 @@
 use std::path::Path;
 
 use glam::{DVec2, DVec3};
+use rand::RngExt;
 use raylemma::geometry::Parallelogram;
 use raylemma::render::compare::{compare, two_sided_critical};
 use raylemma::render::image::{Image, Welford};
@@ -676,4 +677,49 @@ fn a_reference_record_names_what_changed() {
         code_text("let a = 1; // one\n\n// note\nlet b = 2;  "),
         "let a = 1; // one\nlet b = 2;"
     );
+}
+
+#[test]
+fn the_tracer_finds_the_first_surface_the_book_loop_finds() {
+    // The tracer (flat arrays, the axis-aligned form of a box's walls) against the book's
+    // loop over the shapes and lights, on rays from random points in every canonical
+    // scene's bounds towards random directions, and from the camera.
+    use raylemma::render::tracer::Tracer;
+    let mut rng = rng::seeded(0x7ace);
+    for name in [
+        "cornell.toml",
+        "dispersion.toml",
+        "bubble.toml",
+        "furnace-grey.toml",
+    ] {
+        let s = load(name);
+        let tracer = Tracer::new(&s);
+        let camera = raylemma::render::camera::Camera::new(&s.camera);
+        let mut agree = 0;
+        for k in 0..20_000 {
+            let (o, d) = if k % 2 == 0 {
+                let r = camera.ray(
+                    (k / 2) as u32 % s.camera.width,
+                    (k / 2) as u32 / s.camera.width % s.camera.height,
+                    DVec2::new(rng.random(), rng.random()),
+                );
+                (r.origin, r.dir)
+            } else {
+                let c = s.camera.look_at;
+                let o = c + 300.0
+                    * raylemma::sampling::sphere::sphere_uniform(&mut rng)
+                    * rng.random::<f64>();
+                (o, raylemma::sampling::sphere::sphere_uniform(&mut rng))
+            };
+            let (book, fast) = (s.intersect(o, d), tracer.intersect(o, d));
+            match (book, fast) {
+                (Some(b), Some(f)) if b.surface == f.surface && b.t == f.t => agree += 1,
+                (None, None) => agree += 1,
+                _ => panic!(
+                    "{name}: ray {o} {d}: the book's loop finds {book:?}, the tracer {fast:?}"
+                ),
+            }
+        }
+        assert_eq!(agree, 20_000);
+    }
 }

@@ -845,3 +845,39 @@ fn missing_files_and_columns_are_refused() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/cie_illuminant_A.csv");
     assert!(load_csv(&path).is_ok());
 }
+
+#[test]
+fn evenly_spaced_tables_find_their_segment_as_the_binary_search_does() {
+    // Every built-in table, the two Cornell tables, and an unevenly spaced one: at every
+    // knot, half-way between knots, just beside each knot, outside, and at random points,
+    // the shortcut and the binary search give the same value to the last bit.
+    let mut tables: Vec<Table> = raylemma::spectral::spectrum::BUILTIN
+        .iter()
+        .map(|(name, _)| builtin(name))
+        .collect();
+    tables.push(Table::new(vec![400.0, 401.5, 450.0, 700.0], vec![0.1, 0.5, 0.2, 0.9]).unwrap());
+    let mut rng = raylemma::rng::seeded(0x7ab1e);
+    for t in &tables {
+        let nm = t.wavelengths();
+        let mut points: Vec<f64> = Vec::new();
+        for w in nm.windows(2) {
+            points.extend([w[0], (w[0] + w[1]) / 2.0, w[0].next_down(), w[0].next_up()]);
+        }
+        let last = nm[nm.len() - 1];
+        points.extend([
+            last,
+            last.next_down(),
+            last.next_up(),
+            nm[0] - 1.0,
+            f64::NAN,
+        ]);
+        points.extend((0..2000).map(|_| raylemma::rng::uniform(&mut rng, 350.0, 850.0)));
+        for x in points {
+            let (fast, search) = (t.eval(x), t.eval_by_search(x));
+            assert!(
+                fast.to_bits() == search.to_bits(),
+                "at {x} nm: {fast} against the binary search's {search}"
+            );
+        }
+    }
+}

@@ -1,0 +1,192 @@
+//! The surfaces of a scene laid out for fast intersection. Chapter: *The reference
+//! renderer* (`chapters/renderer/renderer.md`, *Speed*).
+//!
+//! [`super::scene::Scene::intersect`] is the book's form: a loop over the shapes and the
+//! lights, each matched by kind. Most of a path's time goes there, so the renderer traces
+//! through a [`Tracer`], made once per render, which keeps every parallelogram (shape or
+//! light) in flat arrays of its plane and dual basis (the same numbers
+//! [`crate::geometry::parallelogram::Parallelogram::hit_before`] uses, by the same
+//! formulas), a box's walls, whose normal and edges lie along the axes, in the cheaper
+//! form of [`AxisQuad`], and every sphere in another array. It finds the same first
+//! surface at the same distance as the book's loop, but for rays that graze a
+//! parallelogram's edge to within rounding: `tests/book/renderer/render.rs` compares the
+//! two on many rays.
+
+use glam::DVec3;
+
+use super::scene::{Geometry, Hit, LightShape, Scene, Surface};
+use crate::geometry::Ray;
+use crate::geometry::parallelogram::Parallelogram;
+use crate::geometry::sphere::{Sphere, intersect_stable};
+
+/// The parallelograms of a scene, one array per number: plane `n . p = plane`, corner
+/// `c`, dual basis `a`, `b` ([`crate::geometry::parallelogram::Parallelogram`]).
+#[derive(Clone, Debug, Default)]
+struct Quads {
+    n: Vec<DVec3>,
+    plane: Vec<f64>,
+    corner: Vec<DVec3>,
+    dual_a: Vec<DVec3>,
+    dual_b: Vec<DVec3>,
+    surface: Vec<Surface>,
+}
+
+// ANCHOR: axis_quad
+/// A parallelogram whose normal and edges lie along the axes (a wall of a box): the plane
+/// `p[k] = at`, and the rectangle `lo <= (p[i], p[j]) <= hi` in it, `(i, j)` the other two
+/// axes. The ray meets the plane at `t = (at - o[k]) / d[k]`, the general form's `t` to
+/// the last bit (its normal is `e_k` exactly), and is inside when the two other
+/// coordinates of `o + t d` are within the bounds: two comparisons each instead of two
+/// dot products.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct AxisQuad {
+    k: usize,
+    at: f64,
+    i: usize,
+    j: usize,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    surface: Surface,
+}
+
+impl AxisQuad {
+    /// The axis-aligned form of `q`, if it has one.
+    fn of(q: &Parallelogram, surface: Surface) -> Option<Self> {
+        let axis_of = |v: DVec3| {
+            let a = v.to_array();
+            let nonzero: Vec<usize> = (0..3).filter(|&c| a[c] != 0.0).collect();
+            (nonzero.len() == 1).then(|| nonzero[0])
+        };
+        let [e1, e2] = q.edges();
+        let (k, i, j) = (axis_of(q.normal())?, axis_of(e1)?, axis_of(e2)?);
+        let (c, far) = (q.corner().to_array(), (q.corner() + e1 + e2).to_array());
+        let (i, j) = (i.min(j), i.max(j));
+        Some(AxisQuad {
+            k,
+            at: c[k],
+            i,
+            j,
+            lo: [c[i].min(far[i]), c[j].min(far[j])],
+            hi: [c[i].max(far[i]), c[j].max(far[j])],
+            surface,
+        })
+    }
+
+    #[inline]
+    fn hit(&self, o: [f64; 3], d: [f64; 3], nearest: f64) -> Option<f64> {
+        let t = (self.at - o[self.k]) / d[self.k];
+        if !(t > 0.0 && t < nearest && t.is_finite()) {
+            return None;
+        }
+        let (pi, pj) = (o[self.i] + t * d[self.i], o[self.j] + t * d[self.j]);
+        (pi >= self.lo[0] && pi <= self.hi[0] && pj >= self.lo[1] && pj <= self.hi[1]).then_some(t)
+    }
+}
+// ANCHOR_END: axis_quad
+
+/// A scene's surfaces for tracing, and the scene.
+#[derive(Clone, Debug)]
+pub struct Tracer<'a> {
+    /// The scene (materials, lights, settings).
+    pub scene: &'a Scene,
+    axis_quads: Vec<AxisQuad>,
+    quads: Quads,
+    spheres: Vec<(Sphere, Surface)>,
+}
+
+impl<'a> Tracer<'a> {
+    /// The tracer of `scene`: its shapes, then its lights, in the scene's order.
+    pub fn new(scene: &'a Scene) -> Self {
+        let mut quads = Quads::default();
+        let mut axis_quads = Vec::new();
+        let mut spheres = Vec::new();
+        let mut add_quad = |q: &Parallelogram, s| {
+            if let Some(a) = AxisQuad::of(q, s) {
+                axis_quads.push(a);
+                return;
+            }
+            let (n, plane, dual_a, dual_b) = q.plane_and_duals();
+            quads.n.push(n);
+            quads.plane.push(plane);
+            quads.corner.push(q.corner());
+            quads.dual_a.push(dual_a);
+            quads.dual_b.push(dual_b);
+            quads.surface.push(s);
+        };
+        for (i, s) in scene.shapes.iter().enumerate() {
+            match &s.geometry {
+                Geometry::Quad(q) => add_quad(q, Surface::Shape(i)),
+                Geometry::Sphere(sp) => spheres.push((*sp, Surface::Shape(i))),
+            }
+        }
+        for (i, l) in scene.lights.iter().enumerate() {
+            match &l.shape {
+                LightShape::Quad(q) => add_quad(q.shape(), Surface::Light(i)),
+                LightShape::Sphere(sp) => {
+                    spheres.push((Sphere::new(sp.center(), sp.radius()), Surface::Light(i)))
+                }
+            }
+        }
+        Tracer {
+            scene,
+            axis_quads,
+            quads,
+            spheres,
+        }
+    }
+
+    /// The first surface along the ray from `o` in the unit direction `d`.
+    pub fn intersect(&self, o: DVec3, d: DVec3) -> Option<Hit> {
+        self.intersect_before(o, d, f64::INFINITY)
+    }
+
+    /// The first surface along the ray nearer than `t_max` ([`Scene::intersect_before`],
+    /// the same answer).
+    #[inline]
+    pub fn intersect_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<Hit> {
+        let (oa, da) = (o.to_array(), d.to_array());
+        let mut nearest = t_max;
+        let mut hit = None;
+        for a in &self.axis_quads {
+            if let Some(t) = a.hit(oa, da, nearest) {
+                nearest = t;
+                hit = Some(Hit {
+                    t,
+                    surface: a.surface,
+                });
+            }
+        }
+        let q = &self.quads;
+        let mut best = usize::MAX;
+        for i in 0..q.n.len() {
+            let n = q.n[i];
+            let t = (q.plane[i] - n.dot(o)) / n.dot(d);
+            if t > 0.0 && t < nearest && t.is_finite() {
+                let p = o + t * d - q.corner[i];
+                let (a, b) = (p.dot(q.dual_a[i]), p.dot(q.dual_b[i]));
+                if (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) {
+                    nearest = t;
+                    best = i;
+                }
+            }
+        }
+        if best != usize::MAX {
+            hit = Some(Hit {
+                t: nearest,
+                surface: q.surface[best],
+            });
+        }
+        let ray = Ray::new(o, d);
+        for (sphere, surface) in &self.spheres {
+            if let Some(t) = intersect_stable(&ray, sphere, 0.0).filter(|&t| t > 0.0 && t < nearest)
+            {
+                nearest = t;
+                hit = Some(Hit {
+                    t,
+                    surface: *surface,
+                });
+            }
+        }
+        hit
+    }
+}
