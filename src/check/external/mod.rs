@@ -10,7 +10,7 @@
 //! # The protocol
 //!
 //! The checker runs the program with `sh -c COMMAND` (so the command may hold arguments
-//! and quotes), in the current folder, with its error output passed through. It runs it a
+//! and quotes), in the current folder (or the program's `dir`), with its error output passed through. It runs it a
 //! few times; each time it writes questions to the program's standard input, one a line,
 //! and closes it. The program writes one answer line per question, in order, and exits
 //! with status 0. It may answer as it reads or read everything first, and need not flush
@@ -50,6 +50,7 @@ mod run;
 mod sampler;
 mod text;
 
+use std::path::PathBuf;
 use std::time::Duration;
 
 pub use optics::{Function, fresnel, fresnel_questions, refraction, refraction_questions};
@@ -71,6 +72,8 @@ pub struct Program {
     pub command: String,
     /// How long one run may take.
     pub timeout: Duration,
+    /// The folder it runs in (`None`: the current one).
+    pub dir: Option<PathBuf>,
 }
 
 impl Program {
@@ -79,11 +82,20 @@ impl Program {
         Self {
             command: command.into(),
             timeout: TIMEOUT,
+            dir: None,
         }
     }
 
     /// The same program with another timeout per run.
     pub fn timeout(self, timeout: Duration) -> Self {
         Self { timeout, ..self }
+    }
+
+    /// The same program, run in the folder `dir`.
+    pub fn in_dir(self, dir: impl Into<PathBuf>) -> Self {
+        Self {
+            dir: Some(dir.into()),
+            ..self
+        }
     }
 }

@@ -29,7 +29,13 @@ impl Program {
             input.push_str(q);
             input.push('\n');
         }
-        let mut child = spawn(command).map_err(|e| whole(format!("cannot start `sh -c`: {e}")))?;
+        let mut child = spawn(command, self.dir.as_deref()).map_err(|e| {
+            let place = self.dir.as_ref().map(|d| format!(" in {}", d.display()));
+            whole(format!(
+                "cannot start `sh -c`{}: {e}",
+                place.unwrap_or_default()
+            ))
+        })?;
         let (Some(mut stdin), Some(mut stdout)) = (child.stdin.take(), child.stdout.take()) else {
             kill(&mut child);
             return Err(whole(
@@ -140,9 +146,13 @@ fn lines(text: &str) -> Vec<&str> {
 }
 
 /// `sh -c COMMAND` with piped standard input and output, its error output passed through,
-/// in a process group of its own (so that a timeout kills whatever it started).
-fn spawn(command: &str) -> std::io::Result<Child> {
+/// in a process group of its own (so that a timeout kills whatever it started), in `dir`
+/// if given.
+fn spawn(command: &str, dir: Option<&std::path::Path>) -> std::io::Result<Child> {
     let mut sh = Command::new("sh");
+    if let Some(dir) = dir {
+        sh.current_dir(dir);
+    }
     sh.arg("-c")
         .arg(command)
         .stdin(Stdio::piped())
