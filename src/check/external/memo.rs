@@ -55,6 +55,7 @@ impl<const N: usize, A: Copy> Memo<N, A> {
         self.state.lock().unwrap_or_else(PoisonError::into_inner)
     }
 
+    // ANCHOR: get
     /// The answer to `question`; if there is none yet, `stand_in`, and the question waits
     /// for the next round.
     pub(super) fn get(&self, question: [f64; N], stand_in: A) -> A {
@@ -70,6 +71,7 @@ impl<const N: usize, A: Copy> Memo<N, A> {
             }
         }
     }
+    // ANCHOR_END: get
 
     /// Records `answer` to `question` (a table's row); `Err` with the other answer if it
     /// had a different one.
@@ -141,6 +143,7 @@ pub(super) enum Source<'a> {
 /// of the round before led to, and no checker chains more than a few.
 const MAX_ROUNDS: usize = 64;
 
+// ANCHOR: rounds
 /// Runs `check` on `memos` until a run asks nothing new, asking the program of `source`
 /// the questions of each run in between (all kinds in one run of the program, in the
 /// order of `memos`), and returns that last run's result.
@@ -199,6 +202,7 @@ pub(super) fn rounds<T>(
         format!("the checker was still asking new questions after {MAX_ROUNDS} rounds"),
     ))
 }
+// ANCHOR_END: rounds
 
 /// The questions a run of `check` on `memos` leaves unanswered (for a table being
 /// written: the rows it still needs).

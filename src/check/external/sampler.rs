@@ -219,6 +219,7 @@ fn stand_in(domain: Domain) -> DVec3 {
     }
 }
 
+// ANCHOR: program_warp
 /// A program as a [`Warp`]: every method is a question to it, answered from the memos.
 struct ProgramWarp<'a> {
     name: String,
@@ -254,6 +255,7 @@ impl Warp for ProgramWarp<'_> {
             .then(|| self.answers.invert.get(p.to_array(), DVec2::splat(0.5)))
     }
 }
+// ANCHOR_END: program_warp
 
 /// Samples read from a file, handed out in order; the density is a named target's.
 struct SampleTable {
