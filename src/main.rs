@@ -1,4 +1,5 @@
-//! `raylemma`: renders and compares scenes; regenerates the book's figures and builds the
+//! `raylemma`: renders and compares scenes; runs the checkers on implementations outside
+//! Rust; regenerates the book's figures and builds the
 //! book. One file per subcommand under `src/cmd/`.
 //!
 //! `cargo run --release` with no subcommand regenerates the figures and reference images
@@ -41,6 +42,13 @@ enum Cmd {
     /// Do two renders (EXR with variance channels) agree within their noise? Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
     Compare(cmd::compare::CompareArgs),
+    /// Run the book's checkers on an implementation outside Rust: a program that answers
+    /// questions on stdin/stdout, or a file of values. Prints the verdict; exit status 0
+    /// if it passes, 1 if it fails, 2 for bad input.
+    Check {
+        #[command(subcommand)]
+        command: cmd::check::CheckCmd,
+    },
 }
 
 fn main() -> ExitCode {
@@ -53,5 +61,6 @@ fn main() -> ExitCode {
         Some(Cmd::Book) => cmd::finish(cmd::book::build()),
         Some(Cmd::Render(args)) => cmd::render::run(args),
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
+        Some(Cmd::Check { command }) => cmd::check::run(command),
     }
 }

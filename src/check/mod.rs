@@ -25,12 +25,16 @@
 //! * [`reflect`]: mirror reflection and Snell refraction (*Reflection and refraction*);
 //! * [`fresnel`]: dielectric reflectance (*Fresnel and Schlick*);
 //! * [`single`]: the single-precision accuracy of a warp (the `f32` columns of the
-//!   sampling chapters).
+//!   sampling chapters);
+//! * [`external`]: the same checkers on an implementation outside Rust, a program that
+//!   answers questions over a pipe or a file of values (*Checks from any language*;
+//!   `raylemma check`).
 //!
 //! The project's own tests call the same checkers on the project's code (which must pass)
 //! and on the planted bugs (which must fail), so a student's implementation is held to
 //! exactly the standard the book's code is.
 
+pub mod external;
 pub mod fresnel;
 mod real;
 pub mod reflect;

@@ -1,11 +1,12 @@
 //! The subcommands of `raylemma`, one file each; `src/main.rs` parses the command line
 //! and calls the subcommand's `run`.
 //!
-//! Exit statuses: 0 success; 1 a negative verdict (`compare`: the images differ) or a
-//! failed job; 2 bad input (a file or argument that cannot be used; usage errors are
-//! clap's, also 2).
+//! Exit statuses: 0 success; 1 a negative verdict (`compare`: the images differ; `check`:
+//! the verdict is FAIL) or a failed job; 2 bad input (a file or argument that cannot be
+//! used, a program that cannot answer; usage errors are clap's, also 2).
 
 pub mod book;
+pub mod check;
 pub mod compare;
 pub mod figures;
 pub mod render;

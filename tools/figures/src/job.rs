@@ -11,8 +11,8 @@ use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette, sampling,
-    shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
+    colour, dispersion, display, emission, external, frame, fresnel, lambert, reflect, roulette,
+    sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -40,6 +40,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(sphere::outputs());
     outputs.extend(stats::outputs());
     outputs.extend(sampling::outputs());
+    outputs.extend(external::outputs());
     outputs.extend(tabulated::outputs());
     outputs.extend(frame::outputs());
     outputs.extend(reflect::outputs());

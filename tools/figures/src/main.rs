@@ -17,6 +17,7 @@ mod colour;
 mod dispersion;
 mod display;
 mod emission;
+mod external;
 mod frame;
 mod fresnel;
 mod lambert;

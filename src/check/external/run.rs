@@ -1,0 +1,208 @@
+//! One run of a program: its questions written to its standard input, which is then
+//! closed; its answers read from its standard output until it exits; its error output
+//! passed through. A run that takes longer than the program's timeout is killed, with
+//! every process it started. Chapter: *Checks from any language*.
+
+use std::io::{Read, Write};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::mpsc;
+use std::thread;
+use std::time::{Duration, Instant};
+
+use super::Program;
+use crate::data::DataError;
+
+impl Program {
+    /// Runs the program once on `questions` (one line each, without the newline) and
+    /// returns its answers, exactly one line per question (a `\r` before the newline is
+    /// dropped). `run` numbers the run in messages.
+    ///
+    /// # Errors
+    /// A [`DataError`] naming the program: it cannot be started, exits with a status other
+    /// than 0 or by a signal, does not finish within its timeout, writes text that is not
+    /// UTF-8, or writes fewer or more lines than questions (with the line).
+    pub(super) fn ask(&self, questions: &[String], run: usize) -> Result<Vec<String>, DataError> {
+        let command = &self.command;
+        let whole = |problem: String| DataError::new(command, 0, problem);
+        let mut input = String::with_capacity(questions.iter().map(|q| q.len() + 1).sum());
+        for q in questions {
+            input.push_str(q);
+            input.push('\n');
+        }
+        let mut child = spawn(command, self.dir.as_deref()).map_err(|e| {
+            let place = self.dir.as_ref().map(|d| format!(" in {}", d.display()));
+            whole(format!(
+                "cannot start `sh -c`{}: {e}",
+                place.unwrap_or_default()
+            ))
+        })?;
+        let (Some(mut stdin), Some(mut stdout)) = (child.stdin.take(), child.stdout.take()) else {
+            kill(&mut child);
+            return Err(whole(
+                "cannot connect to its standard input and output".into(),
+            ));
+        };
+        // Writing and reading on their own threads: a program that answers as it reads
+        // fills its output pipe long before it has read every question.
+        thread::spawn(move || {
+            // A program that stops reading early closes the pipe: its answers say the rest.
+            let _ = stdin.write_all(input.as_bytes());
+        });
+        let (sender, receiver) = mpsc::channel();
+        thread::spawn(move || {
+            let mut bytes = Vec::new();
+            let read = stdout.read_to_end(&mut bytes).map(|_| bytes);
+            let _ = sender.send(read);
+        });
+        let started = Instant::now();
+        let deadline = started + self.timeout;
+        let late = |what: &str| {
+            whole(format!(
+                "{what} after {:.1} s, in run {run} ({} questions): killed it (a slow program may \
+                 need a longer --timeout)",
+                self.timeout.as_secs_f64(),
+                questions.len()
+            ))
+        };
+        let bytes = match receiver.recv_timeout(self.timeout) {
+            Ok(Ok(bytes)) => bytes,
+            Ok(Err(e)) => {
+                kill(&mut child);
+                return Err(whole(format!("cannot read its standard output: {e}")));
+            }
+            Err(_) => {
+                kill(&mut child);
+                return Err(late("did not finish answering"));
+            }
+        };
+        let Some(status) = wait_until(&mut child, deadline) else {
+            kill(&mut child);
+            return Err(late("closed its output but did not exit"));
+        };
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()]
+                .iter()
+                .filter(|&&b| b == b'\n')
+                .count();
+            DataError::new(&self.output_name(), line, "the answer is not UTF-8 text")
+        })?;
+        let answers = lines(&text);
+        if !status.success() {
+            let next = questions
+                .get(answers.len())
+                .map(|q| format!("; the first unanswered was `{q}`"))
+                .unwrap_or_default();
+            return Err(whole(format!(
+                "{} after answering {} of the {} questions of run {run}{}{next}",
+                describe(status),
+                answers.len().min(questions.len()),
+                questions.len(),
+                hint(status),
+            )));
+        }
+        if answers.len() < questions.len() {
+            return Err(DataError::new(
+                &self.output_name(),
+                answers.len() + 1,
+                format!(
+                    "the output ends after {} answers to the {} questions of run {run}: no answer \
+                     to `{}`",
+                    answers.len(),
+                    questions.len(),
+                    questions[answers.len()]
+                ),
+            ));
+        }
+        if answers.len() > questions.len() {
+            return Err(DataError::new(
+                &self.output_name(),
+                questions.len() + 1,
+                format!(
+                    "{} questions were asked in run {run}, but the output goes on: `{}`",
+                    questions.len(),
+                    answers[questions.len()]
+                ),
+            ));
+        }
+        Ok(answers.into_iter().map(String::from).collect())
+    }
+
+    /// The name of the program's answers in messages: `COMMAND (stdout)`.
+    pub(super) fn output_name(&self) -> String {
+        format!("{} (stdout)", self.command)
+    }
+}
+
+/// The lines of `text`, without their `\n` (or `\r\n`); a last line without a newline
+/// counts.
+fn lines(text: &str) -> Vec<&str> {
+    if text.is_empty() {
+        return Vec::new();
+    }
+    let body = text.strip_suffix('\n').unwrap_or(text);
+    body.split('\n')
+        .map(|l| l.strip_suffix('\r').unwrap_or(l))
+        .collect()
+}
+
+/// `sh -c COMMAND` with piped standard input and output, its error output passed through,
+/// in a process group of its own (so that a timeout kills whatever it started), in `dir`
+/// if given.
+fn spawn(command: &str, dir: Option<&std::path::Path>) -> std::io::Result<Child> {
+    let mut sh = Command::new("sh");
+    if let Some(dir) = dir {
+        sh.current_dir(dir);
+    }
+    sh.arg("-c")
+        .arg(command)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::inherit());
+    #[cfg(unix)]
+    std::os::unix::process::CommandExt::process_group(&mut sh, 0);
+    sh.spawn()
+}
+
+/// Waits for `child` to exit until `deadline`; `None` if it is still running then.
+fn wait_until(child: &mut Child, deadline: Instant) -> Option<ExitStatus> {
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return Some(status),
+            Ok(None) if Instant::now() < deadline => thread::sleep(Duration::from_millis(1)),
+            _ => return None,
+        }
+    }
+}
+
+/// Kills `child` and its process group (the shell forks the command it runs: killing the
+/// shell alone would leave the program running), then reaps it.
+fn kill(child: &mut Child) {
+    #[cfg(unix)]
+    {
+        // The standard library cannot signal a group; the POSIX `kill` utility can.
+        let _ = Command::new("kill")
+            .args(["-s", "KILL", "--", &format!("-{}", child.id())])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status();
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
+/// "exited with status 3", "was killed by signal 9".
+fn describe(status: ExitStatus) -> String {
+    match status.code() {
+        Some(code) => format!("exited with status {code}"),
+        None => format!("ended abnormally ({status})"),
+    }
+}
+
+/// What the shell's own statuses mean.
+fn hint(status: ExitStatus) -> &'static str {
+    match status.code() {
+        Some(127) => " (127: the shell found no such command)",
+        Some(126) => " (126: the shell could not execute it)",
+        _ => "",
+    }
+}

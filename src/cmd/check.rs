@@ -1,0 +1,271 @@
+//! `raylemma check sampler|fresnel|refraction`: the book's checkers on an implementation
+//! outside Rust, a program that answers questions over a pipe or a file of values (the
+//! protocol: `raylemma::check::external`; chapter *Checks from any language*). Prints the
+//! checker's verdict; exit status 0 if it passes, 1 if it fails, 2 for bad input (a file
+//! or an answer that cannot be read, with its line; a program that cannot be run, ends
+//! early, fails or hangs).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Duration;
+
+use clap::{Args, Subcommand};
+use raylemma::check::external::{self, Density, Function, Program, Sampler, Target};
+use raylemma::check::warp::Domain;
+use raylemma::check::{Options, Verdict};
+use raylemma::data::DataError;
+
+use super::fail;
+
+/// `raylemma check`.
+#[derive(Subcommand, Debug)]
+pub enum CheckCmd {
+    /// A sampler: its samples in a CSV file (chi-squared), or a program that answers
+    /// `warp u1 u2` with `x y z` (chi-squared, Jacobian, and with --inverse the round trip).
+    Sampler(SamplerArgs),
+    /// An unpolarised Fresnel reflectance: a program that answers `fresnel cos_i n1 n2`
+    /// with `R`, or a table of rows `cos_i,n1,n2,R`.
+    Fresnel(FresnelArgs),
+    /// A refraction: a program that answers `refract wi_x wi_y wi_z n_x n_y n_z n1 n2`
+    /// with `t_x t_y t_z` or `tir`, or a table of those rows.
+    Refraction(RefractionArgs),
+}
+
+/// `raylemma check sampler`.
+#[derive(Args, Debug)]
+#[command(group = clap::ArgGroup::new("from").required(true).multiple(false))]
+#[command(group = clap::ArgGroup::new("density").required(true).multiple(false))]
+pub struct SamplerArgs {
+    /// The sampler program, run by `sh -c` (e.g. "python3 my_sampler.py").
+    #[arg(long, group = "from")]
+    pub program: Option<String>,
+    /// A CSV file of samples, one `x,y,z` a row (`x,y` on the disc and the square).
+    #[arg(long, group = "from", conflicts_with_all = ["cases", "seed", "inverse", "domain"])]
+    pub samples: Option<PathBuf>,
+    /// The density the samples should follow: uniform-sphere, uniform-hemisphere,
+    /// cosine-hemisphere, disc or square.
+    #[arg(long, group = "density", value_parser = parse_target)]
+    pub target: Option<Target>,
+    /// Instead of --target: the program states its own density, answering `pdf x y z`
+    /// with `p`, on this domain (sphere, disc or square).
+    #[arg(long, group = "density", value_parser = parse_domain)]
+    pub domain: Option<Domain>,
+    /// The program answers `invert x y z` with `u1 u2` (adds the round-trip claim).
+    #[arg(long)]
+    pub inverse: bool,
+    /// Samples drawn from the program [default: 400000].
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    pub cases: Option<u64>,
+    /// Seed of the points of the square the program is asked about.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Significance level of the chi-squared test [default: the suite's, about 5e-5].
+    #[arg(long, value_parser = parse_alpha)]
+    pub alpha: Option<f64>,
+    /// Seconds one run of the program may take [default: 120].
+    #[arg(long, value_parser = parse_seconds)]
+    pub timeout: Option<Duration>,
+}
+
+/// Where a function's answers come from, and the list of questions for a table.
+#[derive(Args, Debug)]
+#[command(group = clap::ArgGroup::new("from").required(true).multiple(true))]
+pub struct FunctionArgs {
+    /// The program, run by `sh -c` (e.g. "python3 my_fresnel.py").
+    #[arg(long, group = "from", conflicts_with_all = ["table", "questions"])]
+    pub program: Option<String>,
+    /// A CSV table: one row a question's numbers followed by its answer.
+    #[arg(long, group = "from")]
+    pub table: Option<PathBuf>,
+    /// Write the questions the table (if any) does not answer yet to this CSV file,
+    /// instead of checking.
+    #[arg(long, group = "from")]
+    pub questions: Option<PathBuf>,
+    /// Seconds one run of the program may take [default: 120].
+    #[arg(long, value_parser = parse_seconds)]
+    pub timeout: Option<Duration>,
+}
+
+/// `raylemma check fresnel`.
+#[derive(Args, Debug)]
+pub struct FresnelArgs {
+    #[command(flatten)]
+    pub from: FunctionArgs,
+    /// Evenly spaced angles of incidence from 0 to 90 degrees [default: 361].
+    #[arg(long, value_parser = clap::value_parser!(u64).range(2..))]
+    pub cases: Option<u64>,
+}
+
+/// `raylemma check refraction`.
+#[derive(Args, Debug)]
+pub struct RefractionArgs {
+    #[command(flatten)]
+    pub from: FunctionArgs,
+    /// Random incident directions [default: 20000].
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+    pub cases: Option<u64>,
+    /// Seed of the directions.
+    #[arg(long)]
+    pub seed: Option<u64>,
+}
+
+fn parse_target(name: &str) -> Result<Target, String> {
+    name.parse()
+}
+
+fn parse_domain(name: &str) -> Result<Domain, String> {
+    external::domain_named(name)
+}
+
+fn parse_alpha(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(a) if a > 0.0 && a < 1.0 => Ok(a),
+        _ => Err(format!("`{text}` is not a level between 0 and 1")),
+    }
+}
+
+fn parse_seconds(text: &str) -> Result<Duration, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|s| *s > 0.0)
+        .and_then(|s| Duration::try_from_secs_f64(s).ok())
+        .ok_or_else(|| format!("`{text}` is not a positive number of seconds"))
+}
+
+/// `Options` from the flags; unset flags leave the checker's defaults.
+fn options(cases: Option<u64>, seed: Option<u64>, alpha: Option<f64>) -> Options {
+    let mut options = Options::new();
+    if let Some(n) = cases {
+        options = options.cases(usize::try_from(n).unwrap_or(usize::MAX));
+    }
+    if let Some(s) = seed {
+        options = options.seed(s);
+    }
+    if let Some(a) = alpha {
+        options = options.alpha(a);
+    }
+    options
+}
+
+/// A usage error that clap's groups already refuse (kept as an error, never a panic).
+fn usage(problem: &str) -> DataError {
+    DataError::new("raylemma check", 0, problem)
+}
+
+/// The program `command`, with `timeout` per run (default [`external::TIMEOUT`]).
+fn program(command: &str, timeout: Option<Duration>) -> Program {
+    Program::new(command).timeout(timeout.unwrap_or(external::TIMEOUT))
+}
+
+/// Runs `raylemma check`.
+pub fn run(command: &CheckCmd) -> ExitCode {
+    match command {
+        CheckCmd::Sampler(args) => verdict(sampler(args)),
+        CheckCmd::Fresnel(args) => {
+            let options = options(args.cases, None, None);
+            function(
+                &args.from,
+                &options,
+                external::fresnel,
+                external::fresnel_questions,
+            )
+        }
+        CheckCmd::Refraction(args) => {
+            let options = options(args.cases, args.seed, None);
+            function(
+                &args.from,
+                &options,
+                external::refraction,
+                external::refraction_questions,
+            )
+        }
+    }
+}
+
+/// Prints the verdict: exit status 0 if it passes, 1 if not, 2 for bad input.
+fn verdict(result: Result<Verdict, DataError>) -> ExitCode {
+    match result {
+        Ok(verdict) => {
+            print!("{verdict}");
+            if verdict.passed() {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            }
+        }
+        Err(e) => fail(2, e),
+    }
+}
+
+fn sampler(args: &SamplerArgs) -> Result<Verdict, DataError> {
+    let options = options(
+        Some(args.cases.unwrap_or(external::SAMPLES as u64)),
+        args.seed,
+        args.alpha,
+    );
+    let density = match (args.target, args.domain) {
+        (Some(target), _) => Density::Target(target),
+        (None, Some(domain)) => Density::Program(domain),
+        (None, None) => return Err(usage("--target or --domain is needed")),
+    };
+    let sampler = match (&args.program, &args.samples, density) {
+        (Some(command), _, density) => Sampler::Program {
+            program: program(command, args.timeout),
+            density,
+            inverse: args.inverse,
+        },
+        (None, Some(path), Density::Target(target)) => Sampler::Samples {
+            path: path.clone(),
+            target,
+        },
+        (None, Some(_), Density::Program(_)) => {
+            return Err(usage("a file of samples needs a --target"));
+        }
+        (None, None, _) => return Err(usage("--program or --samples is needed")),
+    };
+    external::sampler(&sampler, &options)
+}
+
+type Check = fn(&Function, &Options) -> Result<Verdict, DataError>;
+type Questions = fn(Option<&Path>, &Options) -> Result<String, DataError>;
+
+fn function(
+    args: &FunctionArgs,
+    options: &Options,
+    check: Check,
+    questions: Questions,
+) -> ExitCode {
+    if let Some(out) = &args.questions {
+        return match write_questions(args.table.as_deref(), out, options, questions) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => fail(2, e),
+        };
+    }
+    let function = match (&args.program, &args.table) {
+        (Some(command), _) => Function::Program(program(command, args.timeout)),
+        (None, Some(path)) => Function::Table(path.clone()),
+        (None, None) => return fail(2, usage("--program, --table or --questions is needed")),
+    };
+    verdict(check(&function, options))
+}
+
+/// Writes the questions `table` does not answer into `out` (whole, or not at all).
+fn write_questions(
+    table: Option<&Path>,
+    out: &Path,
+    options: &Options,
+    questions: Questions,
+) -> Result<(), String> {
+    let text = questions(table, options).map_err(|e| e.to_string())?;
+    raylemma::output::write_file(out, text.as_bytes()).map_err(|e| e.to_string())?;
+    let rows = text.lines().count() - 1;
+    if rows == 0 {
+        eprintln!("raylemma: the table answers every question; check it with --table");
+    } else {
+        eprintln!(
+            "raylemma: wrote {rows} questions to {} (add each row's answer, then --table)",
+            out.display()
+        );
+    }
+    Ok(())
+}
