@@ -213,6 +213,27 @@ pub fn direct(scene: &Scene) -> Expected {
                 .iter()
                 .enumerate()
                 .map(|(k, l)| {
+                    // The closed forms need the whole light in view: check the lines to
+                    // its centre and corners.
+                    let targets: Vec<DVec3> = match &l.shape {
+                        LightShape::Quad(q) => {
+                            let v = q.vertices();
+                            let mid = (v[0] + v[2]) / 2.0;
+                            v.iter()
+                                .map(|c| mid + 0.999 * (*c - mid))
+                                .chain([mid])
+                                .collect()
+                        }
+                        LightShape::Sphere(s) => vec![s.center()],
+                    };
+                    let from = x + n * 1e-9 * (1.0 + x.abs().max_element());
+                    for t in targets {
+                        let dir = (t - from).normalize();
+                        assert!(
+                            matches!(first(scene, from, dir), First::Light(j, _) if j == k),
+                            "direct: something hides light {k} from {x}"
+                        );
+                    }
                     let e = match &l.shape {
                         LightShape::Quad(q) => {
                             assert!(

@@ -130,7 +130,8 @@ pub const DIRECT_VARIANTS: [(&str, DirectLight); 4] = [
 /// (chosen so that a global bias of about half a percent is detected where the noise
 /// allows it) times `scale`:
 ///
-/// * the floor under the quad light, under the sphere light, and under both with every
+/// * the floor under the quad light, under the sphere light, under the sphere light and
+///   a quad light that emits away from it, and under both lights with every
 ///   direct-lighting strategy ([`DIRECT_VARIANTS`]);
 /// * the floor under the fluorescent light with every wavelength strategy
 ///   ([`wavelength_variants`]);
@@ -146,6 +147,11 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
         ExactScene {
             name: "floor under a sphere light".into(),
             scene: scenes::floor_under_sphere(32, spp(1536)),
+            expected: exact::direct,
+        },
+        ExactScene {
+            name: "floor under a light turned away".into(),
+            scene: scenes::floor_under_a_light_turned_away(32, spp(256)),
             expected: exact::direct,
         },
     ];

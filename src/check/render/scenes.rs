@@ -171,6 +171,33 @@ pub fn floor_under_sphere(side: u32, spp: u32) -> Scene {
     floor_scene(side, spp, vec![sphere_light()])
 }
 
+/// A Lambertian floor under the sphere light and the quad light turned over, emitting
+/// upwards: the floor sees only the quad's back, which emits nothing, so the image is the
+/// sphere light's alone; a renderer that lets a one-sided light shine from its back lights
+/// the floor twice over.
+pub fn floor_under_a_light_turned_away(side: u32, spp: u32) -> Scene {
+    // On the far side of the floor from the sphere light, so that it hides the sphere
+    // light from no point of the floor.
+    match QuadLight::new(
+        DVec3::new(-1.6, 1.2, 0.5),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(0.0, 0.0, -0.8),
+    ) {
+        Ok(q) => floor_scene(
+            side,
+            spp,
+            vec![
+                Emitter {
+                    shape: LightShape::Quad(q),
+                    emission: daylight_blackbody(),
+                },
+                sphere_light(),
+            ],
+        ),
+        Err(e) => unreachable!("a valid light: {e}"),
+    }
+}
+
 /// A Lambertian floor under both lights (different spectra): the renderer picks one per
 /// shadow ray, and its multiple importance sampling must count the pick.
 pub fn floor_under_two_lights(side: u32, spp: u32) -> Scene {
