@@ -8,9 +8,9 @@
 //! [`crate::geometry::parallelogram::Parallelogram::hit_before`] uses, by the same
 //! formulas), a box's walls, whose normal and edges lie along the axes, in the cheaper
 //! form of [`AxisQuad`], and every sphere in another array. It finds the same first
-//! surface at the same distance as the book's loop, but for rays that graze a
-//! parallelogram's edge to within rounding: `tests/book/renderer/render.rs` compares the
-//! two on many rays.
+//! surface as the book's loop at the same distance to within rounding (but for rays that
+//! graze a parallelogram's edge to within rounding): `tests/book/renderer/render.rs`
+//! compares the two on many rays.
 
 use glam::DVec3;
 
@@ -34,10 +34,9 @@ struct Quads {
 // ANCHOR: axis_quad
 /// A parallelogram whose normal and edges lie along the axes (a wall of a box): the plane
 /// `p[k] = at`, and the rectangle `lo <= (p[i], p[j]) <= hi` in it, `(i, j)` the other two
-/// axes. The ray meets the plane at `t = (at - o[k]) / d[k]`, the general form's `t` to
-/// the last bit (its normal is `e_k` exactly), and is inside when the two other
-/// coordinates of `o + t d` are within the bounds: two comparisons each instead of two
-/// dot products.
+/// axes. The ray meets the plane at `t = (at - o[k]) / d[k]` (the general form's `t`: its
+/// normal is `e_k` exactly), and is inside when the two other coordinates of `o + t d` are
+/// within the bounds: two comparisons each instead of two dot products.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct AxisQuad {
     k: usize,
@@ -72,9 +71,12 @@ impl AxisQuad {
         })
     }
 
+    /// The hit of the ray from `o` with `inv_d`, the reciprocals of its direction's
+    /// components (computed once per ray: a multiplication per wall instead of a
+    /// division; `t` may then differ from the general form's in the last bit).
     #[inline]
-    fn hit(&self, o: [f64; 3], d: [f64; 3], nearest: f64) -> Option<f64> {
-        let t = (self.at - o[self.k]) / d[self.k];
+    fn hit(&self, o: [f64; 3], d: [f64; 3], inv_d: [f64; 3], nearest: f64) -> Option<f64> {
+        let t = (self.at - o[self.k]) * inv_d[self.k];
         if !(t > 0.0 && t < nearest && t.is_finite()) {
             return None;
         }
@@ -145,10 +147,11 @@ impl<'a> Tracer<'a> {
     #[inline]
     pub fn intersect_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<Hit> {
         let (oa, da) = (o.to_array(), d.to_array());
+        let inv_d = da.map(|x| 1.0 / x);
         let mut nearest = t_max;
         let mut hit = None;
         for a in &self.axis_quads {
-            if let Some(t) = a.hit(oa, da, nearest) {
+            if let Some(t) = a.hit(oa, da, inv_d, nearest) {
                 nearest = t;
                 hit = Some(Hit {
                     t,
