@@ -32,56 +32,85 @@ struct Quads {
 }
 
 // ANCHOR: axis_quad
+/// One of the three axes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Axis {
+    X,
+    Y,
+    Z,
+}
+
+impl Axis {
+    /// The axis of `v` if `v` lies along one (exactly one non-zero component).
+    fn of(v: DVec3) -> Option<Axis> {
+        match (v.x != 0.0, v.y != 0.0, v.z != 0.0) {
+            (true, false, false) => Some(Axis::X),
+            (false, true, false) => Some(Axis::Y),
+            (false, false, true) => Some(Axis::Z),
+            _ => None,
+        }
+    }
+
+    /// The component of `v` along this axis.
+    #[inline]
+    fn of_vec(self, v: DVec3) -> f64 {
+        match self {
+            Axis::X => v.x,
+            Axis::Y => v.y,
+            Axis::Z => v.z,
+        }
+    }
+}
+
 /// A parallelogram whose normal and edges lie along the axes (a wall of a box): the plane
-/// `p[k] = at`, and the rectangle `lo <= (p[i], p[j]) <= hi` in it, `(i, j)` the other two
-/// axes. The ray meets the plane at `t = (at - o[k]) / d[k]` (the general form's `t`: its
-/// normal is `e_k` exactly), and is inside when the two other coordinates of `o + t d` are
-/// within the bounds: two comparisons each instead of two dot products.
+/// `p[k] = at`, and the box `lo <= p <= hi` around the rectangle (infinite along `k`). The
+/// ray meets the plane at `t = (at - o[k]) / d[k]` (the general form's `t`: the normal is
+/// `e_k` exactly), and is inside when `o + t d` is inside the box: comparisons instead of
+/// two dot products.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct AxisQuad {
-    k: usize,
+    k: Axis,
     at: f64,
-    i: usize,
-    j: usize,
-    lo: [f64; 2],
-    hi: [f64; 2],
+    lo: DVec3,
+    hi: DVec3,
     surface: Surface,
 }
 
 impl AxisQuad {
     /// The axis-aligned form of `q`, if it has one.
     fn of(q: &Parallelogram, surface: Surface) -> Option<Self> {
-        let axis_of = |v: DVec3| {
-            let a = v.to_array();
-            let nonzero: Vec<usize> = (0..3).filter(|&c| a[c] != 0.0).collect();
-            (nonzero.len() == 1).then(|| nonzero[0])
-        };
         let [e1, e2] = q.edges();
-        let (k, i, j) = (axis_of(q.normal())?, axis_of(e1)?, axis_of(e2)?);
-        let (c, far) = (q.corner().to_array(), (q.corner() + e1 + e2).to_array());
-        let (i, j) = (i.min(j), i.max(j));
+        let (k, a, b) = (Axis::of(q.normal())?, Axis::of(e1)?, Axis::of(e2)?);
+        if a == b || a == k || b == k {
+            return None;
+        }
+        let (c, far) = (q.corner(), q.corner() + e1 + e2);
+        let unbounded = |v: DVec3, inf: f64| match k {
+            Axis::X => DVec3::new(inf, v.y, v.z),
+            Axis::Y => DVec3::new(v.x, inf, v.z),
+            Axis::Z => DVec3::new(v.x, v.y, inf),
+        };
         Some(AxisQuad {
             k,
-            at: c[k],
-            i,
-            j,
-            lo: [c[i].min(far[i]), c[j].min(far[j])],
-            hi: [c[i].max(far[i]), c[j].max(far[j])],
+            at: k.of_vec(c),
+            lo: unbounded(c.min(far), f64::NEG_INFINITY),
+            hi: unbounded(c.max(far), f64::INFINITY),
             surface,
         })
     }
 
-    /// The hit of the ray from `o` with `inv_d`, the reciprocals of its direction's
+    /// The hit of the ray from `o` along `d`, `inv_d` the reciprocals of its direction's
     /// components (computed once per ray: a multiplication per wall instead of a
-    /// division; `t` may then differ from the general form's in the last bit).
+    /// division; `t` may then differ from the general form's in the last bit). A NaN or
+    /// infinite `t` fails the comparisons with `0` and `nearest`.
     #[inline]
-    fn hit(&self, o: [f64; 3], d: [f64; 3], inv_d: [f64; 3], nearest: f64) -> Option<f64> {
-        let t = (self.at - o[self.k]) * inv_d[self.k];
-        if !(t > 0.0 && t < nearest && t.is_finite()) {
+    fn hit(&self, o: DVec3, d: DVec3, inv_d: DVec3, nearest: f64) -> Option<f64> {
+        let t = (self.at - self.k.of_vec(o)) * self.k.of_vec(inv_d);
+        if !(t > 0.0 && t < nearest) {
             return None;
         }
-        let (pi, pj) = (o[self.i] + t * d[self.i], o[self.j] + t * d[self.j]);
-        (pi >= self.lo[0] && pi <= self.hi[0] && pj >= self.lo[1] && pj <= self.hi[1]).then_some(t)
+        let p = o + t * d;
+        (p.cmpge(self.lo) & p.cmple(self.hi)).all().then_some(t)
     }
 }
 // ANCHOR_END: axis_quad
@@ -146,12 +175,11 @@ impl<'a> Tracer<'a> {
     /// the same answer).
     #[inline]
     pub fn intersect_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<Hit> {
-        let (oa, da) = (o.to_array(), d.to_array());
-        let inv_d = da.map(|x| 1.0 / x);
+        let inv_d = DVec3::ONE / d;
         let mut nearest = t_max;
         let mut hit = None;
         for a in &self.axis_quads {
-            if let Some(t) = a.hit(oa, da, inv_d, nearest) {
+            if let Some(t) = a.hit(o, d, inv_d, nearest) {
                 nearest = t;
                 hit = Some(Hit {
                     t,
