@@ -17,7 +17,7 @@ use std::f64::consts::FRAC_1_PI;
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 
-use super::scene::{DirectLight, Emitter, Ior, Material, Surface};
+use super::scene::{DirectLight, Ior, Material, Surface};
 use super::tracer::Tracer;
 use crate::optics::fresnel::fresnel_dielectric;
 use crate::optics::reflect::{reflect, refract};
@@ -57,9 +57,9 @@ fn lanes(f: impl Fn(usize) -> f64) -> Lanes {
     std::array::from_fn(f)
 }
 
-/// The emission of `e` at the path's wavelengths.
-fn emission(e: &Emitter, wl: &Wavelengths) -> Lanes {
-    lanes(|j| e.emission.eval(wl.lambda[j]))
+/// The emission of light `k` at the path's wavelengths.
+fn emission(tracer: &Tracer, k: usize, wl: &Wavelengths) -> Lanes {
+    lanes(|j| tracer.emission(k, wl.lambda[j]))
 }
 
 /// Spectra evaluated at the path's wavelengths once per path: a path's wavelengths never
@@ -120,7 +120,7 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                             h.weight(pb, pl)
                         }
                     };
-                    let le = emissions.get(k, || emission(&scene.lights[k], wl));
+                    let le = emissions.get(k, || emission(tracer, k, wl));
                     for j in 0..N {
                         l[j] += w * beta[j] * le[j];
                     }
@@ -133,11 +133,13 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
         let (p, n) = scene.surface_point(i, o, d, hit.t);
         match &scene.materials[scene.shapes[i].material] {
             // ANCHOR: lambert
-            Material::Lambert { reflectance } => {
+            Material::Lambert { .. } => {
                 // Shade on the side the ray arrived from (two-sided).
                 let n = if n.dot(d) < 0.0 { n } else { -n };
                 let material = scene.shapes[i].material;
-                let rho = reflectances.get(material, || lanes(|j| reflectance.eval(wl.lambda[j])));
+                let rho = reflectances.get(material, || {
+                    lanes(|j| tracer.reflectance(material, wl.lambda[j]))
+                });
                 let po = offset_origin(p, n, n);
                 let (u_pick, u_light, u_bsdf) = (
                     rng.random::<f64>(),
@@ -162,7 +164,7 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                                 DirectLight::Mis(h) => h.weight(pl, cos * FRAC_1_PI),
                                 _ => 1.0,
                             };
-                            let le = emissions.get(k, || emission(light, wl));
+                            let le = emissions.get(k, || emission(tracer, k, wl));
                             for j in 0..N {
                                 l[j] += beta[j] * rho[j] * FRAC_1_PI * le[j] * cos * w / pl;
                             }

@@ -14,10 +14,11 @@
 
 use glam::DVec3;
 
-use super::scene::{Geometry, Hit, LightShape, Scene, Surface};
+use super::scene::{Geometry, Hit, LightShape, Material, Scene, Surface};
 use crate::geometry::Ray;
 use crate::geometry::parallelogram::Parallelogram;
 use crate::geometry::sphere::{Sphere, intersect_stable};
+use crate::spectral::spectrum::{Dense, Spectrum};
 
 /// The parallelograms of a scene, one array per number: plane `n . p = plane`, corner
 /// `c`, dual basis `a`, `b` ([`crate::geometry::parallelogram::Parallelogram`]).
@@ -115,11 +116,42 @@ impl AxisQuad {
 }
 // ANCHOR_END: axis_quad
 
+/// A spectrum as the tracer reads it: a table with whole-nanometre knots in its dense
+/// form ([`Dense`], the same function read by index), anything else as it is.
+#[derive(Clone, Debug)]
+enum Lookup {
+    Dense(Dense),
+    As(Spectrum),
+}
+
+impl Lookup {
+    fn of(s: &Spectrum) -> Self {
+        match s {
+            Spectrum::Table(t) => {
+                Dense::of_table(t).map_or_else(|| Lookup::As(s.clone()), Lookup::Dense)
+            }
+            other => Lookup::As(other.clone()),
+        }
+    }
+
+    #[inline]
+    fn eval(&self, nm: f64) -> f64 {
+        match self {
+            Lookup::Dense(d) => d.eval(nm),
+            Lookup::As(s) => s.eval(nm),
+        }
+    }
+}
+
 /// A scene's surfaces for tracing, and the scene.
 #[derive(Clone, Debug)]
 pub struct Tracer<'a> {
     /// The scene (materials, lights, settings).
     pub scene: &'a Scene,
+    /// The reflectance of each material (`None` for those that are not Lambertian).
+    reflectance: Vec<Option<Lookup>>,
+    /// The emission of each light.
+    emission: Vec<Lookup>,
     axis_quads: Vec<AxisQuad>,
     quads: Quads,
     spheres: Vec<(Sphere, Surface)>,
@@ -160,10 +192,36 @@ impl<'a> Tracer<'a> {
         }
         Tracer {
             scene,
+            reflectance: scene
+                .materials
+                .iter()
+                .map(|m| match m {
+                    Material::Lambert { reflectance } => Some(Lookup::of(reflectance)),
+                    _ => None,
+                })
+                .collect(),
+            emission: scene
+                .lights
+                .iter()
+                .map(|l| Lookup::of(&l.emission))
+                .collect(),
             axis_quads,
             quads,
             spheres,
         }
+    }
+
+    /// The reflectance of material `m` (a Lambertian one) at `nm`: its spectrum's value,
+    /// read from the dense form where it has one.
+    #[inline]
+    pub fn reflectance(&self, m: usize, nm: f64) -> f64 {
+        self.reflectance[m].as_ref().map_or(0.0, |r| r.eval(nm))
+    }
+
+    /// The emission of light `k` at `nm`, likewise.
+    #[inline]
+    pub fn emission(&self, k: usize, nm: f64) -> f64 {
+        self.emission[k].eval(nm)
     }
 
     /// The first surface along the ray from `o` in the unit direction `d`.

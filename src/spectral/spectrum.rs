@@ -189,6 +189,50 @@ pub fn planck_normalised(nm: f64, kelvin: f64) -> f64 {
     }
 }
 
+// ANCHOR: dense
+/// A spectrum read by index: its values on every whole nanometre of `[lo, lo + n - 1]`,
+/// linear in between and zero outside. A [`Table`] whose knots are all whole nanometres is
+/// the same piecewise-linear function ([`Dense::of_table`]), read without a search: the
+/// renderer keeps its materials' and lights' tables this way, and a test checks that the
+/// two agree to rounding.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Dense {
+    lo: f64,
+    values: Vec<f64>,
+}
+
+impl Dense {
+    /// The dense form of `t` if its knots are whole nanometres (else `None`).
+    pub fn of_table(t: &Table) -> Option<Dense> {
+        if t.nm.iter().any(|x| x.fract() != 0.0) {
+            return None;
+        }
+        let (lo, hi) = (t.nm[0], t.nm[t.nm.len() - 1]);
+        let values = (0..=(hi - lo) as usize)
+            .map(|i| t.eval(lo + i as f64))
+            .collect();
+        Some(Dense { lo, values })
+    }
+
+    /// The value at `nm`: linear between the whole nanometres, zero outside.
+    #[inline]
+    pub fn eval(&self, nm: f64) -> f64 {
+        let s = nm - self.lo;
+        let last = self.values.len() - 1;
+        // NaN fails the comparison, as any wavelength outside.
+        if !(s >= 0.0 && s <= last as f64) {
+            return 0.0;
+        }
+        let i = (s as usize).min(last.saturating_sub(1));
+        let t = s - i as f64;
+        match self.values.get(i + 1) {
+            Some(&next) => (1.0 - t) * self.values[i] + t * next,
+            None => self.values[i],
+        }
+    }
+}
+// ANCHOR_END: dense
+
 /// A spectrum of a scene.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Spectrum {

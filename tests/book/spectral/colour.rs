@@ -881,3 +881,48 @@ fn evenly_spaced_tables_find_their_segment_as_the_binary_search_does() {
         }
     }
 }
+
+#[test]
+fn a_dense_table_is_the_same_function_read_by_index() {
+    // Tables with whole-nanometre knots (the built-in ones, the Cornell box's): the dense
+    // form agrees with the table to rounding everywhere, and is zero outside.
+    use raylemma::spectral::spectrum::Dense;
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut tables: Vec<Table> = raylemma::spectral::spectrum::BUILTIN
+        .iter()
+        .map(|(name, _)| builtin(name))
+        .collect();
+    for (_, t) in load_csv(&root.join("data/cornell_box_reflectance.csv")).unwrap() {
+        tables.push(t);
+    }
+    let mut rng = raylemma::rng::seeded(0xde5e);
+    for t in &tables {
+        let d =
+            Dense::of_table(t).unwrap_or_else(|| panic!("knots not whole: {:?}", t.wavelengths()));
+        let (lo, hi) = (
+            t.wavelengths()[0],
+            t.wavelengths()[t.wavelengths().len() - 1],
+        );
+        let mut xs: Vec<f64> = (0..3000)
+            .map(|_| raylemma::rng::uniform(&mut rng, 340.0, 850.0))
+            .collect();
+        xs.extend([
+            lo,
+            hi,
+            lo.next_down(),
+            hi.next_up(),
+            (lo + hi) / 2.0,
+            f64::NAN,
+        ]);
+        for x in xs {
+            let (a, b) = (d.eval(x), t.eval(x));
+            assert!(
+                (a - b).abs() <= 4.0 * f64::EPSILON * b.abs().max(1.0),
+                "at {x} nm: dense {a}, table {b}"
+            );
+        }
+    }
+    // A knot between whole nanometres has no dense form.
+    let odd = Table::new(vec![400.0, 400.5, 401.0], vec![1.0, 2.0, 3.0]).unwrap();
+    assert!(Dense::of_table(&odd).is_none());
+}
