@@ -40,6 +40,10 @@ enum Cmd {
     /// Do two renders (EXR with variance channels) agree within their noise? Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
     Compare(cmd::compare::CompareArgs),
+    /// Write the student edition into DIR: a crate in which every exercise's body is a
+    /// stub, whose `cargo test` ends with a report card (--solutions: the solutions in
+    /// place).
+    Exercises(cmd::exercises::ExercisesArgs),
 }
 
 fn main() -> ExitCode {
@@ -52,5 +56,6 @@ fn main() -> ExitCode {
         Some(Cmd::Book) => cmd::finish(cmd::book::build()),
         Some(Cmd::Render(args)) => cmd::render::run(args),
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
+        Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
     }
 }

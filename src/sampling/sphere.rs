@@ -21,6 +21,7 @@ pub const SPHERE_PDF: Float = 1.0 / (4.0 * consts::PI);
 pub const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
 
 // ANCHOR: inverse_cdf
+// EXERCISE sampling/sphere sphere_inverse_cdf: a uniform direction from u by the inverse CDF in (z, phi), accurate near the poles
 /// Inverse-CDF sampling: `z = cos(theta) = 1 - 2 u1`, `phi = 2 pi u2`.
 ///
 /// The seed writes `sqrt(1 - z^2)` for the radius of the circle at height `z`; near the
@@ -32,6 +33,7 @@ pub fn sphere_inverse_cdf(u: V2) -> V3 {
     let phi = consts::TAU * u.y;
     V3::new(r * phi.cos(), r * phi.sin(), z)
 }
+// END EXERCISE
 // ANCHOR_END: inverse_cdf
 
 // ANCHOR: normalize
@@ -68,7 +70,7 @@ pub fn sphere_uniform(rng: &mut Rng) -> V3 {
 /// in `(0, 1]`, so the logarithm is finite.
 pub fn box_muller(u: V2) -> (Float, Float) {
     let r = (-2.0 * (1.0 - u.x).ln()).sqrt();
-    let phi = consts::TAU * u.y;
+    let phi = u.y * consts::TAU;
     (r * phi.cos(), r * phi.sin())
 }
 
@@ -106,12 +108,14 @@ pub fn sphere_rejection(rng: &mut Rng) -> (V3, u32) {
 // ANCHOR_END: rejection
 
 // ANCHOR: hemisphere
+// EXERCISE sampling/sphere hemisphere_flip: a uniform direction on the hemisphere around n: a sphere sample flipped to n's side
 /// A uniform direction on the hemisphere around `n`: a sphere sample flipped to `n`'s
 /// side. Flipping maps the sphere two-to-one onto the hemisphere, doubling the density to
 /// `1 / (2 pi)`.
 pub fn hemisphere_flip(w: V3, n: V3) -> V3 {
     if w.dot(n) < 0.0 { -w } else { w }
 }
+// END EXERCISE
 // ANCHOR_END: hemisphere
 
 /// The uniform sphere density (constant).
