@@ -254,7 +254,11 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
         files.push(file);
     }
     let with_book = text_of(&files, "tools/book/Cargo.toml").is_some();
-    let manifest = manifest(text_of(&originals, "Cargo.toml").unwrap_or(""), with_book);
+    let manifest = manifest(
+        text_of(&originals, "Cargo.toml").unwrap_or(""),
+        with_book,
+        kind,
+    );
     let generated = [
         ("Cargo.toml", manifest),
         ("README.md", readme(&exercises, kind)),
@@ -292,10 +296,17 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
     })
 }
 
-/// The edition's `Cargo.toml`, from this crate's (`original`): the same package,
-/// dependencies and profiles, without the benches and criterion, and with a workspace of
-/// the crate and (if shipped, `with_book`) the book builder.
-pub fn manifest(original: &str, with_book: bool) -> String {
+/// The edition's `Cargo.toml`, from this crate's (`original`): the same library,
+/// binary, dependencies and profiles, without the benches and criterion, with a workspace
+/// of the crate and (if shipped, `with_book`) the book builder, and a package name of its
+/// own, `raylemma-hand-out` or `raylemma-solutions` (the library and the binary keep the
+/// name `raylemma`).
+///
+/// The package's own name matters: cargo names a workspace's artifacts by its package's
+/// name and version and its path *relative to the workspace*, so two crates called
+/// `raylemma` in one target folder (this one and an edition, or the two editions) would
+/// take each other's builds for their own.
+pub fn manifest(original: &str, with_book: bool, kind: Kind) -> String {
     let members = if with_book {
         r#"[".", "tools/book"]"#
     } else {
@@ -314,7 +325,7 @@ pub fn manifest(original: &str, with_book: bool) -> String {
             if section == "[workspace]" {
                 skipping = true;
                 out.push_str(&format!(
-                    "[workspace]\n# `cargo test` tests this crate only; the book builder (tools/book: mdBook and\n# KaTeX) is built on demand, by `cargo run --release -p raylemma-book -- --root .`.\nmembers = {members}\ndefault-members = [\".\"]\n"
+                    "[workspace]\n# `cargo test` tests this crate only; the book builder (tools/book: mdBook and\n# KaTeX) is built on demand, by `cargo run --release -p raylemma-book -- --root .`.\nmembers = {members}\ndefault-members = [\".\"]\n\n"
                 ));
             }
         } else if t.is_empty() && section == "[[bench]]" {
@@ -322,9 +333,17 @@ pub fn manifest(original: &str, with_book: bool) -> String {
             continue;
         }
         let criterion = section == "[dev-dependencies]" && t.starts_with("criterion");
-        if !skipping && !criterion {
+        if section == "[package]" && t.starts_with("name =") {
+            out.push_str(&format!(
+                "name = \"raylemma-{}\" # its own name; the library and the binary are `raylemma`\n",
+                kind.name()
+            ));
+        } else if !skipping && !criterion {
             out.push_str(line);
             out.push('\n');
+        }
+        if t == "[lib]" {
+            out.push_str("name = \"raylemma\"\n");
         }
     }
     while out.ends_with("\n\n") {

@@ -69,22 +69,42 @@ pub const LATER: &[Later] = &[
     Later {
         name: "white furnace",
         command: "cargo test --test book transport::lambert",
-        needs: &[
-            "lambert_brdf",
-            "cosine_malley",
-            "hemisphere_flip",
-            "sphere_inverse_cdf",
-        ],
+        needs: &["lambert_brdf", "cosine_malley", "hemisphere_flip"],
     },
 ];
+
+/// The claim on rejection's cost: the mean number of draws per direction is the cube's
+/// volume over the ball's, `6 / pi` (one-sample t-test at the suite's level).
+fn acceptance() -> Verdict {
+    let mut rng = crate::rng::seeded(warp::SEED);
+    let tries = crate::stats::ttest::Summary::of(
+        (0..200_000).map(|_| f64::from(sphere::sphere_rejection(&mut rng).1)),
+    );
+    let want = 6.0 / std::f64::consts::PI;
+    let p = crate::stats::ttest::one_sample(&tries, want).map_or(0.0, |t| t.p_value);
+    let mut finding = check::Finding::new("draws", "the mean number of draws is 6 / pi");
+    finding.record(p >= crate::stats::test_alpha(), || {
+        format!(
+            "{} draws per direction on average over {} directions (p = {p:.3e})",
+            tries.mean, tries.n
+        )
+    });
+    let mut verdict = Verdict::new("sphere by rejection: its cost");
+    verdict.findings.push(finding);
+    verdict
+}
 
 /// The sampler tests' options: 400 000 samples, the warp checker's seed.
 fn warp_options() -> Options {
     Options::default().cases(warp::TEST_SAMPLES)
 }
 
+/// The claims of the reflectance checker that an approximation such as Schlick's must
+/// keep (it cannot keep `energy` or `matched`: it approximates).
+pub const SCHLICK_KEEPS: [&str; 5] = ["range", "normal", "grazing", "tir", "reciprocity"];
+
 /// `verdict` with only the findings named `keep`, its subject saying so.
-fn only(mut verdict: Verdict, keep: &[&str], why: &str) -> Verdict {
+pub fn only(mut verdict: Verdict, keep: &[&str], why: &str) -> Verdict {
     verdict.findings.retain(|f| keep.contains(&f.name.as_str()));
     verdict.subject = format!("{} ({why})", verdict.subject);
     verdict
@@ -115,17 +135,16 @@ pub const EXERCISES: &[Exercise] = &[
         },
     },
     Exercise {
-        name: "sphere_inverse_cdf",
+        name: "sphere_rejection",
         needs: &[],
         check: || {
-            let w = SquareWarp::new(
-                "sphere inverse CDF",
-                Domain::Sphere,
-                sphere::sphere_inverse_cdf,
-                sphere::sphere_pdf,
-            )
-            .inverse(sphere::sphere_inverse_cdf_invert);
-            vec![warp::check(&w, &warp_options())]
+            let w = RngWarp {
+                name: "sphere by rejection".to_string(),
+                domain: Domain::Sphere,
+                sample: |rng: &mut _| sphere::sphere_rejection(rng).0,
+                pdf: sphere::sphere_pdf,
+            };
+            vec![warp::check(&w, &warp_options()), acceptance()]
         },
     },
     Exercise {
@@ -264,8 +283,7 @@ pub const EXERCISES: &[Exercise] = &[
         needs: &[],
         check: || {
             let v = check::fresnel::reflectance(&fresnel::schlick, &Options::default());
-            let keeps = ["range", "normal", "grazing", "tir", "reciprocity"];
-            vec![only(v, &keeps, "the claims an approximation keeps")]
+            vec![only(v, &SCHLICK_KEEPS, "the claims an approximation keeps")]
         },
     },
     Exercise {

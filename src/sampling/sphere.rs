@@ -21,7 +21,6 @@ pub const SPHERE_PDF: Float = 1.0 / (4.0 * consts::PI);
 pub const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
 
 // ANCHOR: inverse_cdf
-// EXERCISE sampling/sphere sphere_inverse_cdf: a uniform direction from u by the inverse CDF in (z, phi), accurate near the poles
 /// Inverse-CDF sampling: `z = cos(theta) = 1 - 2 u1`, `phi = 2 pi u2`.
 ///
 /// The seed writes `sqrt(1 - z^2)` for the radius of the circle at height `z`; near the
@@ -30,10 +29,9 @@ pub const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
 pub fn sphere_inverse_cdf(u: V2) -> V3 {
     let z = 1.0 - 2.0 * u.x;
     let r = 2.0 * (u.x * (1.0 - u.x)).max(0.0).sqrt();
-    let phi = consts::TAU * u.y;
+    let phi = u.y * consts::TAU;
     V3::new(r * phi.cos(), r * phi.sin(), z)
 }
-// END EXERCISE
 // ANCHOR_END: inverse_cdf
 
 // ANCHOR: normalize
@@ -89,6 +87,7 @@ pub fn sphere_gaussian(rng: &mut Rng) -> V3 {
 // ANCHOR_END: gaussian
 
 // ANCHOR: rejection
+// EXERCISE sampling/sphere sphere_rejection: a uniform direction by rejection from the cube, with the number of draws it took
 /// Rejection: draw `v` uniformly in the cube `[-1, 1]^3` until it lies in the unit ball
 /// (and is not zero), then normalise. Returns the direction and the number of draws; the
 /// acceptance probability is the ball's share of the cube, `(4 pi / 3) / 8 = pi / 6`.
@@ -105,6 +104,7 @@ pub fn sphere_rejection(rng: &mut Rng) -> (V3, u32) {
         }
     }
 }
+// END EXERCISE
 // ANCHOR_END: rejection
 
 // ANCHOR: hemisphere

@@ -47,7 +47,8 @@ pub fn estimator(estimate: &Estimator, options: &Options) -> Verdict {
         "mean of f(X)/q(X) = int f for q > 0 wherever f != 0 (one-sample t-test)",
     );
     let linear_plus_one = |x: f64| 1.0 + x;
-    let integrands: [(&str, &dyn Fn(f64) -> f64, f64); 2] = [
+    type Integrand<'a> = (&'a str, &'a dyn Fn(f64) -> f64, f64); // name, f, its integral
+    let integrands: [Integrand; 2] = [
         ("x^2", &square, 1.0 / 3.0),
         ("1 + x", &linear_plus_one, 1.5),
     ];

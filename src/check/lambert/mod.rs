@@ -39,8 +39,8 @@ pub fn brdf(f: &dyn Fn(f64, DVec3, DVec3) -> f64, options: &Options) -> Verdict 
         "int f cos(theta_i) dw_i = rho for every w_o above",
     );
     for rho in [0.1, 0.5, 1.0] {
-        for z in [1.0, 0.7, 0.3, 0.05] {
-            let wo = DVec3::new((1.0 - z * z as f64).sqrt(), 0.0, z);
+        for z in [1.0_f64, 0.7, 0.3, 0.05] {
+            let wo = DVec3::new((1.0 - z * z).sqrt(), 0.0, z);
             let a = albedo(|wi, wo| f(rho, wi, wo), wo, QUADRATURE);
             let error = (a / rho - 1.0).abs();
             albedo_.measure(error, ALBEDO_BOUND, || {

@@ -41,7 +41,7 @@ pub fn hero(f: &dyn Fn(f64) -> Wavelengths, options: &Options) -> Verdict {
         "lane j = lane 0 + j/N of the range, modulo the range",
     );
     let mut pdf = Finding::new("pdf", "every lane and the hero weighted by 1/470 per nm");
-    let mut lanes: Vec<Vec<f64>> = vec![Vec::with_capacity(cases); N];
+    let mut lanes: Vec<Vec<f64>> = (0..N).map(|_| Vec::with_capacity(cases + 3)).collect();
     let mut us: Vec<f64> = (0..cases)
         .map(|_| rng::uniform(&mut rng, 0.0, 1.0))
         .collect();

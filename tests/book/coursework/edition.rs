@@ -250,7 +250,7 @@ fn the_trivial_rule_exempts_lines_that_name_less_than_two_things() {
 
 /// A whole crate in memory: the fixture's source, a summary, a manifest and `test`.
 fn crate_with(test: &str) -> Vec<File> {
-    let manifest = "[package]\nname = \"raylemma\"\n\n[workspace]\nmembers = [\".\", \"tools/book\", \"tools/figures\"]\nexclude = [\"fuzz\"]\n\n[dev-dependencies]\napprox = \"0.5\"\ncriterion = \"0.8\"\n\n[[bench]]\nname = \"sphere\"\nharness = false\n\n[profile.test]\nopt-level = 2\n";
+    let manifest = "[package]\nname = \"raylemma\"\n\n[lib]\ntest = false\n\n[workspace]\nmembers = [\".\", \"tools/book\", \"tools/figures\"]\nexclude = [\"fuzz\"]\n\n[dev-dependencies]\napprox = \"0.5\"\ncriterion = \"0.8\"\n\n[[bench]]\nname = \"sphere\"\nharness = false\n\n[profile.test]\nopt-level = 2\n";
     vec![
         File {
             path: "Cargo.toml".into(),
@@ -327,6 +327,12 @@ fn the_edition_manifest_drops_the_benches_criterion_and_the_figure_job() {
         manifest.contains("members = [\".\"]")
             && manifest.contains("approx = \"0.5\"")
             && manifest.contains("opt-level = 2"),
+        "{manifest}"
+    );
+    // A package name of its own (see `edition::manifest`), the library still `raylemma`.
+    assert!(
+        manifest.contains("[package]\nname = \"raylemma-hand-out\"")
+            && manifest.contains("[lib]\nname = \"raylemma\"\ntest = false"),
         "{manifest}"
     );
     let readme = String::from_utf8_lossy(&e.files[3].bytes).into_owned();
