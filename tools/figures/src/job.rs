@@ -11,8 +11,8 @@ use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette, sampling,
-    shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
+    colour, coursework, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette,
+    sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -37,6 +37,7 @@ pub struct Output {
 /// Every output of every chapter, in book order.
 pub fn all() -> Vec<Output> {
     let mut outputs = Vec::new();
+    outputs.extend(coursework::outputs());
     outputs.extend(sphere::outputs());
     outputs.extend(stats::outputs());
     outputs.extend(sampling::outputs());
