@@ -9,6 +9,8 @@
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
 //! * [`data`]: errors of data files (file, line, problem).
+//! * [`exercise`]: coursework: the exercises marked in the source, the student edition
+//!   made from them (`raylemma exercises DIR`) and its report card.
 //! * [`numeric`]: small numerical helpers (`max_abs`, a maximum that keeps a NaN).
 //! * [`output`]: the one writer of every file the library writes: atomic files, sets of
 //!   files that land together or not at all, staged folders.
@@ -27,6 +29,7 @@
 
 pub mod check;
 pub mod data;
+pub mod exercise;
 pub mod geometry;
 pub mod numeric;
 pub mod optics;

@@ -49,6 +49,10 @@ enum Cmd {
         #[command(subcommand)]
         command: cmd::check::CheckCmd,
     },
+    /// Write the student edition into DIR: a crate in which every exercise's body is a
+    /// stub, whose `cargo test` ends with a report card (--solutions: the solutions in
+    /// place).
+    Exercises(cmd::exercises::ExercisesArgs),
 }
 
 fn main() -> ExitCode {
@@ -62,5 +66,6 @@ fn main() -> ExitCode {
         Some(Cmd::Render(args)) => cmd::render::run(args),
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
         Some(Cmd::Check { command }) => cmd::check::run(command),
+        Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
     }
 }

@@ -29,19 +29,43 @@
 //! * [`external`]: the same checkers on an implementation outside Rust, a program that
 //!   answers questions over a pipe or a file of values (*Checks from any language*;
 //!   `raylemma check`).
+//! * [`importance`]: the importance-sampling estimator (*Importance sampling*);
+//! * [`tabulated`]: the inverse CDF of a piecewise-constant table (*Tabulated
+//!   distributions*);
+//! * [`specular`]: a narrow lobe standing in for the mirror's delta (*The missing cosine*);
+//! * [`dispersion`]: the Sellmeier equation (*Dispersion*);
+//! * [`thinfilm`]: the Airy sum (*Thin-film interference*);
+//! * [`lambert`]: the Lambertian BRDF (*Lambertian reflectance*);
+//! * [`roulette`]: Russian roulette (*Russian roulette*);
+//! * [`shadow`]: the change of variables from area to solid angle (*Shadow-ray pdfs*);
+//! * [`wavelength`]: uniform hero wavelengths (*Wavelength sampling*);
+//! * [`display`]: the sRGB transfer curve (*From spectrum to display*).
+//!
+//! The report card of the student edition ([`crate::exercise::card`]) runs these on the
+//! crate's own functions, one exercise at a time.
 //!
 //! The project's own tests call the same checkers on the project's code (which must pass)
 //! and on the planted bugs (which must fail), so a student's implementation is held to
 //! exactly the standard the book's code is.
 
+pub mod dispersion;
+pub mod display;
 pub mod external;
 pub mod fresnel;
+pub mod importance;
+pub mod lambert;
 mod real;
 pub mod reflect;
 pub mod render;
+pub mod roulette;
+pub mod shadow;
 pub mod single;
+pub mod specular;
 pub mod sphere;
+pub mod tabulated;
+pub mod thinfilm;
 pub mod warp;
+pub mod wavelength;
 
 /// Re-exported from [`crate::numeric`], where the derivations find it too.
 pub use crate::numeric::max_abs;

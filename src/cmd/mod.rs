@@ -8,6 +8,7 @@
 pub mod book;
 pub mod check;
 pub mod compare;
+pub mod exercises;
 pub mod figures;
 pub mod render;
 

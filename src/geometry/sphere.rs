@@ -59,6 +59,7 @@ pub fn intersect_textbook(ray: &Ray, sphere: &Sphere, t_min: Float) -> Option<Fl
 // ANCHOR_END: textbook
 
 // ANCHOR: stable
+// EXERCISE geometry/sphere intersect_stable: the first hit of a ray with a sphere beyond t_min, the quadratic solved without cancellation
 /// The numerically stable form (*Ray Tracing Gems*, ch. 7).
 ///
 /// With `f = O - C`, `a = D.D`, `b' = -D.f` and `c = f.f - r^2`:
@@ -68,8 +69,7 @@ pub fn intersect_textbook(ray: &Ray, sphere: &Sphere, t_min: Float) -> Option<Fl
 /// * `q = b' + sign(b') sqrt(a (r^2 - l.l))` adds two numbers of the same sign, and the
 ///   roots are `t = c / q` and `t = q / a` (their product is `c / a`, Vieta).
 pub fn intersect_stable(ray: &Ray, sphere: &Sphere, t_min: Float) -> Option<Float> {
-    let f = ray.origin - sphere.center;
-    let a = ray.dir.dot(ray.dir);
+    let (a, f) = (ray.dir.dot(ray.dir), ray.origin - sphere.center);
     let b = -f.dot(ray.dir);
     let r2 = sphere.radius * sphere.radius;
     let l = f + ray.dir * (b / a);
@@ -80,9 +80,10 @@ pub fn intersect_stable(ray: &Ray, sphere: &Sphere, t_min: Float) -> Option<Floa
     let c = f.dot(f) - r2;
     let q = b + (a * delta).sqrt().copysign(b);
     let (t0, t1) = (c / q, q / a);
-    let (t_near, t_far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-    nearest_root_above(t_near, t_far, t_min)
+    let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    nearest_root_above(near, far, t_min)
 }
+// END EXERCISE
 // ANCHOR_END: stable
 
 // ANCHOR: nearest_root

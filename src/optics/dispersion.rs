@@ -56,6 +56,7 @@ pub struct Sellmeier {
 
 impl Sellmeier {
     // ANCHOR: sellmeier
+    // EXERCISE optics/dispersion Sellmeier::index: the refractive index by the Sellmeier equation
     /// The refractive index at `wavelength_nm`:
     /// `n² = 1 + Σ B_i λ² / (λ² − C_i)`, λ in µm.
     ///
@@ -71,6 +72,7 @@ impl Sellmeier {
                 .sum::<f64>();
         n2.sqrt()
     }
+    // END EXERCISE
     // ANCHOR_END: sellmeier
 
     /// True iff `wavelength_nm` lies in the range of the fit.

@@ -28,8 +28,8 @@
 /// reflection). `cos_t^2 = 1 - (n1/n2)^2 sin^2 theta_i`, evaluated as
 /// `(1 - eta^2) + (eta cos_i)^2`: for `n1 < n2` a sum of two non-negative terms.
 pub fn cos_transmitted(cos_i: f64, n1: f64, n2: f64) -> Option<f64> {
-    let eta = n1 / n2;
-    let cos2_t = (1.0 - eta * eta) + (eta * cos_i) * (eta * cos_i);
+    let (eta, c) = (n1 / n2, cos_i);
+    let cos2_t = (1.0 - eta * eta) + (eta * c) * (eta * c);
     (cos2_t >= 0.0).then(|| cos2_t.sqrt())
 }
 // ANCHOR_END: cos_t
@@ -73,6 +73,7 @@ pub struct Amplitudes {
 }
 
 // ANCHOR: amplitudes
+// EXERCISE optics/fresnel amplitudes: the Fresnel amplitude coefficients r_s, r_p, t_s, t_p, or None under total internal reflection
 /// The amplitude coefficients, or `None` under total internal reflection.
 ///
 /// Two inputs are special: matched indices (`n1 == n2`, no interface: `r = 0`, `t = 1`)
@@ -111,6 +112,7 @@ pub fn amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<Amplitudes> {
         cos_t,
     })
 }
+// END EXERCISE
 // ANCHOR_END: amplitudes
 
 // ANCHOR: polarized
@@ -134,6 +136,7 @@ pub fn fresnel_dielectric(cos_i: f64, n1: f64, n2: f64) -> f64 {
 // ANCHOR_END: polarized
 
 // ANCHOR: transmittance
+// EXERCISE optics/fresnel fresnel_transmittance: the transmittances T_s and T_p, 0 under total internal reflection and 1 for matched indices
 /// Transmittances from the transmission amplitudes, `T = (n2 cos_t) / (n1 cos_i) t^2`:
 /// the factor converts the ratio of field amplitudes into a ratio of powers through the
 /// interface (intensity scales with `n`, the beam's cross-section with `cos`).
@@ -159,6 +162,7 @@ pub fn fresnel_transmittance(cos_i: f64, n1: f64, n2: f64) -> Polarized {
         p: (four_ab / ((d + e) * (d + e))).min(1.0),
     }
 }
+// END EXERCISE
 // ANCHOR_END: transmittance
 
 /// Brewster's angle (radians), `atan(n2 / n1)`: there `R_p = 0`.
@@ -173,6 +177,7 @@ pub fn r0(n1: f64, n2: f64) -> f64 {
 }
 
 // ANCHOR: schlick
+// EXERCISE optics/fresnel schlick: Schlick's approximation, with the cosine on the less dense side
 /// Schlick's approximation `R0 + (1 - R0)(1 - cos)^5`, with the cosine of the angle on
 /// the *less dense* side: `cos theta_i` entering a denser medium, `cos theta_t` leaving
 /// it, and 1 under total internal reflection.
@@ -186,11 +191,11 @@ pub fn schlick(cos_i: f64, n1: f64, n2: f64) -> f64 {
             None => return 1.0,
         }
     };
-    let r0 = r0(n1, n2);
-    let x = 1.0 - cos;
-    let x2 = x * x;
-    r0 + (1.0 - r0) * x2 * x2 * x
+    let (r0, x) = (r0(n1, n2), 1.0 - cos);
+    let x4 = (x * x) * (x * x);
+    r0 + (1.0 - r0) * x4 * x
 }
+// END EXERCISE
 // ANCHOR_END: schlick
 
 // ANCHOR: schlick_seed
@@ -264,11 +269,11 @@ impl FresnelFit {
 
     /// The approximate reflectance for light in medium `n1` at `|cos theta_i| = cos_i`.
     pub fn eval(&self, cos_i: f64) -> f64 {
-        let c = clamp_cos(cos_i);
+        let cos_in = clamp_cos(cos_i);
         let cos = if self.n1 <= self.n2 {
-            c
+            cos_in
         } else {
-            match cos_transmitted(c, self.n1, self.n2) {
+            match cos_transmitted(cos_in, self.n1, self.n2) {
                 Some(cos_t) => cos_t,
                 None => return 1.0,
             }

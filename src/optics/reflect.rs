@@ -25,6 +25,7 @@
 use glam::DVec3;
 
 // ANCHOR: reflect
+// EXERCISE optics/reflect reflect: mirror reflection of w_i about the normal n
 /// Mirror reflection of the incident direction `w_i` about the normal `n` (either side):
 /// `w_o = w_i - 2 (w_i . n) n`.
 ///
@@ -33,6 +34,7 @@ use glam::DVec3;
 pub fn reflect(w_i: DVec3, n: DVec3) -> DVec3 {
     w_i - 2.0 * w_i.dot(n) * n
 }
+// END EXERCISE
 // ANCHOR_END: reflect
 
 // ANCHOR: refraction_enum
@@ -59,6 +61,7 @@ impl Refraction {
 }
 
 // ANCHOR: refract
+// EXERCISE optics/reflect refract: Snell refraction of w_i from index n1 into n2, or total internal reflection
 /// Snell refraction of the incident direction `w_i`, travelling in the medium of index
 /// `n1`, into the medium of index `n2`, at a surface with unit normal `n` (either side).
 ///
@@ -85,6 +88,7 @@ pub fn refract(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
     let cos_t = cos2_t.sqrt();
     Refraction::Transmitted(eta * w_i + (eta * cos_i - cos_t) * m)
 }
+// END EXERCISE
 // ANCHOR_END: refract
 
 /// The critical angle (radians) for light going from index `n1` to `n2`: `asin(n2 / n1)`,

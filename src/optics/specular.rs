@@ -40,6 +40,7 @@ pub fn sample_lobe(axis: DVec3, kappa: f64, u: DVec2) -> (DVec3, f64) {
 // ANCHOR_END: lobe
 
 // ANCHOR: narrow_lobe_brdf
+// EXERCISE optics/specular narrow_lobe_brdf: the narrow lobe's BRDF, with (or, for the planted bug, without) its 1 / |cos theta_i|
 /// A glossy BRDF approaching the mirror: `f = rho lobe_kappa(w_i; R(w_o)) / |cos theta_i|`
 /// above the surface (normal `+z`), zero below. With `divide_by_cos = false` it is the
 /// planted bug: the same lobe without the `1 / |cos theta_i|`.
@@ -53,6 +54,7 @@ pub fn narrow_lobe_brdf(rho: f64, lobe_pdf: f64, w_i: DVec3, divide_by_cos: bool
         rho * lobe_pdf
     }
 }
+// END EXERCISE
 
 /// One sample of the reflected radiance `int f L |cos theta_i| dw_i` in a constant
 /// environment `L = 1`, for the outgoing direction `w_o` (unit, `z > 0`), drawing `w_i`

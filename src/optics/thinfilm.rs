@@ -141,6 +141,7 @@ pub fn phase(n2: f64, thickness_nm: f64, cos2: Complex64, wavelength_nm: f64) ->
 // ANCHOR_END: phase
 
 // ANCHOR: airy
+// EXERCISE optics/thinfilm airy_r: the Airy sum of the film's multiply reflected waves, in closed form
 /// The Airy sum of the multiply reflected waves:
 ///
 /// `r = r12 + t12 t21 r23 e^{2iδ} Σ_k (r21 r23 e^{2iδ})^k = (r12 + r23 e^{2iδ}) / (1 + r12 r23 e^{2iδ})`,
@@ -150,6 +151,7 @@ pub fn airy_r(r12: Complex64, r23: Complex64, delta: Complex64) -> Complex64 {
     let z = (2.0 * Complex64::i() * delta).exp();
     (r12 + r23 * z) / (1.0 + r12 * r23 * z)
 }
+// END EXERCISE
 
 /// The transmitted amplitude: one pass `t12 t23 e^{iδ}`, then the same geometric series,
 /// `t = t12 t23 e^{iδ} / (1 + r12 r23 e^{2iδ})`.

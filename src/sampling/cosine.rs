@@ -18,7 +18,7 @@ use super::precision::{Float, V2, V3, consts};
 /// `theta = acos(1 - 2 u1) / 2`, and `phi = 2 pi u2`.
 pub fn cosine_seed_angles(u: V2) -> V3 {
     let theta = (1.0 - 2.0 * u.x).acos() / 2.0;
-    let phi = consts::TAU * u.y;
+    let phi = u.y * consts::TAU;
     V3::new(
         theta.sin() * phi.cos(),
         theta.sin() * phi.sin(),
@@ -37,6 +37,7 @@ pub fn cosine_seed_cartesian(u: V2) -> V3 {
 // ANCHOR_END: seed_cartesian
 
 // ANCHOR: malley
+// EXERCISE sampling/cosine cosine_malley: a cosine-weighted direction by Malley's method, accurate near the rim
 /// Malley's method: a uniform point `(x, y)` of the disc lifted to `z = sqrt(1 - r^2)`.
 ///
 /// Near the rim, `1 - x^2 - y^2` loses every digit (and can round below zero: NaN). The
@@ -44,14 +45,17 @@ pub fn cosine_seed_cartesian(u: V2) -> V3 {
 /// is known exactly from `u`: `1 - r = 2 min(u1, 1 - u1, u2, 1 - u2)`, and
 /// `z = sqrt((1 - r)(1 + r))` stays positive for every `u` inside the square.
 pub fn cosine_malley(u: V2) -> V3 {
-    let p = disc_concentric(u);
+    let disc = disc_concentric(u);
     let to_rim = 2.0 * u.x.min(1.0 - u.x).min(u.y).min(1.0 - u.y);
     let z = (to_rim * (2.0 - to_rim)).max(0.0).sqrt();
-    V3::new(p.x, p.y, z)
+    V3::new(disc.x, disc.y, z)
 }
+// END EXERCISE
 // ANCHOR_END: malley
 
+// EXERCISE sampling/cosine cosine_pdf: the cosine-weighted density per steradian
 /// The cosine-weighted density `max(z, 0) / pi`, per steradian.
 pub fn cosine_pdf(w: V3) -> Float {
     w.z.max(0.0) * consts::FRAC_1_PI
 }
+// END EXERCISE

@@ -15,15 +15,18 @@ use super::precision::{Float, V2, V3, consts};
 pub const DISC_PDF: Float = 1.0 / consts::PI;
 
 // ANCHOR: polar
+// EXERCISE sampling/disc disc_polar: map the unit square to the disc with r = sqrt(u1), phi = 2 pi u2
 /// The polar map: `r = sqrt(u1)` (the inverse of the radial CDF `r^2`), `phi = 2 pi u2`.
 pub fn disc_polar(u: V2) -> V3 {
     let r = u.x.sqrt();
     let phi = consts::TAU * u.y;
     V3::new(r * phi.cos(), r * phi.sin(), 0.0)
 }
+// END EXERCISE
 // ANCHOR_END: polar
 
 // ANCHOR: concentric
+// EXERCISE sampling/disc disc_concentric: Shirley and Chiu's concentric map from the unit square to the disc
 /// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
 /// concentric circles, each square's wedge to a sector of equal angle.
 /// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
@@ -40,6 +43,7 @@ pub fn disc_concentric(u: V2) -> V3 {
     };
     V3::new(r * phi.cos(), r * phi.sin(), 0.0)
 }
+// END EXERCISE
 // ANCHOR_END: concentric
 
 /// The inverse of [`disc_polar`].

@@ -19,6 +19,7 @@ pub struct Proposal {
 }
 
 // ANCHOR: estimator
+// EXERCISE sampling/importance estimate: the importance-sampling estimator: the terms f(X)/q(X) of n draws X ~ q, 0 where q(X) = 0
 /// The importance-sampling estimator's terms `f(X) / q(X)` for `n` draws `X ~ q`,
 /// summarised (mean = the estimate; its variance and standard error come with it).
 /// A draw where `q(X) = 0` (possible only on a set of probability zero) contributes 0.
@@ -31,6 +32,7 @@ pub fn estimate(f: impl Fn(f64) -> f64, q: &Proposal, n: usize, rng: &mut Rng) -
     }
     terms
 }
+// END EXERCISE
 // ANCHOR_END: estimator
 
 // ANCHOR: proposals

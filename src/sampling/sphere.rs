@@ -29,7 +29,7 @@ pub const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
 pub fn sphere_inverse_cdf(u: V2) -> V3 {
     let z = 1.0 - 2.0 * u.x;
     let r = 2.0 * (u.x * (1.0 - u.x)).max(0.0).sqrt();
-    let phi = consts::TAU * u.y;
+    let phi = u.y * consts::TAU;
     V3::new(r * phi.cos(), r * phi.sin(), z)
 }
 // ANCHOR_END: inverse_cdf
@@ -68,7 +68,7 @@ pub fn sphere_uniform(rng: &mut Rng) -> V3 {
 /// in `(0, 1]`, so the logarithm is finite.
 pub fn box_muller(u: V2) -> (Float, Float) {
     let r = (-2.0 * (1.0 - u.x).ln()).sqrt();
-    let phi = consts::TAU * u.y;
+    let phi = u.y * consts::TAU;
     (r * phi.cos(), r * phi.sin())
 }
 
@@ -87,6 +87,7 @@ pub fn sphere_gaussian(rng: &mut Rng) -> V3 {
 // ANCHOR_END: gaussian
 
 // ANCHOR: rejection
+// EXERCISE sampling/sphere sphere_rejection: a uniform direction by rejection from the cube, with the number of draws it took
 /// Rejection: draw `v` uniformly in the cube `[-1, 1]^3` until it lies in the unit ball
 /// (and is not zero), then normalise. Returns the direction and the number of draws; the
 /// acceptance probability is the ball's share of the cube, `(4 pi / 3) / 8 = pi / 6`.
@@ -103,15 +104,18 @@ pub fn sphere_rejection(rng: &mut Rng) -> (V3, u32) {
         }
     }
 }
+// END EXERCISE
 // ANCHOR_END: rejection
 
 // ANCHOR: hemisphere
+// EXERCISE sampling/sphere hemisphere_flip: a uniform direction on the hemisphere around n: a sphere sample flipped to n's side
 /// A uniform direction on the hemisphere around `n`: a sphere sample flipped to `n`'s
 /// side. Flipping maps the sphere two-to-one onto the hemisphere, doubling the density to
 /// `1 / (2 pi)`.
 pub fn hemisphere_flip(w: V3, n: V3) -> V3 {
     if w.dot(n) < 0.0 { -w } else { w }
 }
+// END EXERCISE
 // ANCHOR_END: hemisphere
 
 /// The uniform sphere density (constant).

@@ -361,6 +361,7 @@ impl Piecewise1D {
     }
 
     // ANCHOR: constant_sample
+    // EXERCISE sampling/tabulated Piecewise1D::sample: sample the piecewise-constant table by its inverse CDF, never landing in a bin of zero mass
     /// Maps `u` in `[0, 1)` to a sample: the bin by binary search on the CDF, then the
     /// position within the bin by inverting the CDF there, which is linear.
     pub fn sample(&self, u: f64) -> Sample {
@@ -378,6 +379,7 @@ impl Piecewise1D {
             bin: i,
         }
     }
+    // END EXERCISE
     // ANCHOR_END: constant_sample
 
     /// The normalised density at `x`: `values[i] / integral` in bin `i`, 0 outside
@@ -398,9 +400,9 @@ impl Piecewise1D {
         let Some(i) = bin_containing(&self.edges, x) else {
             return 1.0;
         };
-        let (x0, x1) = (self.edges[i], self.edges[i + 1]);
-        let (c0, c1) = (self.cdf[i], self.cdf[i + 1]);
-        (c0 + (x - x0) / (x1 - x0) * (c1 - c0)).min(c1)
+        let (lo, hi) = (self.edges[i], self.edges[i + 1]);
+        let (c_lo, c_hi) = (self.cdf[i], self.cdf[i + 1]);
+        (c_lo + (x - lo) / (hi - lo) * (c_hi - c_lo)).min(c_hi)
     }
 
     /// The inverse of [`Piecewise1D::sample`]: the `u` that maps to `x`. It is the CDF
@@ -537,12 +539,13 @@ impl PiecewiseLinear1D {
     /// The density within segment `i` at `x`, linear between the knot densities:
     /// `(1 - s) a + s b`, never negative, exact at both ends.
     fn density_in(&self, i: usize, x: f64) -> f64 {
-        let (x0, x1) = (self.knots[i], self.knots[i + 1]);
-        let s = ((x - x0) / (x1 - x0)).clamp(0.0, 1.0);
+        let (lo, hi) = (self.knots[i], self.knots[i + 1]);
+        let s = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
         (1.0 - s) * self.density[i] + s * self.density[i + 1]
     }
 
     // ANCHOR: linear_sample
+    // EXERCISE sampling/tabulated PiecewiseLinear1D::sample: sample the piecewise-linear table: the segment by its CDF, then the quadratic's inverse within it
     /// Maps `u` in `[0, 1)` to a sample: the segment by binary search on the CDF, then
     /// the position within the segment by [`segment_inverse`].
     pub fn sample(&self, u: f64) -> Sample {
@@ -574,6 +577,7 @@ impl PiecewiseLinear1D {
         }
         Sample { x, pdf, bin: i }
     }
+    // END EXERCISE
     // ANCHOR_END: linear_sample
 
     /// The normalised density at `x`, 0 outside `[x_0, x_n)`.
@@ -593,14 +597,14 @@ impl PiecewiseLinear1D {
         let Some(i) = bin_containing(&self.knots, x) else {
             return 1.0;
         };
-        let (c0, c1) = (self.cdf[i], self.cdf[i + 1]);
-        if c1 == c0 {
-            return c0;
+        let (c_lo, c_hi) = (self.cdf[i], self.cdf[i + 1]);
+        if c_hi == c_lo {
+            return c_lo;
         }
-        let (x0, x1) = (self.knots[i], self.knots[i + 1]);
-        let s = ((x - x0) / (x1 - x0)).clamp(0.0, 1.0);
+        let (lo, hi) = (self.knots[i], self.knots[i + 1]);
+        let s = ((x - lo) / (hi - lo)).clamp(0.0, 1.0);
         let f = segment_cdf(self.density[i], self.density[i + 1], s);
-        (c0 + f * (c1 - c0)).min(c1)
+        (c_lo + f * (c_hi - c_lo)).min(c_hi)
     }
 
     /// The inverse of [`PiecewiseLinear1D::sample`]: the CDF.
@@ -616,6 +620,11 @@ impl PiecewiseLinear1D {
     /// The knots.
     pub fn knots(&self) -> &[f64] {
         &self.knots
+    }
+
+    /// The normalised CDF at the knots.
+    pub fn cdf_table(&self) -> &[f64] {
+        &self.cdf
     }
 
     /// Number of segments (`knots - 1`).

@@ -37,6 +37,7 @@ pub const SRGB_LINEAR_BREAK: f64 = 0.003_130_8;
 /// The breakpoint in encoded values, as the standard states it for decoding.
 pub const SRGB_ENCODED_BREAK: f64 = 0.040_45;
 
+// EXERCISE spectral/display srgb_encode: the sRGB transfer function, linear to encoded
 /// The sRGB transfer function (IEC 61966-2-1), linear `x` to encoded `V`:
 /// `V = 12.92 x` for `x ≤ 0.0031308`, `V = 1.055 x^(1/2.4) − 0.055` above.
 /// Negative and NaN inputs give 0; values above 1 are not clipped here.
@@ -49,7 +50,9 @@ pub fn srgb_encode(x: f64) -> f64 {
         0.0
     }
 }
+// END EXERCISE
 
+// EXERCISE spectral/display srgb_decode: the sRGB transfer function's inverse, encoded to linear
 /// The inverse of [`srgb_encode`]: `x = V / 12.92` for `V ≤ 0.04045`,
 /// `x = ((V + 0.055) / 1.055)^2.4` above. Negative and NaN inputs give 0.
 pub fn srgb_decode(v: f64) -> f64 {
@@ -61,6 +64,7 @@ pub fn srgb_decode(v: f64) -> f64 {
         0.0
     }
 }
+// END EXERCISE
 // ANCHOR_END: srgb
 
 // ANCHOR: quantise

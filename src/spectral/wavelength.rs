@@ -189,6 +189,7 @@ pub fn sample_visible(u: f64) -> f64 {
 // Strategies.
 
 // ANCHOR: hero_uniform
+// EXERCISE spectral/wavelength hero_uniform: N hero wavelengths rotated by 1/N of the range, each with the uniform density
 /// Hero wavelengths, uniform: lane `j` at `λ_j = λ_min + ((u + j/N) mod 1)(λ_max − λ_min)`,
 /// each with the uniform density (each `λ_j` alone is uniform, since `(u + j/N) mod 1` is).
 pub fn hero_uniform(u: f64) -> Wavelengths {
@@ -199,6 +200,7 @@ pub fn hero_uniform(u: f64) -> Wavelengths {
         hero_pdf: 1.0 / RANGE,
     }
 }
+// END EXERCISE
 // ANCHOR_END: hero_uniform
 
 // ANCHOR: hero_visible

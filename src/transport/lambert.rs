@@ -19,6 +19,7 @@ use crate::sampling::sphere::{HEMISPHERE_PDF, hemisphere_flip, sphere_inverse_cd
 use crate::stats::ttest::Summary;
 
 // ANCHOR: brdf
+// EXERCISE transport/lambert lambert_brdf: the Lambertian BRDF of albedo rho for the normal +z
 /// The Lambertian BRDF of albedo `rho` for the normal `+z`: `rho / pi` when both
 /// directions are above the surface, 0 otherwise. Symmetric in its arguments by
 /// construction (Helmholtz reciprocity).
@@ -29,6 +30,7 @@ pub fn lambert_brdf(rho: f64, wi: DVec3, wo: DVec3) -> f64 {
         0.0
     }
 }
+// END EXERCISE
 // ANCHOR_END: brdf
 
 // ANCHOR: quadrature

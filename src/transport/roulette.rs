@@ -11,12 +11,14 @@ use crate::rng::{self, Rng};
 use crate::transport::lambert::furnace_bounce_uniform;
 
 // ANCHOR: roulette
+// EXERCISE transport/roulette roulette: Russian roulette on one value, unbiased, with p = 0 never surviving
 /// Russian roulette on one value: `f / p` if `u < p`, else 0, for `u` uniform in `[0, 1)`.
 /// `u < p` (not the seed's `u <= p`) so that `p = 0` never survives (and never divides by 0)
 /// and `p = 1` always does.
 pub fn roulette(f: f64, p: f64, u: f64) -> f64 {
     if u < p { f / p } else { 0.0 }
 }
+// END EXERCISE
 // ANCHOR_END: roulette
 
 /// The seed's rule, `u <= p`: identical except at `u = p`, which for `p = 0` and `u = 0`

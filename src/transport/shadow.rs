@@ -114,6 +114,7 @@ pub struct Hit {
 }
 
 // ANCHOR: area_to_solid_angle
+// EXERCISE transport/shadow area_to_solid_angle: a density per unit area turned into one per steradian, 0 seen edge-on
 /// The change of variables from area to solid angle: a density `pdf_area` per unit area
 /// at a point at distance `dist`, whose normal makes `n . w = cos_light` with the
 /// direction towards it, is the density `pdf_area dist^2 / |cos_light|` per steradian.
@@ -126,6 +127,7 @@ pub fn area_to_solid_angle(pdf_area: f64, dist: f64, cos_light: f64) -> f64 {
     let pdf = pdf_area * dist * dist / cos_light.abs();
     if pdf.is_finite() { pdf } else { 0.0 }
 }
+// END EXERCISE
 // ANCHOR_END: area_to_solid_angle
 
 /// A light that can be sampled from a point and hit by a ray.

@@ -58,3 +58,7 @@ mod cli;
 
 /// The one writer of every file (`src/output.rs`): atomic files, sets, staged folders.
 mod output;
+
+/// The report card of the student edition: every exercise's checkers on this crate's
+/// functions, printed at the end of the run (`cargo test --test book report_card`).
+mod report_card;

@@ -12,8 +12,8 @@ use crate::optics::fresnel::{amplitudes, fresnel_polarized};
 /// The textbook formula with no special cases: `cos_t = sqrt(1 - eta^2 sin^2)` becomes
 /// NaN past the critical angle, and matched indices at grazing incidence give `0/0`.
 pub fn fresnel_naive(cos_i: f64, n1: f64, n2: f64) -> f64 {
-    let eta = n1 / n2;
-    let cos_t = (1.0 - eta * eta * (1.0 - cos_i * cos_i)).sqrt();
+    let ratio = n1 / n2;
+    let cos_t = (1.0 - ratio * ratio * (1.0 - cos_i * cos_i)).sqrt();
     let r_s = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
     let r_p = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
     0.5 * (r_s * r_s + r_p * r_p)

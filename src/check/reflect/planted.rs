@@ -27,12 +27,12 @@ pub fn seed_reflect(w_i: DVec3, n: DVec3) -> DVec3 {
 pub fn refract_without_sqrt(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
     let m = facing(w_i, n);
     let cos_i = -w_i.dot(m);
-    let eta = n1 / n2;
-    let cos2_t = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    let ratio = n1 / n2;
+    let cos2_t = 1.0 - ratio * ratio * (1.0 - cos_i * cos_i);
     if cos2_t < 0.0 {
         return Refraction::TotalInternalReflection;
     }
-    Refraction::Transmitted(eta * w_i + (eta * cos_i - cos2_t) * m)
+    Refraction::Transmitted(ratio * w_i + (ratio * cos_i - cos2_t) * m)
 }
 
 /// Refraction with the ratio of indices upside down, `eta = n2 / n1`.
@@ -45,21 +45,21 @@ pub fn refract_swapped_indices(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refrac
 pub fn refract_nan_tir(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
     let m = facing(w_i, n);
     let cos_i = -w_i.dot(m);
-    let eta = n1 / n2;
-    let cos_t = (1.0 - eta * eta * (1.0 - cos_i * cos_i)).sqrt();
-    Refraction::Transmitted(eta * w_i + (eta * cos_i - cos_t) * m)
+    let ratio = n1 / n2;
+    let cos_t = (1.0 - ratio * ratio * (1.0 - cos_i * cos_i)).sqrt();
+    Refraction::Transmitted(ratio * w_i + (ratio * cos_i - cos_t) * m)
 }
 
 /// Refraction that trusts `n` to face the light (the seed's "outward facing normal"
 /// assumption) and never flips it.
 pub fn refract_unflipped_normal(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
     let cos_i = -w_i.dot(n);
-    let eta = n1 / n2;
-    let cos2_t = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    let ratio = n1 / n2;
+    let cos2_t = 1.0 - ratio * ratio * (1.0 - cos_i * cos_i);
     if cos2_t < 0.0 {
         return Refraction::TotalInternalReflection;
     }
-    Refraction::Transmitted(eta * w_i + (eta * cos_i - cos2_t.sqrt()) * n)
+    Refraction::Transmitted(ratio * w_i + (ratio * cos_i - cos2_t.sqrt()) * n)
 }
 
 /// A reflection that returns NaN for every input. Fails `finite` and `unit_length`.

@@ -201,8 +201,8 @@ impl Table {
         match self.edges.windows(2).position(|e| x >= e[0] && x < e[1]) {
             None => 0.0,
             Some(i) if linear => {
-                let (x0, x1) = (self.edges[i], self.edges[i + 1]);
-                let s = (x - x0) / (x1 - x0);
+                let (lo, hi) = (self.edges[i], self.edges[i + 1]);
+                let s = (x - lo) / (hi - lo);
                 ((1.0 - s) * self.values[i] + s * self.values[i + 1]) / total
             }
             Some(i) => self.values[i] / total,

@@ -48,13 +48,9 @@ fn planted_gamma_inverted(x: f64) -> f64 {
     gamma_decode(x, 2.2)
 }
 
-/// Planted bug: the decoding breakpoint 0.04045 used on the linear side.
+/// Planted bug: the decoding breakpoint 0.04045 used on the linear side (the checker's).
 fn planted_breakpoint_wrong_side(x: f64) -> f64 {
-    if x > SRGB_ENCODED_BREAK {
-        1.055 * x.powf(1.0 / 2.4) - 0.055
-    } else {
-        12.92 * x.max(0.0)
-    }
+    raylemma::check::display::planted::encode_with_the_encoded_breakpoint(x)
 }
 
 fn gamma22(x: f64) -> f64 {

@@ -4,6 +4,9 @@
 //! keeps the included lines' indentation, so code inside an `impl` block or a macro that
 //! writes a function for both precisions would appear shifted right. Removing the
 //! indentation common to all non-blank lines of a block never changes what the code says.
+//!
+//! The same pass first leaves out the exercise markers of the student edition
+//! ([`crate::markers`]), which the included code carries.
 
 use anyhow::Result;
 use mdbook_driver::book::{Book, BookItem};
@@ -20,7 +23,8 @@ impl Preprocessor for Dedent {
     fn run(&self, _ctx: &PreprocessorContext, mut book: Book) -> Result<Book> {
         book.for_each_mut(|item| {
             if let BookItem::Chapter(chapter) = item {
-                chapter.content = dedent_code_blocks(&chapter.content);
+                let content = crate::markers::drop_exercise_markers(&chapter.content);
+                chapter.content = dedent_code_blocks(&content);
             }
         });
         Ok(book)

@@ -8,6 +8,7 @@
 
 mod dedent;
 mod logging;
+mod markers;
 mod math;
 /// The project's one writer of files (`src/output.rs` of the library, compiled here as it
 /// is: the book tool does not link the library). The book is made in a staging folder

@@ -11,7 +11,8 @@ use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, dispersion, display, emission, external, frame, fresnel, lambert, reflect, roulette,
+    colour, coursework, dispersion, display, emission, external, frame, fresnel, lambert, reflect,
+    roulette,
     sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
@@ -37,6 +38,7 @@ pub struct Output {
 /// Every output of every chapter, in book order.
 pub fn all() -> Vec<Output> {
     let mut outputs = Vec::new();
+    outputs.extend(coursework::outputs());
     outputs.extend(sphere::outputs());
     outputs.extend(stats::outputs());
     outputs.extend(sampling::outputs());

@@ -14,6 +14,7 @@ mod render;
 mod timing;
 
 mod colour;
+mod coursework;
 mod dispersion;
 mod display;
 mod emission;

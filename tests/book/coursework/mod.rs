@@ -1,7 +1,15 @@
 //! Tests of chapter *Coursework*: the verdict a checker returns, as a student reads it
 //! (a claim with no cases fails, a NaN error fails and stays visible, the worst failure is
 //! reported beside the first), the one `Options` every checker takes, and `max_abs`, which
-//! keeps a NaN.
+//! keeps a NaN. The student edition (markers, stubs, the scrubber, `raylemma exercises`)
+//! is tested in [`edition`], the new checkers on the seeds' mistakes in [`checkers`].
+
+mod checkers;
+mod edition;
+/// The chapter's test file of one's own, shown by anchor.
+mod mine;
+/// The chapter's look inside a chi-squared test (shared with the figure job).
+mod rows;
 
 use raylemma::check::reflect::{self, REFLECTION_SEED, REFRACTION_SEED};
 use raylemma::check::{Finding, Options, Verdict, max_abs};

@@ -1,0 +1,290 @@
+//! The report card: every exercise's checkers run on the crate's own functions, one
+//! exercise at a time, each isolated from the others' panics. Chapter: *Coursework*
+//! (`chapters/coursework.md`).
+//!
+//! An exercise is *not started* when its own stub panics ([`super::todo`]), *waiting*
+//! when the stub of an exercise it calls panics first, *failing* when a checker's verdict
+//! fails (the card lists each failed claim with its count and worst error against the
+//! bound) or its code panics, and *passing* when every verdict passes. The edition's
+//! `cargo test` prints the card at its very end (`tests/book/report_card.rs`).
+
+use std::cell::Cell;
+use std::fmt;
+use std::panic::{self, AssertUnwindSafe};
+use std::sync::Once;
+
+use super::marker::Marker;
+use super::registry::{self, LATER};
+use crate::check::Verdict;
+
+/// Where an exercise stands.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Status {
+    /// Every verdict passed.
+    Passing,
+    /// A verdict failed (one line per failed claim) or the code panicked (its message).
+    Failing(Vec<String>),
+    /// The stub of another exercise, named here, panicked first.
+    Waiting(String),
+    /// Its own stub panicked.
+    NotStarted,
+    /// No checks are registered for it (a mistake of the crate, not the student's).
+    Unchecked,
+}
+
+impl Status {
+    /// The status in the card's first column.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Status::Passing => "passing",
+            Status::Failing(_) => "failing",
+            Status::Waiting(_) => "waiting",
+            Status::NotStarted => "not started",
+            Status::Unchecked => "unchecked",
+        }
+    }
+}
+
+/// One exercise on the card.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The exercise.
+    pub name: String,
+    /// Its chapter (`sampling/disc`).
+    pub chapter: String,
+    /// Its file.
+    pub file: String,
+    /// Where it stands.
+    pub status: Status,
+    /// What finishing it unlocks (exercises, then later checks).
+    pub unlocks: Vec<&'static str>,
+}
+
+/// The report card.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Card {
+    /// One row per exercise, in the book's order.
+    pub rows: Vec<Row>,
+    /// Registry entries with no marker (mistakes of the crate).
+    pub problems: Vec<String>,
+}
+
+thread_local! {
+    /// True while this thread runs an exercise's checks: its panics are the card's to
+    /// report, not the panic hook's to print.
+    static QUIET: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Installs, once, a panic hook that stays silent on a thread running the card's checks
+/// and defers to the hook that was there (libtest's capture, or the default) elsewhere.
+fn quiet_hook() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let previous = panic::take_hook();
+        panic::set_hook(Box::new(move |info| {
+            if !QUIET.with(Cell::get) {
+                previous(info);
+            }
+        }));
+    });
+}
+
+/// The status of the exercise `name` from running `check` (with panics caught).
+pub fn judge(name: &str, check: &dyn Fn() -> Vec<Verdict>) -> Status {
+    quiet_hook();
+    QUIET.with(|q| q.set(true));
+    let result = panic::catch_unwind(AssertUnwindSafe(check));
+    QUIET.with(|q| q.set(false));
+    match result {
+        Ok(verdicts) if verdicts.iter().all(Verdict::passed) && !verdicts.is_empty() => {
+            Status::Passing
+        }
+        Ok(verdicts) => Status::Failing(verdicts.iter().flat_map(failed_claims).collect()),
+        Err(payload) => {
+            let message = super::panic_message(payload.as_ref());
+            match super::not_started(&message) {
+                Some(n) if n == name => Status::NotStarted,
+                Some(other) => Status::Waiting(other.to_string()),
+                None => Status::Failing(vec![format!("panicked: {}", first_line(&message))]),
+            }
+        }
+    }
+}
+
+fn first_line(text: &str) -> &str {
+    text.lines().next().unwrap_or("")
+}
+
+/// One line per failed claim of `verdict`: which claim, in how many cases, and by how
+/// much (the worst error against its bound).
+pub fn failed_claims(verdict: &Verdict) -> Vec<String> {
+    if verdict.findings.is_empty() {
+        return vec![format!("{}: no claim was checked", verdict.subject)];
+    }
+    verdict
+        .findings
+        .iter()
+        .filter(|f| !f.passed())
+        .map(|f| {
+            let mut line = format!(
+                "{}: claim `{}` failed in {}/{} cases",
+                verdict.subject, f.name, f.failures, f.cases
+            );
+            if let Some((worst, bound)) = f.worst {
+                line.push_str(&format!(", worst error {worst:.3e} (bound {bound:.3e})"));
+            }
+            line
+        })
+        .collect()
+}
+
+/// The card of the exercises `markers` (in their order), each with the status `status`
+/// gives it (the figure job's demonstration card judges planted mistakes this way).
+pub fn run_with(markers: &[Marker], status: impl Fn(&Marker) -> Status) -> Card {
+    let rows = markers
+        .iter()
+        .map(|m| Row {
+            name: m.name.clone(),
+            chapter: m.chapter.clone(),
+            file: m.file.clone(),
+            status: status(m),
+            unlocks: registry::unlocks(&m.name),
+        })
+        .collect();
+    Card {
+        rows,
+        problems: Vec::new(),
+    }
+}
+
+/// The card of the exercises `markers`, each judged by its checks in
+/// [`registry::EXERCISES`] run on the crate's own functions; a registry entry that no
+/// marker names is a problem of the card.
+pub fn run(markers: &[Marker]) -> Card {
+    let mut card = run_with(markers, |m| match registry::find(&m.name) {
+        Some(e) => judge(e.name, &e.check),
+        None => Status::Unchecked,
+    });
+    card.problems = registry::EXERCISES
+        .iter()
+        .filter(|e| !markers.iter().any(|m| m.name == e.name))
+        .map(|e| {
+            format!(
+                "the registry checks `{}`, which no // EXERCISE marker names",
+                e.name
+            )
+        })
+        .collect();
+    card
+}
+
+impl Card {
+    /// How many rows have the status `label`.
+    pub fn count(&self, label: &str) -> usize {
+        self.rows
+            .iter()
+            .filter(|r| r.status.label() == label)
+            .count()
+    }
+
+    /// True iff every exercise passes and the registry matches the markers.
+    pub fn passed(&self) -> bool {
+        self.problems.is_empty() && self.rows.iter().all(|r| r.status == Status::Passing)
+    }
+
+    /// The counts: `3 passing, 2 failing, 19 not started (24 exercises)`.
+    pub fn total(&self) -> String {
+        let mut parts = vec![format!("{} passing", self.count("passing"))];
+        for label in ["failing", "waiting", "not started", "unchecked"] {
+            let n = self.count(label);
+            if n > 0 {
+                parts.push(format!("{n} {label}"));
+            }
+        }
+        format!("{} ({} exercises)", parts.join(", "), self.rows.len())
+    }
+}
+
+impl fmt::Display for Card {
+    fn fmt(&self, out: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            out,
+            "REPORT CARD: {} of {} exercises pass",
+            self.count("passing"),
+            self.rows.len()
+        )?;
+        let name_width = self
+            .rows
+            .iter()
+            .map(|r| r.name.len())
+            .max()
+            .unwrap_or(8)
+            .max(8);
+        let chapter_width = self
+            .rows
+            .iter()
+            .map(|r| r.chapter.len())
+            .max()
+            .unwrap_or(7)
+            .max(7);
+        writeln!(
+            out,
+            "  {:<11}  {:<name_width$}  {:<chapter_width$}  unlocks",
+            "status", "exercise", "chapter"
+        )?;
+        for r in &self.rows {
+            let unlocks = if r.unlocks.is_empty() {
+                "-".to_string()
+            } else {
+                r.unlocks.join(", ")
+            };
+            writeln!(
+                out,
+                "  {:<11}  {:<name_width$}  {:<chapter_width$}  {unlocks}",
+                r.status.label(),
+                r.name,
+                r.chapter
+            )?;
+            match &r.status {
+                Status::Failing(lines) => {
+                    for line in lines {
+                        writeln!(out, "      {line}")?;
+                    }
+                }
+                Status::Waiting(other) => writeln!(out, "      waiting for `{other}`")?,
+                Status::Unchecked => writeln!(out, "      no checks are registered for it")?,
+                _ => {}
+            }
+        }
+        for p in &self.problems {
+            writeln!(out, "  problem: {p}")?;
+        }
+        for later in LATER {
+            let missing: Vec<&str> = later
+                .needs
+                .iter()
+                .copied()
+                .filter(|n| {
+                    self.rows
+                        .iter()
+                        .any(|r| r.name == *n && r.status != Status::Passing)
+                })
+                .collect();
+            if !missing.is_empty() {
+                writeln!(
+                    out,
+                    "  {} ({}) needs {} more: {}",
+                    later.name,
+                    later.command,
+                    missing.len(),
+                    missing.join(", ")
+                )?;
+            }
+        }
+        writeln!(out, "total: {}", self.total())?;
+        write!(
+            out,
+            "one chapter's tests: cargo test --test book CHAPTER (e.g. sampling::disc); this card alone: cargo test --test book report_card"
+        )
+    }
+}

@@ -1,0 +1,393 @@
+//! Which checkers judge each exercise, and what each exercise unlocks. Chapter:
+//! *Coursework* (`chapters/coursework.md`).
+//!
+//! Every exercise marked in the source ([`super::marker`]) has one entry in [`EXERCISES`],
+//! under the same name: the checkers of its chapter run on the crate's own function, the
+//! one the student writes, at the settings of the chapter's tests. `needs` lists the other
+//! exercises whose functions the checks call (a stub there makes this one *waiting*);
+//! [`LATER`] lists the chapter tests that need exercises (the renderer uses nearly all of
+//! them). The card ([`super::card`]) reads both to say what each exercise unlocks.
+
+use glam::DVec3;
+
+use crate::check::warp::{self, Domain, RngWarp, SquareWarp};
+use crate::check::{self, Options, Verdict};
+use crate::geometry::sphere as sphere64;
+use crate::optics::{dispersion, fresnel, reflect, specular, thinfilm};
+use crate::sampling::{cosine, disc, importance, sphere, tabulated};
+use crate::single;
+use crate::spectral::{display, wavelength};
+use crate::transport::{lambert, roulette, shadow};
+
+/// One exercise's checks.
+#[derive(Clone, Copy)]
+pub struct Exercise {
+    /// The name of its marker.
+    pub name: &'static str,
+    /// The exercises whose functions its checks call.
+    pub needs: &'static [&'static str],
+    /// Runs its checkers on the crate's function; every verdict must pass.
+    pub check: fn() -> Vec<Verdict>,
+}
+
+/// A later check that needs exercises: what to run, and which exercises it needs.
+#[derive(Clone, Copy)]
+pub struct Later {
+    /// A short name for the card (`renderer`).
+    pub name: &'static str,
+    /// The command that runs it.
+    pub command: &'static str,
+    /// The exercises its code calls.
+    pub needs: &'static [&'static str],
+}
+
+/// The chapters' tests that call exercises of other chapters.
+pub const LATER: &[Later] = &[
+    Later {
+        name: "renderer",
+        command: "cargo test --test book renderer",
+        needs: &[
+            "intersect_stable",
+            "disc_concentric",
+            "cosine_malley",
+            "reflect",
+            "refract",
+            "amplitudes",
+            "roulette",
+            "area_to_solid_angle",
+            "Sellmeier::index",
+            "Piecewise1D::sample",
+            "hero_uniform",
+            "srgb_encode",
+        ],
+    },
+    Later {
+        name: "specular furnace",
+        command: "cargo test --test book optics::specular",
+        needs: &["intersect_stable", "reflect", "refract", "amplitudes"],
+    },
+    Later {
+        name: "white furnace",
+        command: "cargo test --test book transport::lambert",
+        needs: &["lambert_brdf", "cosine_malley", "hemisphere_flip"],
+    },
+];
+
+/// The claim on rejection's cost: the mean number of draws per direction is the cube's
+/// volume over the ball's, `6 / pi` (one-sample t-test at the suite's level).
+fn acceptance() -> Verdict {
+    let mut rng = crate::rng::seeded(warp::SEED);
+    let tries = crate::stats::ttest::Summary::of(
+        (0..200_000).map(|_| f64::from(sphere::sphere_rejection(&mut rng).1)),
+    );
+    let want = 6.0 / std::f64::consts::PI;
+    let p = crate::stats::ttest::one_sample(&tries, want).map_or(0.0, |t| t.p_value);
+    let mut finding = check::Finding::new("draws", "the mean number of draws is 6 / pi");
+    finding.record(p >= crate::stats::test_alpha(), || {
+        format!(
+            "{} draws per direction on average over {} directions (p = {p:.3e})",
+            tries.mean, tries.n
+        )
+    });
+    let mut verdict = Verdict::new("sphere by rejection: its cost");
+    verdict.findings.push(finding);
+    verdict
+}
+
+/// The sampler tests' options: 400 000 samples, the warp checker's seed.
+fn warp_options() -> Options {
+    Options::default().cases(warp::TEST_SAMPLES)
+}
+
+/// The claims of the reflectance checker that an approximation such as Schlick's must
+/// keep (it cannot keep `energy` or `matched`: it approximates).
+pub const SCHLICK_KEEPS: [&str; 5] = ["range", "normal", "grazing", "tir", "reciprocity"];
+
+/// `verdict` with only the findings named `keep`, its subject saying so.
+pub fn only(mut verdict: Verdict, keep: &[&str], why: &str) -> Verdict {
+    verdict.findings.retain(|f| keep.contains(&f.name.as_str()));
+    verdict.subject = format!("{} ({why})", verdict.subject);
+    verdict
+}
+
+/// Every exercise, by name (the card orders them as the markers are, in the book's order).
+pub const EXERCISES: &[Exercise] = &[
+    Exercise {
+        name: "intersect_stable",
+        needs: &[],
+        check: || {
+            let o = Options::default();
+            vec![
+                check::sphere::intersection(&sphere64::intersect_stable, &o),
+                check::sphere::intersection(&single::geometry::sphere::intersect_stable, &o),
+                check::sphere::far(&single::geometry::sphere::intersect_stable, &o),
+            ]
+        },
+    },
+    Exercise {
+        name: "estimate",
+        needs: &[],
+        check: || {
+            let estimate = |f: &dyn Fn(f64) -> f64, q: &importance::Proposal, n, rng: &mut _| {
+                importance::estimate(f, q, n, rng)
+            };
+            vec![check::importance::estimator(&estimate, &Options::default())]
+        },
+    },
+    Exercise {
+        name: "sphere_rejection",
+        needs: &[],
+        check: || {
+            let w = RngWarp {
+                name: "sphere by rejection".to_string(),
+                domain: Domain::Sphere,
+                sample: |rng: &mut _| sphere::sphere_rejection(rng).0,
+                pdf: sphere::sphere_pdf,
+            };
+            vec![warp::check(&w, &warp_options()), acceptance()]
+        },
+    },
+    Exercise {
+        name: "hemisphere_flip",
+        needs: &[],
+        check: || {
+            let tilted = DVec3::new(0.3, -0.5, 0.8).normalize();
+            [DVec3::Z, tilted]
+                .into_iter()
+                .map(|n| {
+                    let w = RngWarp {
+                        name: format!("hemisphere around {n:.3}"),
+                        domain: Domain::Sphere,
+                        sample: move |rng: &mut _| {
+                            sphere::hemisphere_flip(sphere::sphere_gaussian(rng), n)
+                        },
+                        pdf: move |w| sphere::hemisphere_pdf(w, n),
+                    };
+                    warp::check(&w, &warp_options())
+                })
+                .collect()
+        },
+    },
+    Exercise {
+        name: "disc_polar",
+        needs: &[],
+        check: || {
+            let w = SquareWarp::new("disc polar", Domain::Disc, disc::disc_polar, disc::disc_pdf)
+                .inverse(disc::disc_polar_invert);
+            vec![warp::check(&w, &warp_options())]
+        },
+    },
+    Exercise {
+        name: "disc_concentric",
+        needs: &[],
+        check: || {
+            let w = SquareWarp::new(
+                "disc concentric",
+                Domain::Disc,
+                disc::disc_concentric,
+                disc::disc_pdf,
+            )
+            .inverse(disc::disc_concentric_invert);
+            vec![warp::check(&w, &warp_options())]
+        },
+    },
+    Exercise {
+        name: "cosine_malley",
+        needs: &["disc_concentric", "cosine_pdf"],
+        check: || {
+            let w = SquareWarp::new(
+                "cosine Malley",
+                Domain::Sphere,
+                cosine::cosine_malley,
+                cosine::cosine_pdf,
+            );
+            vec![warp::check(&w, &warp_options())]
+        },
+    },
+    Exercise {
+        name: "cosine_pdf",
+        needs: &[],
+        check: || {
+            let w = SquareWarp::new(
+                "cosine pdf (the seed's Cartesian sampler)",
+                Domain::Sphere,
+                cosine::cosine_seed_cartesian,
+                cosine::cosine_pdf,
+            );
+            vec![warp::check(&w, &warp_options())]
+        },
+    },
+    Exercise {
+        name: "Piecewise1D::sample",
+        needs: &[],
+        check: || {
+            let sample = |t: &tabulated::Piecewise1D, u| t.sample(u);
+            vec![check::tabulated::sampler(&sample, &Options::default())]
+        },
+    },
+    Exercise {
+        name: "PiecewiseLinear1D::sample",
+        needs: &[],
+        check: || {
+            let sample = |t: &tabulated::PiecewiseLinear1D, u| t.sample(u);
+            vec![check::tabulated::linear_sampler(
+                &sample,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "reflect",
+        needs: &[],
+        check: || {
+            vec![check::reflect::reflection(
+                &reflect::reflect,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "refract",
+        needs: &[],
+        check: || {
+            vec![check::reflect::refraction(
+                &reflect::refract,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "amplitudes",
+        needs: &[],
+        check: || {
+            vec![check::fresnel::reflectance(
+                &fresnel::fresnel_dielectric,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "fresnel_transmittance",
+        needs: &[],
+        check: || {
+            // Judged as a reflectance, R = 1 - T: the energy claim compares T with the
+            // checker's own transmittance, and the others hold R to its exact values.
+            let r = |c, n1, n2| 1.0 - fresnel::fresnel_transmittance(c, n1, n2).unpolarized();
+            let mut v = check::fresnel::reflectance(&r, &Options::default());
+            v.subject = "transmittance, as R = 1 - T".to_string();
+            vec![v]
+        },
+    },
+    Exercise {
+        name: "schlick",
+        needs: &[],
+        check: || {
+            let v = check::fresnel::reflectance(&fresnel::schlick, &Options::default());
+            vec![only(v, &SCHLICK_KEEPS, "the claims an approximation keeps")]
+        },
+    },
+    Exercise {
+        name: "narrow_lobe_brdf",
+        needs: &[],
+        check: || {
+            let f = |rho, pdf, w_i: DVec3| specular::narrow_lobe_brdf(rho, pdf, w_i, true);
+            vec![check::specular::delta(&f, &Options::default())]
+        },
+    },
+    Exercise {
+        name: "Sellmeier::index",
+        needs: &[],
+        check: || {
+            let f = |m: &dispersion::Sellmeier, nm| m.index(nm);
+            vec![check::dispersion::sellmeier(&f, &Options::default())]
+        },
+    },
+    Exercise {
+        name: "airy_r",
+        needs: &[],
+        check: || {
+            vec![check::thinfilm::airy(
+                &thinfilm::airy_r,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "lambert_brdf",
+        needs: &[],
+        check: || {
+            vec![check::lambert::brdf(
+                &lambert::lambert_brdf,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "roulette",
+        needs: &[],
+        check: || {
+            vec![check::roulette::roulette(
+                &roulette::roulette,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "area_to_solid_angle",
+        needs: &[],
+        check: || {
+            vec![check::shadow::area_to_solid_angle(
+                &shadow::area_to_solid_angle,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "hero_uniform",
+        needs: &[],
+        check: || {
+            vec![check::wavelength::hero(
+                &wavelength::hero_uniform,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "srgb_encode",
+        needs: &[],
+        check: || {
+            vec![check::display::srgb_encode(
+                &display::srgb_encode,
+                &Options::default(),
+            )]
+        },
+    },
+    Exercise {
+        name: "srgb_decode",
+        needs: &[],
+        check: || {
+            vec![check::display::srgb_decode(
+                &display::srgb_decode,
+                &Options::default(),
+            )]
+        },
+    },
+];
+
+/// The entry of the exercise `name`.
+pub fn find(name: &str) -> Option<&'static Exercise> {
+    EXERCISES.iter().find(|e| e.name == name)
+}
+
+/// What finishing `name` unlocks: the exercises that need it, then the later checks.
+pub fn unlocks(name: &str) -> Vec<&'static str> {
+    let exercises = EXERCISES
+        .iter()
+        .filter(|e| e.needs.contains(&name))
+        .map(|e| e.name);
+    let later = LATER
+        .iter()
+        .filter(|l| l.needs.contains(&name))
+        .map(|l| l.name);
+    exercises.chain(later).collect()
+}
