@@ -53,13 +53,9 @@ pub fn offset_origin(p: DVec3, n: DVec3, dir: DVec3) -> DVec3 {
 }
 // ANCHOR_END: offset
 
-fn lanes(f: impl Fn(usize) -> f64) -> Lanes {
-    std::array::from_fn(f)
-}
-
 /// The emission of light `k` at the path's wavelengths.
 fn emission(tracer: &Tracer, k: usize, wl: &Wavelengths) -> Lanes {
-    lanes(|j| tracer.emission(k, wl.lambda[j]))
+    tracer.emission(k, &wl.lambda)
 }
 
 /// Spectra evaluated at the path's wavelengths once per path: a path's wavelengths never
@@ -86,6 +82,7 @@ impl<const K: usize> PerPath<K> {
 /// The radiance arriving at `o` from the direction `-d` (`d` of unit length), at the
 /// wavelengths `wl`, estimated along one path. `wl` may be changed: a dispersive
 /// refraction terminates the secondary lanes.
+#[inline(always)]
 pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &mut Rng) -> Lanes {
     let scene = tracer.scene;
     let s = &scene.settings;
@@ -137,9 +134,7 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                 // Shade on the side the ray arrived from (two-sided).
                 let n = if n.dot(d) < 0.0 { n } else { -n };
                 let material = scene.shapes[i].material;
-                let rho = reflectances.get(material, || {
-                    lanes(|j| tracer.reflectance(material, wl.lambda[j]))
-                });
+                let rho = reflectances.get(material, || tracer.reflectance(material, &wl.lambda));
                 let po = offset_origin(p, n, n);
                 let (u_pick, u_light, u_bsdf) = (
                     rng.random::<f64>(),

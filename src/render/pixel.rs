@@ -45,6 +45,7 @@ pub fn sample_xyz(l: &Lanes, wl: &Wavelengths) -> DVec3 {
 pub type WavelengthSampler<'a> = &'a (dyn Fn(f64) -> Wavelengths + Sync);
 
 /// Renders pixel `(x, y)` with `spp` samples: the mean and variance of its linear sRGB.
+#[inline(always)]
 pub fn render_pixel(
     tracer: &Tracer,
     camera: &Camera,

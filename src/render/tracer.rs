@@ -134,12 +134,23 @@ impl Lookup {
         }
     }
 
+    /// The values at every wavelength of `nm` (one match for all of them).
     #[inline]
-    fn eval(&self, nm: f64) -> f64 {
+    fn eval_all<const K: usize>(&self, nm: &[f64; K]) -> [f64; K] {
+        let mut out = [0.0; K];
         match self {
-            Lookup::Dense(d) => d.eval(nm),
-            Lookup::As(s) => s.eval(nm),
+            Lookup::Dense(d) => {
+                for (o, &l) in out.iter_mut().zip(nm) {
+                    *o = d.eval(l);
+                }
+            }
+            Lookup::As(s) => {
+                for (o, &l) in out.iter_mut().zip(nm) {
+                    *o = s.eval(l);
+                }
+            }
         }
+        out
     }
 }
 
@@ -211,17 +222,20 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// The reflectance of material `m` (a Lambertian one) at `nm`: its spectrum's value,
-    /// read from the dense form where it has one.
+    /// The reflectance of material `m` (a Lambertian one) at the wavelengths `nm`: its
+    /// spectrum's values, read from the dense form where it has one.
     #[inline]
-    pub fn reflectance(&self, m: usize, nm: f64) -> f64 {
-        self.reflectance[m].as_ref().map_or(0.0, |r| r.eval(nm))
+    pub fn reflectance<const K: usize>(&self, m: usize, nm: &[f64; K]) -> [f64; K] {
+        match &self.reflectance[m] {
+            Some(r) => r.eval_all(nm),
+            None => [0.0; K],
+        }
     }
 
-    /// The emission of light `k` at `nm`, likewise.
+    /// The emission of light `k` at the wavelengths `nm`, likewise.
     #[inline]
-    pub fn emission(&self, k: usize, nm: f64) -> f64 {
-        self.emission[k].eval(nm)
+    pub fn emission<const K: usize>(&self, k: usize, nm: &[f64; K]) -> [f64; K] {
+        self.emission[k].eval_all(nm)
     }
 
     /// The first surface along the ray from `o` in the unit direction `d`.

@@ -12,8 +12,8 @@ use raylemma::output::{self, FileSet};
 use crate::plot::BoxError;
 use crate::{
     colour, coursework, dispersion, display, emission, external, frame, fresnel, lambert, reflect,
-    roulette,
-    sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
+    roulette, sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample,
+    wavelength,
 };
 
 /// Options shared by all figures.
