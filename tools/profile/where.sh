@@ -11,7 +11,7 @@ root="$(cd "$here/../.." && pwd)"
 command -v valgrind >/dev/null || { echo "where.sh: needs valgrind (apt-get install valgrind)" >&2; exit 2; }
 work="${TMPDIR:-/tmp}/raylemma-profile"
 mkdir -p "$work"
-target="${CARGO_TARGET_DIR:-$root/target}-profile"
+target="${CARGO_TARGET_DIR:-$root/target}/profile-build"
 CARGO_TARGET_DIR="$target" CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
   cargo build --release --quiet -p raylemma --manifest-path "$root/Cargo.toml"
 sed -e 's/^spp = .*/spp = 8\nroulette_depth = 5/' -e 's/^resolution = .*/resolution = [128, 128]/' \
