@@ -37,7 +37,8 @@ enum Cmd {
     /// Render a scene file: SCENE.exr (linear sRGB and the variance of each pixel's mean),
     /// SCENE.png (display) and SCENE.json (scene hash, spp, seed, time, version) in --out.
     Render(cmd::render::RenderArgs),
-    /// Do two renders (EXR with variance channels) agree within their noise? Exit status 0
+    /// Does a candidate agree with a reference render within their noise? The candidate is
+    /// one EXR with variance channels or several independent plain RGB EXRs. Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
     Compare(cmd::compare::CompareArgs),
 }
