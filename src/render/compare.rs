@@ -9,16 +9,13 @@
 //!
 //! Under the hypothesis that both estimate the same expected image, in every pixel and
 //! channel the difference `d = a - b` has the estimated variance `v = v_a + v_b`, and
-//! `t = d / sqrt(v)` follows Student's t with the Welch–Satterthwaite degrees of freedom
-//!
-//! `ν = v² / (v_a² / ν_a + v_b² / ν_b)`
-//!
-//! (a normal `z` when both `ν` are infinite). The same holds for the mean of a block of
-//! pixels, `d̄ = Σ d_i / n` with `v̄ = Σ v_i / n²` and `ν = (Σ v_i)² / Σ (v_ai² / ν_a +
-//! v_bi² / ν_b)`, because the pixels are independent; and for the whole image's mean.
-//! Three families of two-sided tests (every pixel and channel, the means of square blocks,
-//! the whole image's mean per channel), each with its own `ν`, are held together by
-//! Šidák's correction at the chance `alpha` of a false alarm for two correct renders.
+//! `t = d / sqrt(v)` is compared with Student's t: with the smaller of the two sides'
+//! degrees of freedom for a pixel (conservative, [`pixel_dof`]), and for the mean of a
+//! block of pixels or of the whole image, `d̄ = Σ d_i / n` with `v̄ = Σ v_i / n²` (the
+//! pixels are independent), with the Welch–Satterthwaite degrees of freedom of that sum
+//! ([`region_dof`]). Three families of two-sided tests (every pixel and channel, the means
+//! of square blocks, the whole image's mean per channel) are held together by Šidák's
+//! correction at the chance `alpha` of a false alarm for two correct renders.
 //!
 //! Normal critical values with a variance from few samples are wrong by orders of
 //! magnitude: with `ν = 15` the tail beyond the normal critical value of a million tests
@@ -133,7 +130,9 @@ pub struct Region {
     pub z: f64,
     /// Which channel (0 R, 1 G, 2 B).
     pub channel: usize,
-    /// The Welch–Satterthwaite degrees of freedom of that channel's test.
+    /// The z of every channel.
+    pub zs: DVec3,
+    /// The degrees of freedom of that channel's test ([`region_dof`]).
     pub dof: f64,
     /// The RMS difference over the region's pixels and channels.
     pub rmse: f64,
@@ -212,7 +211,7 @@ impl Comparison {
         let (lo, median) = self.pixel_dof;
         if median.is_finite() {
             s += &format!(
-                "pixel tests: Student's t with Welch-Satterthwaite degrees of freedom, median {median:.1} (smallest {lo:.1}): |t| > {:.3} fails at the median\n",
+                "pixel tests: Student's t with {median:.0} degrees of freedom (the smaller side's; smallest {lo:.0}): |t| > {:.3} fails\n",
                 t_critical(self.level, median)
             );
         } else {
@@ -301,26 +300,55 @@ pub fn equivalent_z(d: f64, v: f64, dof: f64) -> f64 {
 }
 // ANCHOR_END: equivalent_z
 
-/// Welch–Satterthwaite for a sum of independent variance estimates: `(Σ v)² / Σ v_k² /
-/// ν_k`, computed with the shares `v_k / Σ v` so that tiny variances cannot underflow.
-/// Infinite when every estimate is exact, or when the sum is 0.
-fn satterthwaite(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
+// ANCHOR: dof
+/// The degrees of freedom of one pixel's test, whose variance `v_a + v_b` sums two
+/// estimates: the smaller of their degrees of freedom (of those that are not 0). Always
+/// conservative: `t = d / sqrt(v̂)` has a tail no heavier than Student's with that many,
+/// whatever the two variances' shares (`(1 - w) + w X` is less spread than `X`, in the
+/// convex order, for `X = χ²_ν / ν`, and `P(Z² > c y)` is convex in `y`). The plug-in
+/// Welch–Satterthwaite value is not: with two images its estimate of `ν` is large exactly
+/// when the candidate's variance happens to come out small.
+pub fn pixel_dof(terms: [(f64, f64); 2]) -> f64 {
+    terms
+        .iter()
+        .filter(|(v, _)| *v > 0.0)
+        .map(|(_, dof)| *dof)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The degrees of freedom of a region's mean, whose variance sums many independent
+/// estimates `v_k` with `ν_k` degrees of freedom each: Welch–Satterthwaite,
+/// `(Σ v)² / Σ v_k² / ν_k`, with each `v_k²` replaced by its unbiased estimate
+/// `v̂_k² ν_k / (ν_k + 2)` (a variance estimate's square overestimates the square of the
+/// variance by `1 + 2 / ν`), and never below the smallest `ν_k`, which bounds the true
+/// value from below. Computed with the shares `v_k / Σ v`, so that tiny variances cannot
+/// underflow; infinite when every estimate is exact, or when the sum is 0.
+pub fn region_dof(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
     let total: f64 = terms.clone().map(|(v, _)| v).sum();
     if !(total > 0.0) {
         return f64::INFINITY;
     }
-    let denom: f64 = terms
-        .filter(|(_, dof)| dof.is_finite())
-        .map(|(v, dof)| (v / total).powi(2) / dof)
-        .sum();
-    1.0 / denom
+    let (denom, least) =
+        terms
+            .filter(|(v, _)| *v > 0.0)
+            .fold((0.0, f64::INFINITY), |(sum, least), (v, dof)| {
+                let share = if dof.is_finite() {
+                    (v / total).powi(2) / (dof + 2.0)
+                } else {
+                    0.0
+                };
+                (sum + share, least.min(dof))
+            });
+    (1.0 / denom).max(least)
 }
+// ANCHOR_END: dof
 
 // ANCHOR: compare
 /// Compares `a` and `b` at family-wise level `alpha`: every pixel and channel, the means
 /// of [`BLOCK`] x [`BLOCK`] blocks and the whole image's mean, each a two-sided test of
-/// `t = d / sqrt(v_a + v_b)` against Student's t with its Welch–Satterthwaite degrees of
-/// freedom, Šidák-corrected over all of them.
+/// `t = d / sqrt(v_a + v_b)` against Student's t with its degrees of
+/// freedom ([`pixel_dof`] for a pixel, [`region_dof`] for a region), Šidák-corrected over
+/// all of them.
 ///
 /// # Errors
 /// If the sizes differ, `alpha` is not in (0, 1), a degree of freedom is not positive, a
@@ -365,7 +393,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
         let mut z = DVec3::ZERO;
         for c in 0..3 {
             let (va, vb) = (ia.var[i][c], ib.var[i][c]);
-            let dof = satterthwaite([(va, na), (vb, nb)].into_iter());
+            let dof = pixel_dof([(va, na), (vb, nb)]);
             z[c] = equivalent_z(d[c], va + vb, dof);
             dofs.push(dof);
             sum_d2 += d[c] * d[c];
@@ -392,12 +420,14 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
         };
         let n = pixels().count() as f64;
         let mut best = (0.0_f64, 0usize, f64::INFINITY);
+        let mut zs = DVec3::ZERO;
         for c in 0..3 {
             let d: f64 = pixels().map(|i| ia.mean[i][c] - ib.mean[i][c]).sum::<f64>() / n;
             let terms = pixels().flat_map(|i| [(ia.var[i][c], na), (ib.var[i][c], nb)]);
             let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
-            let dof = satterthwaite(terms);
+            let dof = region_dof(terms);
             let z = equivalent_z(d, v, dof);
+            zs[c] = z;
             if c == 0 || z.abs() > best.0.abs() || z.is_nan() {
                 best = (z, c, dof);
             }
@@ -410,6 +440,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
             y: y0,
             z: best.0,
             channel: best.1,
+            zs,
             dof: best.2,
             rmse: (d2 / (3.0 * n)).sqrt(),
         }
@@ -459,7 +490,7 @@ fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64); 3] {
             .zip(&ib.var)
             .flat_map(|(p, q)| [(p[c], na), (q[c], nb)]);
         let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
-        let dof = satterthwaite(terms);
+        let dof = region_dof(terms);
         (equivalent_z(d, v, dof), dof)
     })
 }

@@ -47,6 +47,7 @@ mod spectral {
 }
 
 mod renderer {
+    pub(crate) mod compare;
     mod render;
     mod scene;
     mod testing;
