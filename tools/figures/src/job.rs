@@ -11,8 +11,8 @@ use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette, sampling,
-    shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
+    colour, compare, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette,
+    sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -55,6 +55,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(emission::outputs());
     outputs.extend(display::outputs());
     outputs.extend(upsample::outputs());
+    outputs.extend(compare::outputs());
     outputs.extend(testing::outputs());
     outputs
 }

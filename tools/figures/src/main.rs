@@ -14,6 +14,7 @@ mod render;
 mod timing;
 
 mod colour;
+mod compare;
 mod dispersion;
 mod display;
 mod emission;
