@@ -41,6 +41,9 @@ enum Cmd {
     /// one EXR with variance channels or several independent plain RGB EXRs. Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
     Compare(cmd::compare::CompareArgs),
+    /// Write a scene for other renderers: a Mitsuba 3 XML file, or fully resolved JSON
+    /// (defaults filled in, spectra on the 1 nm grid, transforms explicit).
+    Export(cmd::export::ExportArgs),
 }
 
 fn main() -> ExitCode {
@@ -53,5 +56,6 @@ fn main() -> ExitCode {
         Some(Cmd::Book) => cmd::finish(cmd::book::build()),
         Some(Cmd::Render(args)) => cmd::render::run(args),
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
+        Some(Cmd::Export(args)) => cmd::export::run(args),
     }
 }

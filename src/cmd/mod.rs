@@ -7,6 +7,7 @@
 
 pub mod book;
 pub mod compare;
+pub mod export;
 pub mod figures;
 pub mod render;
 

@@ -225,3 +225,104 @@ fn compare_refuses_what_it_cannot_judge_with_the_file_and_the_reason() {
         "the folder in the way was touched"
     );
 }
+
+fn export(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_raylemma"))
+        .arg("export")
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the binary runs")
+}
+
+#[test]
+fn export_writes_both_formats_and_refuses_bad_input_without_touching_earlier_files() {
+    let xml = tmp("cornell.xml");
+    let json = tmp("cornell.json");
+    for (to, out) in [("mitsuba", &xml), ("json", &json)] {
+        let o = export(&[
+            "scenes/cornell.toml",
+            "--to",
+            to,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    assert!(
+        std::fs::read_to_string(&xml)
+            .unwrap()
+            .contains("<scene version=\"3.0.0\">")
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(v["format"], "raylemma-scene");
+    let earlier = std::fs::read(&xml).unwrap();
+    let out = xml.to_str().unwrap();
+    // Sellmeier glass: refused for Mitsuba with the line and the feature; the earlier file
+    // is left byte for byte. The JSON export of the same scene works.
+    refused(
+        &export(&["scenes/dispersion.toml", "--to", "mitsuba", "--out", out]),
+        &["scenes/dispersion.toml:22:", "Sellmeier dispersion"],
+    );
+    refused(
+        &export(&["scenes/bubble.toml", "--to", "mitsuba", "--out", out]),
+        &["scenes/bubble.toml:25:", "thin film"],
+    );
+    assert_eq!(
+        std::fs::read(&xml).unwrap(),
+        earlier,
+        "a refused export touched the file"
+    );
+    let o = export(&[
+        "scenes/dispersion.toml",
+        "--to",
+        "json",
+        "--out",
+        tmp("d.json").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // A bad scene names its file and line.
+    let cornell =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell.toml"))
+            .unwrap();
+    let line = cornell
+        .lines()
+        .position(|l| l.starts_with("spp ="))
+        .unwrap()
+        + 1;
+    let bad = tmp("bad-scene.toml");
+    std::fs::write(&bad, cornell.replace("spp = 4096", "spp = 0")).unwrap();
+    refused(
+        &export(&[bad.to_str().unwrap(), "--to", "json", "--out", out]),
+        &[&format!("bad-scene.toml:{line}:"), "spp"],
+    );
+    refused(
+        &export(&["scenes/none.toml", "--to", "json", "--out", out]),
+        &["scenes/none.toml", "cannot read"],
+    );
+    assert_eq!(std::fs::read(&xml).unwrap(), earlier);
+    // An unknown format is a usage error that lists the formats.
+    let o = export(&["scenes/cornell.toml", "--to", "pbrt", "--out", out]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("pbrt") && err.contains("mitsuba") && err.contains("json"),
+        "{err}"
+    );
+    // An --out that cannot be written: its folder is a file.
+    let blocker = tmp("a-file");
+    std::fs::write(&blocker, b"keep").unwrap();
+    let inside = blocker.join("scene.xml");
+    refused(
+        &export(&[
+            "scenes/cornell.toml",
+            "--to",
+            "mitsuba",
+            "--out",
+            inside.to_str().unwrap(),
+        ]),
+        &["a-file"],
+    );
+    assert_eq!(std::fs::read(&blocker).unwrap(), b"keep");
+}
