@@ -224,8 +224,9 @@ fn spectrum(s: &Spectrum) -> SpectrumJson {
     }
 }
 
+/// A vector as an array, with `-0` written as `0`.
 fn arr(v: DVec3) -> [f64; 3] {
-    v.to_array()
+    v.to_array().map(|x| x + 0.0)
 }
 
 fn quad(corner: DVec3, e1: DVec3, e2: DVec3) -> GeometryJson {
@@ -407,9 +408,84 @@ pub fn to_json(f: &SceneFile) -> String {
             },
         }),
     };
-    // Plain numbers, strings and arrays: serialising into a string cannot fail.
-    let mut text = serde_json::to_string_pretty(&file).unwrap_or_default();
+    // Plain numbers, strings and arrays: serialising them cannot fail.
+    let mut text = inline_scalar_arrays(&serde_json::to_string_pretty(&file).unwrap_or_default());
     text.push('\n');
     text
 }
 // ANCHOR_END: to_json
+
+/// serde_json's pretty JSON with every array of scalars on one line (a spectrum's 471
+/// samples are one line, not 471): inside such an array, the line breaks and indents
+/// between elements become single spaces. Strings are copied as they are.
+fn inline_scalar_arrays(pretty: &str) -> String {
+    let b = pretty.as_bytes();
+    let mut out = String::with_capacity(pretty.len());
+    let mut i = 0;
+    // Copies the string starting at b[i] (a quote) and returns the index after it.
+    let string_end = |mut j: usize| {
+        j += 1;
+        while j < b.len() && b[j] != b'"' {
+            j += if b[j] == b'\\' { 2 } else { 1 };
+        }
+        j + 1
+    };
+    while i < b.len() {
+        match b[i] {
+            b'"' => {
+                let j = string_end(i).min(b.len());
+                out.push_str(&pretty[i..j]);
+                i = j;
+            }
+            b'[' => {
+                // Scan to the closing bracket; give up at a nested array or object.
+                let (mut j, mut flat) = (i + 1, true);
+                while j < b.len() && b[j] != b']' {
+                    match b[j] {
+                        b'"' => j = string_end(j),
+                        b'[' | b'{' => {
+                            flat = false;
+                            break;
+                        }
+                        _ => j += 1,
+                    }
+                }
+                if flat && j < b.len() {
+                    let mut k = i + 1;
+                    out.push('[');
+                    let mut first = true;
+                    while k < j {
+                        if b[k].is_ascii_whitespace() {
+                            k += 1;
+                            continue;
+                        }
+                        let start = k;
+                        while k < j && b[k] != b',' {
+                            k = if b[k] == b'"' { string_end(k) } else { k + 1 };
+                        }
+                        if !first {
+                            out.push_str(", ");
+                        }
+                        out.push_str(pretty[start..k].trim_end());
+                        first = false;
+                        k += 1;
+                    }
+                    out.push(']');
+                    i = j + 1;
+                } else {
+                    out.push('[');
+                    i += 1;
+                }
+            }
+            _ => {
+                // Copy up to the next quote or bracket (ASCII, so always a char boundary).
+                let j = (i + 1..b.len())
+                    .find(|&j| b[j] == b'"' || b[j] == b'[')
+                    .unwrap_or(b.len());
+                out.push_str(&pretty[i..j]);
+                i = j;
+            }
+        }
+    }
+    out
+}

@@ -97,6 +97,8 @@ fn json_is_fully_resolved() {
     // Colour: the integral of the 1 nm y-bar (NOTES.md: 106.856914916767) and the sRGB
     // matrix's first row (IEC 61966-2-1 with the D65 white (0.3127, 0.3290)).
     let conv = &j["conventions"];
+    // The text inside strings is kept as written (arrays of numbers are put on one line).
+    assert!(conv["quad"].as_str().unwrap().contains("a and b in [0, 1]"));
     assert!(close(
         conv["y_integral"].as_f64().unwrap(),
         106.856_914_916_767,

@@ -11,8 +11,9 @@ use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, compare, dispersion, display, emission, frame, fresnel, lambert, reflect, roulette,
-    sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
+    colour, compare, dispersion, display, emission, export, frame, fresnel, lambert, mitsuba,
+    reflect, roulette, sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm,
+    upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -56,6 +57,8 @@ pub fn all() -> Vec<Output> {
     outputs.extend(display::outputs());
     outputs.extend(upsample::outputs());
     outputs.extend(compare::outputs());
+    outputs.extend(export::outputs());
+    outputs.extend(mitsuba::outputs());
     outputs.extend(testing::outputs());
     outputs
 }
