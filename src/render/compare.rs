@@ -325,7 +325,7 @@ pub fn pixel_dof(terms: [(f64, f64); 2]) -> f64 {
 /// underflow; infinite when every estimate is exact, or when the sum is 0.
 pub fn region_dof(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
     let total: f64 = terms.clone().map(|(v, _)| v).sum();
-    if !(total > 0.0) {
+    if total.is_nan() || total <= 0.0 {
         return f64::INFINITY;
     }
     let (denom, least) =
@@ -366,7 +366,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
         return Err(format!("alpha = {alpha} must be in (0, 1)"));
     }
     for (name, e) in [("first", a), ("second", b)] {
-        if !(e.dof > 0.0) {
+        if e.dof.is_nan() || e.dof <= 0.0 {
             return Err(format!(
                 "the {name} image's degrees of freedom, {}, must be > 0",
                 e.dof

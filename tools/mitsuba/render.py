@@ -11,12 +11,17 @@ X, Y, Z are raylemma's CIE XYZ; the XYZ -> linear sRGB matrix is read from the s
 JSON export (conventions.xyz_to_linear_srgb), so the colour conversion is raylemma's
 own, bit for bit the same matrix. Nothing in the scene is rebuilt here: the XML is
 loaded as exported.
+
+--film hdrfilm swaps the exported specfilm for Mitsuba's own hdrfilm (its 5 nm CIE
+table, its Y normalisation, its rounded matrix; linear sRGB straight from Mitsuba): the
+renderer chapter's demonstration of what that colour conversion does to a comparison.
 """
 
 import argparse
 import json
 import math
 import os
+import re
 import sys
 import time
 
@@ -36,6 +41,8 @@ def main():
     ap.add_argument("--threads", type=int, default=0, help="render threads (default: all cores)")
     ap.add_argument("--variant", default="scalar_spectral", help="a spectral variant (default scalar_spectral)")
     ap.add_argument("--png", default=None, help="also write the mean as a clipped sRGB 8-bit PNG preview")
+    ap.add_argument("--film", choices=["specfilm", "hdrfilm"], default="specfilm",
+                    help="specfilm: as exported (raylemma's colour); hdrfilm: Mitsuba's own colour conversion")
     args = ap.parse_args()
 
     K, spp = args.passes, args.spp
@@ -56,7 +63,16 @@ def main():
     to_srgb = np.array(resolved["conventions"]["xyz_to_linear_srgb"], dtype=np.float64)
     width, height = resolved["camera"]["width"], resolved["camera"]["height"]
 
-    scene = mi.load_file(args.xml, spp=per_pass)
+    if args.film == "specfilm":
+        scene = mi.load_file(args.xml, spp=per_pass)
+    else:
+        text = open(args.xml).read()
+        hdr = (f'<film type="hdrfilm"><integer name="width" value="{width}"/>'
+               f'<integer name="height" value="{height}"/><string name="pixel_format" value="rgb"/>'
+               '<string name="component_format" value="float32"/><rfilter type="box"/></film>')
+        text, n = re.subn(r'<film type="specfilm">.*?</film>', hdr, text, flags=re.S)
+        assert n == 1, "no specfilm in the exported scene"
+        scene = mi.load_string(text, spp=per_pass)
     # Mitsuba's scalar renderer seeds the samplers of pass s from s and the pixel index
     # (s * 65536 + i, tools/mitsuba/README.md): space the passes' seeds so that no two
     # passes share a pixel seed, whatever the image size.
@@ -71,14 +87,16 @@ def main():
         img = mi.render(scene, spp=per_pass, seed=args.seed + stride * k)
         seconds += time.perf_counter() - t0
         cpu_seconds += time.process_time() - c0
-        xyz = np.array(img, dtype=np.float64)
-        assert xyz.shape == (height, width, 3), xyz.shape
+        out = np.array(img, dtype=np.float64)
+        assert out.shape == (height, width, 3), out.shape
+        if not np.all(np.isfinite(out)):
+            sys.exit(f"render.py: non-finite pixels in pass {k}")
         if k == 0:
             names = [f.name for f in scene.sensors()[0].film().bitmap().struct_()]
-            assert names == ["X", "Y", "Z"], f"the film's channels are {names}, not X, Y, Z"
-        if not np.all(np.isfinite(xyz)):
-            sys.exit(f"render.py: non-finite pixels in pass {k}")
-        rgb = xyz @ to_srgb.T
+            want = ["X", "Y", "Z"] if args.film == "specfilm" else ["R", "G", "B"]
+            assert names[:3] == want, f"the film's channels are {names}, not {want}"
+        # specfilm: raylemma's XYZ, converted with raylemma's matrix; hdrfilm: Mitsuba's sRGB.
+        rgb = out @ to_srgb.T if args.film == "specfilm" else out
         mean += rgb / K
         # Writing an EXR with no worker threads deadlocks in Mitsuba 3.9.1 (README).
         dr.set_thread_count(max(2, threads))
@@ -90,6 +108,7 @@ def main():
 
     sidecar = {
         "renderer": f"mitsuba {mi.__version__} {args.variant}",
+        "film": args.film,
         "scene": args.xml,
         "spp": spp,
         "passes": K,

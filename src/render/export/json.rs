@@ -188,8 +188,8 @@ enum EnvironmentJson {
     },
     Gradient {
         axis: [f64; 3],
-        above: SpectrumJson,
-        below: SpectrumJson,
+        above: Box<SpectrumJson>,
+        below: Box<SpectrumJson>,
         rule: &'static str,
     },
 }
@@ -402,8 +402,8 @@ pub fn to_json(f: &SceneFile) -> String {
             },
             Environment::Gradient { axis, above, below } => EnvironmentJson::Gradient {
                 axis: arr(*axis),
-                above: spectrum(above),
-                below: spectrum(below),
+                above: Box::new(spectrum(above)),
+                below: Box::new(spectrum(below)),
                 rule: "L(w) = above (1 + c) / 2 + below (1 - c) / 2 with c = axis . w, w the unit direction away from the scene",
             },
         }),

@@ -3,7 +3,7 @@
 //! plain EXRs as other renderers write them, and the refusal of images no comparison can
 //! use.
 //!
-//! Statistical tests (3 of the suite's budget of 200), on synthetic images with normal
+//! Statistical tests (2 of the suite's budget of 200), on synthetic images with normal
 //! noise of known size (no rendering: the tests cost milliseconds): the pixel z's of 2, 4
 //! and 16 candidates are standard normal and the verdict is *agree*; 4 candidates
 //! with normal critical values (the planted twin) raise false alarms; a 3 % brighter

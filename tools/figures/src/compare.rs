@@ -54,12 +54,12 @@ struct Counts {
     mean_z2: f64,
 }
 
-/// One trial: for each candidate set, (false alarm, false alarm with normal critical
-/// values, detected at each gain, mean z²).
-fn trial(
-    scene: &raylemma::render::Scene,
-    k: u64,
-) -> Result<Vec<(bool, bool, [bool; 2], f64)>, String> {
+/// One candidate set's outcome in one trial: false alarm, false alarm with normal critical
+/// values, detected at each gain, mean z².
+type Outcome = (bool, bool, [bool; 2], f64);
+
+/// One trial: the outcome of each candidate set.
+fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, String> {
     let seeded = |seed: u64| {
         let mut s = scene.clone();
         s.settings.seed = seed;
@@ -121,7 +121,7 @@ fn calibrate(settings: &Settings, name: &str, trials: u64) -> Result<[Counts; 4]
     let mut scene = render::load(&settings.root.join("scenes").join(format!("{name}.toml")))?;
     scene.camera.width = SIDE;
     scene.camera.height = SIDE;
-    let results: Vec<Vec<(bool, bool, [bool; 2], f64)>> = (0..trials)
+    let results: Vec<Vec<Outcome>> = (0..trials)
         .into_par_iter()
         .map(|k| trial(&scene, k))
         .collect::<Result<_, _>>()?;
