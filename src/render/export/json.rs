@@ -330,7 +330,7 @@ pub fn to_json(f: &SceneFile) -> String {
             spp: s.settings.spp,
             seed: s.settings.seed,
             wavelengths: s.settings.wavelengths.name(),
-            direct: super::mitsuba::direct_name(s.settings.direct),
+            direct: super::direct_name(s.settings.direct),
             roulette_depth: s.settings.roulette_depth,
             max_depth: s.settings.max_depth,
         },

@@ -280,7 +280,7 @@ pub fn to_xml(f: &SceneFile) -> Result<String, DataError> {
         row(1),
         row(2),
         set.wavelengths.name(),
-        direct_name(set.direct),
+        super::direct_name(set.direct),
     );
     let _ = write!(
         x,
@@ -369,11 +369,3 @@ pub fn to_xml(f: &SceneFile) -> Result<String, DataError> {
     Ok(x)
 }
 // ANCHOR_END: to_xml
-
-/// The name of a direct-lighting strategy in the scene format.
-pub(super) fn direct_name(d: crate::render::scene::DirectLight) -> &'static str {
-    crate::render::format::DIRECT_STRATEGIES
-        .iter()
-        .find(|(_, s)| *s == d)
-        .map_or("other", |(n, _)| n)
-}

@@ -159,3 +159,11 @@ pub fn extent(scene: &Scene, p: DVec3) -> f64 {
     }
     far
 }
+
+/// The name of a direct-lighting strategy in the scene format.
+pub fn direct_name(d: crate::render::scene::DirectLight) -> &'static str {
+    crate::render::format::DIRECT_STRATEGIES
+        .iter()
+        .find(|(_, s)| *s == d)
+        .map_or("other", |(n, _)| n)
+}
