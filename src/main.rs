@@ -39,7 +39,8 @@ enum Cmd {
     /// Render a scene file: SCENE.exr (linear sRGB and the variance of each pixel's mean),
     /// SCENE.png (display) and SCENE.json (scene hash, spp, seed, time, version) in --out.
     Render(cmd::render::RenderArgs),
-    /// Do two renders (EXR with variance channels) agree within their noise? Exit status 0
+    /// Does a candidate agree with a reference render within their noise? The candidate is
+    /// one EXR with variance channels or several independent plain RGB EXRs. Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
     Compare(cmd::compare::CompareArgs),
     /// Run the book's checkers on an implementation outside Rust: a program that answers
@@ -53,6 +54,9 @@ enum Cmd {
     /// stub, whose `cargo test` ends with a report card (--solutions: the solutions in
     /// place).
     Exercises(cmd::exercises::ExercisesArgs),
+    /// Write a scene for other renderers: a Mitsuba 3 XML file, or fully resolved JSON
+    /// (defaults filled in, spectra on the 1 nm grid, transforms explicit).
+    Export(cmd::export::ExportArgs),
 }
 
 fn main() -> ExitCode {
@@ -67,5 +71,6 @@ fn main() -> ExitCode {
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
         Some(Cmd::Check { command }) => cmd::check::run(command),
         Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
+        Some(Cmd::Export(args)) => cmd::export::run(args),
     }
 }

@@ -1,22 +1,29 @@
-//! `raylemma compare A.exr B.exr`: do two renders agree within their noise? Exit status 0
-//! if they agree, 1 if they differ, 2 for bad input.
+//! `raylemma compare REF.exr CANDIDATE.exr [CANDIDATE.exr ...]`: does a candidate agree
+//! with a reference within their noise? The reference carries its variance channels (a
+//! raylemma render); the candidate is one image with variance channels, or several
+//! independent plain RGB images of the scene (different seeds), whose spread gives its
+//! variance. Exit status 0 if they agree, 1 if they differ, 2 for bad input.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::Args;
-use raylemma::render::{compare, image::Image};
+use raylemma::render::compare::{self, Estimate};
+use raylemma::render::image::{ExrContents, Image};
 
 use super::fail;
 
 /// `raylemma compare`.
 #[derive(Args, Debug)]
 pub struct CompareArgs {
-    /// The first image.
-    pub a: PathBuf,
-    /// The second image.
-    pub b: PathBuf,
-    /// The family-wise false-alarm rate of the z-tests.
+    /// The reference: an EXR with variance channels (var.R, var.G, var.B), such as
+    /// `raylemma render` writes and figures/reference/ holds.
+    pub reference: PathBuf,
+    /// The candidate: one EXR with variance channels, or two or more independent plain RGB
+    /// EXRs of the same scene (different seeds; any channel order, half or float).
+    #[arg(required = true, num_args = 1..)]
+    pub candidates: Vec<PathBuf>,
+    /// The family-wise false-alarm rate of the tests.
     #[arg(long, default_value_t = 0.01)]
     pub alpha: f64,
     /// Where to write the difference image (PNG).
@@ -26,23 +33,90 @@ pub struct CompareArgs {
 
 /// Runs `raylemma compare`.
 pub fn run(args: &CompareArgs) -> ExitCode {
-    match compare_files(&args.a, &args.b, args.alpha, args.diff.as_deref()) {
+    match compare_files(args) {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
         Err(e) => fail(2, e),
     }
 }
 
-/// 0: agree, 1: differ; an error is returned for bad input (exit status 2).
-fn compare_files(a: &Path, b: &Path, alpha: f64, diff: Option<&Path>) -> Result<bool, String> {
-    let ia = Image::read_exr(a).map_err(|e| e.to_string())?;
-    let ib = Image::read_exr(b).map_err(|e| e.to_string())?;
-    let c = compare::compare(&ia, &ib, alpha)
-        .map_err(|e| format!("{} vs {}: {e}", a.display(), b.display()))?;
-    print!("{}", c.report());
-    if let Some(path) = diff {
-        let bytes = compare::difference_rgb8(&ia, &ib, c.z_critical);
-        raylemma::spectral::display::write_png(path, ia.width, ia.height, &bytes)
+/// The reference: it must carry its variance.
+fn reference(path: &Path) -> Result<Estimate, String> {
+    let contents = ExrContents::read(path).map_err(|e| e.to_string())?;
+    let channels = contents.channels.join(", ");
+    match contents.into_image() {
+        Some(image) => Ok(Estimate::from_variance(image)),
+        None => Err(format!(
+            "{}: the reference has no variance channels var.R, var.G, var.B (it has {channels}); \
+             the reference must be a render with its variance, such as `raylemma render` writes \
+             or figures/reference/NAME.exr",
+            path.display()
+        )),
+    }
+}
+
+// ANCHOR: candidate
+/// The candidate: one image with its variance channels, or the spread of two or more.
+fn candidate(paths: &[PathBuf], size: (u32, u32)) -> Result<(Estimate, String), String> {
+    let mut files = Vec::new();
+    for path in paths {
+        let c = ExrContents::read(path).map_err(|e| e.to_string())?;
+        if (c.width, c.height) != size {
+            return Err(format!(
+                "{}: {}x{}, but the reference is {}x{}",
+                path.display(),
+                c.width,
+                c.height,
+                size.0,
+                size.1
+            ));
+        }
+        files.push(c);
+    }
+    if let [one] = &files[..] {
+        let path = paths[0].display();
+        let name = path.to_string();
+        return match one.clone().into_image() {
+            Some(image) => Ok((Estimate::from_variance(image), name)),
+            None => Err(format!(
+                "{path} is a plain image without variance channels, and it is the only candidate: \
+                 one image cannot say how noisy it is. Render the scene several times with \
+                 different seeds (for example 16 renders of a sixteenth of the samples each) and \
+                 pass them all: raylemma compare REF.exr render-1.exr render-2.exr ...; or write \
+                 the variance of each pixel's mean as channels var.R, var.G, var.B"
+            )),
+        };
+    }
+    let means: Vec<&[glam::DVec3]> = files.iter().map(|c| &c.mean[..]).collect();
+    let mut estimate = Estimate::from_spread(size.0, size.1, &means)?;
+    if files.iter().any(|c| c.var.is_some()) {
+        estimate.source += "; their own variance channels are not used";
+    }
+    let name = format!(
+        "{} candidates ({} ... {})",
+        paths.len(),
+        paths[0].display(),
+        paths[paths.len() - 1].display()
+    );
+    Ok((estimate, name))
+}
+// ANCHOR_END: candidate
+
+/// `Ok(true)`: agree, `Ok(false)`: differ; an error is returned for bad input (exit
+/// status 2).
+fn compare_files(args: &CompareArgs) -> Result<bool, String> {
+    if !(args.alpha > 0.0 && args.alpha < 1.0) {
+        return Err(format!("--alpha {} must be in (0, 1)", args.alpha));
+    }
+    let reference = reference(&args.reference)?;
+    let size = (reference.image.width, reference.image.height);
+    let (candidate, name) = candidate(&args.candidates, size)?;
+    let c = compare::compare(&reference, &candidate, args.alpha)?;
+    let names = [args.reference.display().to_string(), name];
+    print!("{}", c.report([&names[0], &names[1]]));
+    if let Some(path) = &args.diff {
+        let Image { width, height, .. } = reference.image;
+        raylemma::spectral::display::write_png(path, width, height, &compare::difference_rgb8(&c))
             .map_err(|e| e.to_string())?;
         println!("difference image: {}", path.display());
     }

@@ -9,6 +9,7 @@ pub mod book;
 pub mod check;
 pub mod compare;
 pub mod exercises;
+pub mod export;
 pub mod figures;
 pub mod render;
 

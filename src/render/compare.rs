@@ -1,36 +1,140 @@
 //! Do two renders of the same scene agree within their noise? Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`).
+//! renderer* (`chapters/renderer/renderer.md`, *Comparing two renders*).
 //!
-//! Each image carries the variance of every pixel's mean. Under the hypothesis that both
-//! estimate the same expected image, and with enough samples per pixel for the central
-//! limit theorem, `z = (a - b) / sqrt(var_a + var_b)` is standard normal in every pixel
-//! and channel. The comparison runs two families of two-sided z-tests: every pixel and
-//! channel, and the means over square blocks (which catch a small bias spread over a
-//! region, too small to show in one pixel). Šidák's correction over all of them holds the
-//! chance of a false alarm, for two correct renders, at `alpha` (1 % by default).
+//! Each side of a comparison is an [`Estimate`]: per-pixel means, the estimated variance
+//! of each mean, and the degrees of freedom `ν` of that estimate: `n - 1` for a render's
+//! own variance channels from `n` samples per pixel ([`Estimate::from_variance`]), `K - 1`
+//! for the spread of `K` independent plain images ([`Estimate::from_spread`]), infinite
+//! when the variance is taken as exact.
+//!
+//! Under the hypothesis that both estimate the same expected image, in every pixel and
+//! channel the difference `d = a - b` has the estimated variance `v = v_a + v_b`, and
+//! `t = d / sqrt(v)` is compared with Student's t: with the smaller of the two sides'
+//! degrees of freedom for a pixel (conservative, [`pixel_dof`]), and for the mean of a
+//! block of pixels or of the whole image, `d̄ = Σ d_i / n` with `v̄ = Σ v_i / n²` (the
+//! pixels are independent), with the Welch–Satterthwaite degrees of freedom of that sum
+//! ([`region_dof`]). Three families of two-sided tests (every pixel and channel, the means
+//! of square blocks, the whole image's mean per channel) are held together by Šidák's
+//! correction at the chance `alpha` of a false alarm for two correct renders.
+//!
+//! Normal critical values with a variance from few samples are wrong by orders of
+//! magnitude: with `ν = 15` the tail beyond the normal critical value of a million tests
+//! is a thousand times the normal one. Each test's p-value is therefore computed from its
+//! own `ν`, and reported as the normal `z` with the same p-value, so that `|z|` and the
+//! mean of `z²` mean the same whatever the degrees of freedom.
 
 use glam::DVec3;
+use statrs::distribution::{ContinuousCDF, StudentsT};
 use statrs::function::erf::erfc_inv;
 
 use super::image::Image;
 use crate::spectral::display;
-use crate::stats::sidak;
+use crate::stats::welford::Welford;
+use crate::stats::{sidak, ttest};
 
 /// The side of the blocks whose means are compared, pixels.
 pub const BLOCK: u32 = 16;
 
-/// One region (a block) of the comparison.
+/// Above this many degrees of freedom a t statistic is taken as normal (the two tails
+/// differ by less than `t⁴ / (4ν)`, relatively: 0.1 % at `t = 6`).
+pub const NORMAL_DOF: f64 = 1e6;
+
+/// One side of a comparison: means, the estimated variance of each mean, and the degrees
+/// of freedom of those estimates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Estimate {
+    /// The means and their variances (`image.var`).
+    pub image: Image,
+    /// The degrees of freedom of every variance estimate (`f64::INFINITY`: exact, or from
+    /// so many samples that it may be taken as exact).
+    pub dof: f64,
+    /// Where the variance comes from, in words, for the report.
+    pub source: String,
+}
+
+impl Estimate {
+    /// An image with its own variance channels, the variances of means of `n` samples:
+    /// `n - 1` degrees of freedom when `image.spp` is known, otherwise taken as exact
+    /// (many degrees of freedom), which the report says.
+    pub fn from_variance(image: Image) -> Estimate {
+        let (dof, source) = match image.spp {
+            Some(n) if n >= 2 => (
+                f64::from(n - 1),
+                format!(
+                    "its variance channels, from {n} samples per pixel ({} degrees of freedom)",
+                    n - 1
+                ),
+            ),
+            _ => (
+                f64::INFINITY,
+                "its variance channels; samples per pixel unknown (no spp attribute), so the variances are taken as exact (many degrees of freedom)".to_string(),
+            ),
+        };
+        Estimate { image, dof, source }
+    }
+
+    // ANCHOR: spread
+    /// The estimate from `K >= 2` independent plain images of one scene (renders with
+    /// different seeds), `width` by `height`: per pixel and channel, the mean of the `K`
+    /// values and the variance of that mean, `s² / K` with `s²` their sample variance,
+    /// with `K - 1` degrees of freedom.
+    ///
+    /// # Errors
+    /// Fewer than two images, or an image of another size than `width` by `height` (its
+    /// index in `means`).
+    pub fn from_spread(width: u32, height: u32, means: &[&[DVec3]]) -> Result<Estimate, String> {
+        let k = means.len();
+        if k < 2 {
+            return Err(format!(
+                "{k} image: the spread of independent images needs at least 2"
+            ));
+        }
+        let n = width as usize * height as usize;
+        if let Some(i) = means.iter().position(|m| m.len() != n) {
+            return Err(format!(
+                "image {} has {} pixels, not {width}x{height}",
+                i + 1,
+                means[i].len()
+            ));
+        }
+        let mut acc = vec![Welford::<DVec3>::default(); n];
+        for image in means {
+            for (a, &x) in acc.iter_mut().zip(image.iter()) {
+                a.push(x);
+            }
+        }
+        Ok(Estimate {
+            image: Image {
+                width,
+                height,
+                mean: acc.iter().map(Welford::mean).collect(),
+                var: acc.iter().map(Welford::var_of_mean).collect(),
+                spp: None,
+            },
+            dof: (k - 1) as f64,
+            source: format!("the spread of {k} images ({} degrees of freedom)", k - 1),
+        })
+    }
+    // ANCHOR_END: spread
+}
+
+/// One region (a block, or the whole image) of the comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Region {
-    /// The block's top-left pixel.
+    /// The region's top-left pixel.
     pub x: u32,
-    /// The block's top-left pixel.
+    /// The region's top-left pixel.
     pub y: u32,
-    /// The block mean's z-score of the channel with the largest `|z|`.
+    /// The region mean's z (the normal z with the same p-value as its t) of the channel
+    /// with the largest `|z|`.
     pub z: f64,
     /// Which channel (0 R, 1 G, 2 B).
     pub channel: usize,
-    /// The RMS difference over the block's pixels and channels.
+    /// The z of every channel.
+    pub zs: DVec3,
+    /// The degrees of freedom of that channel's test ([`region_dof`]).
+    pub dof: f64,
+    /// The RMS difference over the region's pixels and channels.
     pub rmse: f64,
 }
 
@@ -43,39 +147,76 @@ pub struct Comparison {
     pub pixel_tests: usize,
     /// Number of block-channel tests.
     pub block_tests: usize,
-    /// The critical `|z|` of each test (Šidák over all of them).
+    /// The level of each test (Šidák over all of them, the three image tests included).
+    pub level: f64,
+    /// The critical `|z|` of each test: a test fails when its p-value is below `level`,
+    /// which is when its normal-equivalent `|z|` exceeds this.
     pub z_critical: f64,
+    /// Where each side's variance comes from.
+    pub sources: [String; 2],
+    /// The smallest and the median degrees of freedom of the pixel tests.
+    pub pixel_dof: (f64, f64),
     /// Pixel-channels beyond the critical value: `(x, y, channel, z)`, worst first (at most 20).
     pub pixel_failures: Vec<(u32, u32, usize, f64)>,
     /// How many pixel-channels are beyond it in all.
     pub pixel_failure_count: usize,
+    /// The normal-equivalent z of every pixel and channel, row-major.
+    pub z: Vec<DVec3>,
     /// The blocks, worst `|z|` first.
     pub regions: Vec<Region>,
     /// How many blocks are beyond the critical value.
     pub block_failure_count: usize,
+    /// The whole image's mean, per channel: its z and degrees of freedom.
+    pub image: [(f64, f64); 3],
     /// Root-mean-square difference over all pixels and channels.
     pub rmse: f64,
-    /// The mean of `z^2` over pixel-channels: about 1 when the variances are right.
+    /// The mean of `z²` over pixel-channels: about 1 when the variances are right.
     pub mean_z2: f64,
     /// The share of pixel-channels with `|z| > 1.96`: about 0.05 when the images agree.
     pub share_beyond_95: f64,
 }
 
 impl Comparison {
-    /// Whether the images agree: no pixel and no block beyond the critical value.
-    pub fn agree(&self) -> bool {
-        self.pixel_failure_count == 0 && self.block_failure_count == 0
+    /// How many of the three whole-image tests fail.
+    pub fn image_failure_count(&self) -> usize {
+        self.image
+            .iter()
+            .filter(|(z, _)| fails(*z, self.z_critical))
+            .count()
     }
 
-    /// A report for people, several lines.
-    pub fn report(&self) -> String {
-        let mut s = format!(
-            "{} pixel and {} block z-tests, Šidák-corrected to a {:.3} % chance of a false alarm: |z| > {:.3} fails\n",
+    /// Whether the images agree: no pixel, no block and no whole-image mean beyond the
+    /// critical value.
+    pub fn agree(&self) -> bool {
+        self.pixel_failure_count == 0
+            && self.block_failure_count == 0
+            && self.image_failure_count() == 0
+    }
+
+    /// A report for people, several lines; `names` are the two sides (file names).
+    pub fn report(&self, names: [&str; 2]) -> String {
+        let rgb = ["R", "G", "B"];
+        let mut s = String::new();
+        for (name, source) in names.iter().zip(&self.sources) {
+            s += &format!("{name}: variance from {source}\n");
+        }
+        s += &format!(
+            "{} pixel, {} block and 3 whole-image tests, Šidák-corrected to a {:.3} % chance of a false alarm: a test fails when p < {:.3e} (|z| > {:.3})\n",
             self.pixel_tests,
             self.block_tests,
             100.0 * self.alpha,
+            self.level,
             self.z_critical
         );
+        let (lo, median) = self.pixel_dof;
+        if median.is_finite() {
+            s += &format!(
+                "pixel tests: Student's t with {median:.0} degrees of freedom (the smaller side's; smallest {lo:.0}): |t| > {:.3} fails\n",
+                t_critical(self.level, median)
+            );
+        } else {
+            s += "pixel tests: normal (both variances taken as exact)\n";
+        }
         s += &format!(
             "RMSE {:.6e}; mean z^2 {:.4} (1 if the variances are right); |z| > 1.96 in {:.3} % of pixel-channels (5 % expected)\n",
             self.rmse,
@@ -83,24 +224,23 @@ impl Comparison {
             100.0 * self.share_beyond_95
         );
         s += &format!(
-            "pixels beyond: {}; blocks ({BLOCK}x{BLOCK}) beyond: {}\n",
-            self.pixel_failure_count, self.block_failure_count
+            "whole image: z = {:.2} (R), {:.2} (G), {:.2} (B)\n",
+            self.image[0].0, self.image[1].0, self.image[2].0
+        );
+        s += &format!(
+            "pixels beyond: {}; blocks ({BLOCK}x{BLOCK}) beyond: {}; whole-image means beyond: {}\n",
+            self.pixel_failure_count,
+            self.block_failure_count,
+            self.image_failure_count()
         );
         for (x, y, c, z) in self.pixel_failures.iter().take(5) {
-            s += &format!(
-                "  pixel ({x}, {y}) channel {}: z = {z:.2}\n",
-                ["R", "G", "B"][*c]
-            );
+            s += &format!("  pixel ({x}, {y}) channel {}: z = {z:.2}\n", rgb[*c]);
         }
         s += "worst regions:\n";
         for r in self.regions.iter().take(5) {
             s += &format!(
-                "  block at ({}, {}) channel {}: z = {:.2}, RMSE {:.4e}\n",
-                r.x,
-                r.y,
-                ["R", "G", "B"][r.channel],
-                r.z,
-                r.rmse
+                "  block at ({}, {}) channel {}: z = {:.2} ({:.0} degrees of freedom), RMSE {:.4e}\n",
+                r.x, r.y, rgb[r.channel], r.z, r.dof, r.rmse
             );
         }
         s += if self.agree() {
@@ -112,10 +252,9 @@ impl Comparison {
     }
 }
 
-/// `z = d / sqrt(v)`, with 0 for `d = 0` and an infinite `z` for a difference where both
-/// variances are 0.
-fn z_score(d: f64, v: f64) -> f64 {
-    if d == 0.0 { 0.0 } else { d / v.sqrt() }
+/// Whether a test with normal-equivalent `z` fails at `z_critical` (NaN fails).
+fn fails(z: f64, z_critical: f64) -> bool {
+    z.abs() > z_critical || z.is_nan()
 }
 
 /// The two-sided critical value `z` with `P(|Z| > z) = level` for a standard normal `Z`:
@@ -124,115 +263,209 @@ pub fn two_sided_critical(level: f64) -> f64 {
     std::f64::consts::SQRT_2 * erfc_inv(level)
 }
 
+/// The two-sided critical `|t|` at `level` for Student's t with `dof` degrees of freedom
+/// (normal above [`NORMAL_DOF`]).
+pub fn t_critical(level: f64, dof: f64) -> f64 {
+    if dof > NORMAL_DOF {
+        return two_sided_critical(level);
+    }
+    StudentsT::new(0.0, 1.0, dof).map_or(f64::NAN, |t| t.inverse_cdf(1.0 - level / 2.0))
+}
+
+// ANCHOR: equivalent_z
+/// The test of a difference `d` with estimated variance `v` and `dof` degrees of freedom:
+/// `t = d / sqrt(v)`, its two-sided p-value `P(|T_ν| >= |t|)` (normal above
+/// [`NORMAL_DOF`]), returned as the normal z with the same p-value and the sign of `d`.
+/// `d = 0` gives 0; a difference with `v = 0` an infinite z.
+pub fn equivalent_z(d: f64, v: f64, dof: f64) -> f64 {
+    if d == 0.0 {
+        return 0.0;
+    }
+    let t = d / v.sqrt();
+    if t.is_nan() || dof.is_nan() {
+        return f64::NAN;
+    }
+    if t.is_infinite() || dof > NORMAL_DOF {
+        return t;
+    }
+    let p = ttest::two_sided_p(t, dof);
+    if p > 0.0 {
+        t.signum() * two_sided_critical(p)
+    } else if p == 0.0 {
+        // Beyond the smallest double: the t itself (larger than the z) stands in.
+        t
+    } else {
+        f64::NAN
+    }
+}
+// ANCHOR_END: equivalent_z
+
+// ANCHOR: dof
+/// The degrees of freedom of one pixel's test, whose variance `v_a + v_b` sums two
+/// estimates: the smaller of their degrees of freedom (of those that are not 0). Always
+/// conservative: `t = d / sqrt(v̂)` has a tail no heavier than Student's with that many,
+/// whatever the two variances' shares (`(1 - w) + w X` is less spread than `X`, in the
+/// convex order, for `X = χ²_ν / ν`, and `P(Z² > c y)` is convex in `y`). The plug-in
+/// Welch–Satterthwaite value is not: with two images its estimate of `ν` is large exactly
+/// when the candidate's variance happens to come out small.
+pub fn pixel_dof(terms: [(f64, f64); 2]) -> f64 {
+    terms
+        .iter()
+        .filter(|(v, _)| *v > 0.0)
+        .map(|(_, dof)| *dof)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The degrees of freedom of a region's mean, whose variance sums many independent
+/// estimates `v_k` with `ν_k` degrees of freedom each: Welch–Satterthwaite,
+/// `(Σ v)² / Σ v_k² / ν_k`, with each `v_k²` replaced by its unbiased estimate
+/// `v̂_k² ν_k / (ν_k + 2)` (a variance estimate's square overestimates the square of the
+/// variance by `1 + 2 / ν`), and never below the smallest `ν_k`, which bounds the true
+/// value from below. Computed with the shares `v_k / Σ v`, so that tiny variances cannot
+/// underflow; infinite when every estimate is exact, or when the sum is 0.
+pub fn region_dof(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
+    let total: f64 = terms.clone().map(|(v, _)| v).sum();
+    if total.is_nan() || total <= 0.0 {
+        return f64::INFINITY;
+    }
+    let (denom, least) =
+        terms
+            .filter(|(v, _)| *v > 0.0)
+            .fold((0.0, f64::INFINITY), |(sum, least), (v, dof)| {
+                let share = if dof.is_finite() {
+                    (v / total).powi(2) / (dof + 2.0)
+                } else {
+                    0.0
+                };
+                (sum + share, least.min(dof))
+            });
+    (1.0 / denom).max(least)
+}
+// ANCHOR_END: dof
+
 // ANCHOR: compare
-/// Compares `a` and `b` at family-wise level `alpha`.
+/// Compares `a` and `b` at family-wise level `alpha`: every pixel and channel, the means
+/// of [`BLOCK`] x [`BLOCK`] blocks and the whole image's mean, each a two-sided test of
+/// `t = d / sqrt(v_a + v_b)` against Student's t with its degrees of
+/// freedom ([`pixel_dof`] for a pixel, [`region_dof`] for a region), Šidák-corrected over
+/// all of them.
 ///
 /// # Errors
-/// If the sizes differ, or a variance is NaN, negative or infinite (a render with one
-/// sample per pixel has no variance), or a mean is not finite.
-pub fn compare(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, String> {
-    if (a.width, a.height) != (b.width, b.height) {
+/// If the sizes differ, `alpha` is not in (0, 1), a degree of freedom is not positive, a
+/// mean is not finite or a variance is NaN, negative or infinite (a render with one
+/// sample per pixel has no variance).
+pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, String> {
+    let (ia, ib) = (&a.image, &b.image);
+    if (ia.width, ia.height) != (ib.width, ib.height) {
         return Err(format!(
             "the images have different sizes: {}x{} and {}x{}",
-            a.width, a.height, b.width, b.height
+            ia.width, ia.height, ib.width, ib.height
         ));
     }
     if !(alpha > 0.0 && alpha < 1.0) {
         return Err(format!("alpha = {alpha} must be in (0, 1)"));
     }
-    for (name, img) in [("first", a), ("second", b)] {
-        for (i, (m, v)) in img.mean.iter().zip(&img.var).enumerate() {
-            let (x, y) = (i as u32 % img.width, i as u32 / img.width);
-            if !m.is_finite() {
-                return Err(format!(
-                    "the {name} image's pixel ({x}, {y}) is {m}, not finite"
-                ));
-            }
-            if !(v.is_finite() && v.min_element() >= 0.0) {
-                return Err(format!(
-                    "the {name} image's pixel ({x}, {y}) has variance {v}: a variance image needs at least 2 samples per pixel"
-                ));
-            }
+    for (name, e) in [("first", a), ("second", b)] {
+        if e.dof.is_nan() || e.dof <= 0.0 {
+            return Err(format!(
+                "the {name} image's degrees of freedom, {}, must be > 0",
+                e.dof
+            ));
         }
+        check_values(&e.image, name)?;
     }
-    let (w, h) = (a.width, a.height);
+    let (w, h) = (ia.width, ia.height);
     let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
-    let pixel_tests = 3 * a.mean.len();
+    let pixel_tests = 3 * ia.mean.len();
     let block_tests = 3 * (bw * bh) as usize;
-    let level = sidak(alpha, (pixel_tests + block_tests) as u32);
+    let level = sidak(alpha, (pixel_tests + block_tests + 3) as u32);
     let z_critical = two_sided_critical(level);
+    let (na, nb) = (a.dof, b.dof);
 
+    // Pixels.
     let mut failures = Vec::new();
+    let mut zs = Vec::with_capacity(ia.mean.len());
+    let mut dofs = Vec::with_capacity(pixel_tests);
     let (mut sum_d2, mut sum_z2, mut beyond_95) = (0.0, 0.0, 0usize);
-    let mut block_d = vec![DVec3::ZERO; (bw * bh) as usize];
-    let mut block_v = vec![DVec3::ZERO; (bw * bh) as usize];
-    let mut block_n = vec![0u32; (bw * bh) as usize];
-    for y in 0..h {
-        for x in 0..w {
-            let i = a.index(x, y);
-            let d = a.mean[i] - b.mean[i];
-            let v = a.var[i] + b.var[i];
-            let k = ((y / BLOCK) * bw + x / BLOCK) as usize;
-            block_d[k] += d;
-            block_v[k] += v;
-            block_n[k] += 1;
-            for c in 0..3 {
-                let z = z_score(d[c], v[c]);
-                sum_d2 += d[c] * d[c];
-                sum_z2 += if z.is_finite() { z * z } else { 0.0 };
-                if z.abs() > 1.96 {
-                    beyond_95 += 1;
-                }
-                // NaN-safe: a NaN z (impossible after the checks above) would also fail.
-                if z.abs() > z_critical || z.is_nan() {
-                    failures.push((x, y, c, z));
-                }
+    for i in 0..ia.mean.len() {
+        let (x, y) = (i as u32 % w, i as u32 / w);
+        let d = ia.mean[i] - ib.mean[i];
+        let mut z = DVec3::ZERO;
+        for c in 0..3 {
+            let (va, vb) = (ia.var[i][c], ib.var[i][c]);
+            let dof = pixel_dof([(va, na), (vb, nb)]);
+            z[c] = equivalent_z(d[c], va + vb, dof);
+            dofs.push(dof);
+            sum_d2 += d[c] * d[c];
+            sum_z2 += if z[c].is_finite() { z[c] * z[c] } else { 0.0 };
+            if z[c].abs() > 1.96 {
+                beyond_95 += 1;
+            }
+            if fails(z[c], z_critical) {
+                failures.push((x, y, c, z[c]));
             }
         }
+        zs.push(z);
     }
     failures.sort_by(|p, q| q.3.abs().total_cmp(&p.3.abs()));
     let pixel_failure_count = failures.len();
     failures.truncate(20);
-    let mut regions: Vec<Region> = (0..block_d.len())
-        .map(|k| {
-            let n = f64::from(block_n[k]);
-            let (d, v) = (block_d[k] / n, block_v[k] / (n * n));
-            let zs = DVec3::new(z_score(d.x, v.x), z_score(d.y, v.y), z_score(d.z, v.z));
-            let channel = (0..3)
-                .max_by(|&p, &q| zs[p].abs().total_cmp(&zs[q].abs()))
-                .unwrap_or(0);
-            let (x, y) = ((k as u32 % bw) * BLOCK, (k as u32 / bw) * BLOCK);
-            let mut d2 = 0.0;
-            for yy in y..(y + BLOCK).min(h) {
-                for xx in x..(x + BLOCK).min(w) {
-                    let i = a.index(xx, yy);
-                    d2 += (a.mean[i] - b.mean[i]).length_squared();
-                }
+    dofs.sort_by(f64::total_cmp);
+
+    // Blocks, and the whole image as one region.
+    let region = |x0: u32, y0: u32, rw: u32, rh: u32| -> Region {
+        let pixels = || {
+            (y0..(y0 + rh).min(h))
+                .flat_map(move |y| (x0..(x0 + rw).min(w)).map(move |x| ia.index(x, y)))
+        };
+        let n = pixels().count() as f64;
+        let mut best = (0.0_f64, 0usize, f64::INFINITY);
+        let mut zs = DVec3::ZERO;
+        for c in 0..3 {
+            let d: f64 = pixels().map(|i| ia.mean[i][c] - ib.mean[i][c]).sum::<f64>() / n;
+            let terms = pixels().flat_map(|i| [(ia.var[i][c], na), (ib.var[i][c], nb)]);
+            let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
+            let dof = region_dof(terms);
+            let z = equivalent_z(d, v, dof);
+            zs[c] = z;
+            if c == 0 || z.abs() > best.0.abs() || z.is_nan() {
+                best = (z, c, dof);
             }
-            Region {
-                x,
-                y,
-                z: zs[channel],
-                channel,
-                rmse: (d2 / (3.0 * n)).sqrt(),
-            }
-        })
+        }
+        let d2: f64 = pixels()
+            .map(|i| (ia.mean[i] - ib.mean[i]).length_squared())
+            .sum();
+        Region {
+            x: x0,
+            y: y0,
+            z: best.0,
+            channel: best.1,
+            zs,
+            dof: best.2,
+            rmse: (d2 / (3.0 * n)).sqrt(),
+        }
+    };
+    let mut regions: Vec<Region> = (0..bw * bh)
+        .map(|k| region((k % bw) * BLOCK, (k / bw) * BLOCK, BLOCK, BLOCK))
         .collect();
     regions.sort_by(|p, q| q.z.abs().total_cmp(&p.z.abs()));
-    let block_failure_count = regions
-        .iter()
-        .filter(|r| r.z.abs() > z_critical || r.z.is_nan())
-        .count();
+    let block_failure_count = regions.iter().filter(|r| fails(r.z, z_critical)).count();
+    let image = image_means(ia, ib, na, nb);
     let m = pixel_tests as f64;
     Ok(Comparison {
         alpha,
         pixel_tests,
         block_tests,
+        level,
         z_critical,
+        sources: [a.source.clone(), b.source.clone()],
+        pixel_dof: (dofs[0], dofs[dofs.len() / 2]),
         pixel_failures: failures,
         pixel_failure_count,
+        z: zs,
         regions,
         block_failure_count,
+        image,
         rmse: (sum_d2 / m).sqrt(),
         mean_z2: sum_z2 / m,
         share_beyond_95: beyond_95 as f64 / m,
@@ -240,30 +473,78 @@ pub fn compare(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, String> {
 }
 // ANCHOR_END: compare
 
-/// The difference image: each pixel coloured by the z-score of its channel with the
-/// largest `|z|`: red where the first image is brighter, blue where it is darker, brighter
-/// in proportion to `|z| / z_critical`, white beyond `z_critical` (a failed test), black
-/// where the images agree exactly. 8-bit sRGB bytes, row-major.
-pub fn difference_rgb8(a: &Image, b: &Image, z_critical: f64) -> Vec<u8> {
-    let mut out = Vec::with_capacity(3 * a.mean.len());
-    for i in 0..a.mean.len() {
-        let d = a.mean[i] - b.mean[i];
-        let v = a.var[i] + b.var[i];
-        let zs = DVec3::new(z_score(d.x, v.x), z_score(d.y, v.y), z_score(d.z, v.z));
-        let c = (0..3)
+/// The whole image's mean difference per channel: its z and degrees of freedom.
+fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64); 3] {
+    let n = ia.mean.len() as f64;
+    std::array::from_fn(|c| {
+        let d = ia
+            .mean
+            .iter()
+            .zip(&ib.mean)
+            .map(|(p, q)| p[c] - q[c])
+            .sum::<f64>()
+            / n;
+        let terms = ia
+            .var
+            .iter()
+            .zip(&ib.var)
+            .flat_map(|(p, q)| [(p[c], na), (q[c], nb)]);
+        let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
+        let dof = region_dof(terms);
+        (equivalent_z(d, v, dof), dof)
+    })
+}
+
+/// Refuses an image with a mean that is not finite or a variance that is not a finite
+/// number `>= 0`, naming the first such pixel.
+fn check_values(img: &Image, name: &str) -> Result<(), String> {
+    for (i, (m, v)) in img.mean.iter().zip(&img.var).enumerate() {
+        let (x, y) = (i as u32 % img.width, i as u32 / img.width);
+        if !m.is_finite() {
+            return Err(format!(
+                "the {name} image's pixel ({x}, {y}) is {m}, not finite"
+            ));
+        }
+        if !(v.is_finite() && v.min_element() >= 0.0) {
+            return Err(format!(
+                "the {name} image's pixel ({x}, {y}) has variance {v}: a variance image needs at least 2 samples per pixel"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Compares two renders that carry their own variances ([`Estimate::from_variance`] of
+/// each): the comparison of two raylemma renders.
+///
+/// # Errors
+/// As [`compare`].
+pub fn compare_images(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, String> {
+    compare(
+        &Estimate::from_variance(a.clone()),
+        &Estimate::from_variance(b.clone()),
+        alpha,
+    )
+}
+
+/// The difference image of a comparison: each pixel coloured by the z of its channel with
+/// the largest `|z|`: red where the first image is brighter, blue where it is darker,
+/// brighter in proportion to `|z| / z_critical`, white beyond `z_critical` (a failed
+/// test), black where the images agree exactly. 8-bit sRGB bytes, row-major.
+pub fn difference_rgb8(c: &Comparison) -> Vec<u8> {
+    let mut out = Vec::with_capacity(3 * c.z.len());
+    for zs in &c.z {
+        let k = (0..3)
             .max_by(|&p, &q| zs[p].abs().total_cmp(&zs[q].abs()))
             .unwrap_or(0);
-        let t = (zs[c].abs() / z_critical).min(1.0);
+        let t = (zs[k].abs() / c.z_critical).min(1.0);
         let t = if t.is_nan() { 1.0 } else { t };
-        let rgb = if zs[c] >= 0.0 {
+        let rgb = if fails(zs[k], c.z_critical) {
+            DVec3::ONE
+        } else if zs[k] >= 0.0 {
             DVec3::new(t, 0.25 * t, 0.25 * t)
         } else {
             DVec3::new(0.25 * t, 0.25 * t, t)
-        };
-        let rgb = if zs[c].abs() > z_critical {
-            DVec3::ONE
-        } else {
-            rgb
         };
         out.extend([
             display::srgb8(rgb.x),

@@ -134,6 +134,7 @@ pub fn render_window(
         height: h,
         mean: vec![DVec3::ZERO; n],
         var: vec![DVec3::ZERO; n],
+        spp: Some(spp),
     };
     for (idx, acc) in done.into_iter().flatten() {
         image.mean[idx] = acc.mean();

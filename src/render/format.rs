@@ -156,13 +156,21 @@ pub fn fnv1a(bytes: &[u8]) -> u64 {
 /// A [`DataError`] with the file, the line and the problem, for anything that is not a
 /// valid scene; nothing is rendered or written before this succeeds.
 pub fn parse(text: &str, file: &str, dir: &Path) -> Result<Scene, DataError> {
-    let raw: RawScene = toml::from_str(text).map_err(|e: toml::de::Error| {
-        let line = e.span().map_or(0, |s| line_of(text, s));
-        DataError::new(file, line, e.message().to_string())
-    })?;
+    let raw = raw_tables(text, file)?;
     validate::scene(&raw, text, file, dir)
 }
 // ANCHOR_END: parse
+
+/// The raw tables of the TOML text `text` of the file `file`, with their spans.
+///
+/// # Errors
+/// A TOML syntax error, an unknown key or a value of the wrong type, with its line.
+pub(super) fn raw_tables(text: &str, file: &str) -> Result<RawScene, DataError> {
+    toml::from_str(text).map_err(|e: toml::de::Error| {
+        let line = e.span().map_or(0, |s| line_of(text, s));
+        DataError::new(file, line, e.message().to_string())
+    })
+}
 
 /// Reads the scene file at `path`.
 ///

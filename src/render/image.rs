@@ -9,15 +9,26 @@
 //! One part, float32, scan lines from the top, channels `R`, `G`, `B` (the pixel means,
 //! linear sRGB primaries and D65 white, from CIE XYZ with a constant spectrum 1 at `Y = 1`)
 //! and `var.R`, `var.G`, `var.B`: the variance **of the mean** of each pixel (the squared
-//! standard error), `s^2 / n` from the `n` samples' sample variance `s^2`. Another renderer
-//! writes the same six channels to be compared by `raylemma compare`.
+//! standard error), `s^2 / n` from the `n` samples' sample variance `s^2`; and the header
+//! attribute `spp` (an `int`), the `n` behind every mean, from which `compare` knows the
+//! degrees of freedom of the variances, `n - 1`.
+//!
+//! # What `compare` reads
+//!
+//! [`ExrContents::read`] reads any single-part scan-line or tiled OpenEXR file with channels
+//! `R`, `G`, `B` in any order, half or float (other channels are ignored), with or without
+//! the three variance channels and the `spp` attribute: the plain images that Mitsuba,
+//! pbrt or a student's renderer write. It refuses, naming the file and the pixel, what no
+//! comparison can use: a file that is not OpenEXR (a PNG is named as one), a truncated
+//! file, a NaN or infinite mean, a NaN, infinite or negative variance.
 
-use std::io::{Seek, Write};
+use std::io::{Read as _, Seek, Write};
 use std::path::Path;
 
+use exr::meta::attribute::AttributeValue;
 use exr::prelude::{
     AnyChannel, AnyChannels, Encoding, FlatSamples, Image as ExrImage, Layer, LayerAttributes,
-    SmallVec, WritableImage,
+    ReadChannels as _, ReadLayers as _, SmallVec, Text, WritableImage,
 };
 use glam::DVec3;
 
@@ -27,6 +38,15 @@ use crate::spectral::display;
 /// The channel names of an image file, in the order of [`Image::mean`] then
 /// [`Image::var`].
 pub const CHANNELS: [&str; 6] = ["R", "G", "B", "var.R", "var.G", "var.B"];
+
+/// The name of the header attribute that holds the samples per pixel (an `int`).
+pub const SPP_ATTRIBUTE: &str = "spp";
+
+/// The first bytes of every OpenEXR file (the magic number 20000630, little-endian).
+const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
+
+/// The first bytes of a PNG file.
+const PNG_MAGIC: [u8; 4] = [0x89, b'P', b'N', b'G'];
 
 /// Per-pixel means and variances of the means, row-major from the top-left pixel.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,6 +59,8 @@ pub struct Image {
     pub mean: Vec<DVec3>,
     /// The variance of each pixel's mean (NaN where it is unknown: one sample).
     pub var: Vec<DVec3>,
+    /// The samples per pixel behind every mean, when known (the EXR's `spp` attribute).
+    pub spp: Option<u32>,
 }
 
 /// The accumulator of a pixel: the project's one Welford recurrence, on linear sRGB.
@@ -52,7 +74,7 @@ impl Image {
 
     // ANCHOR: write_exr
     /// Encodes the six channels ([`CHANNELS`]) as float32 OpenEXR (ZIP compressed) into
-    /// `out`.
+    /// `out`, with the samples per pixel as the header attribute `spp` when known.
     ///
     /// # Errors
     /// The encoder's or the writer's error, in words.
@@ -66,9 +88,15 @@ impl Image {
             .enumerate()
             .map(|(k, name)| AnyChannel::new(*name, FlatSamples::F32(channel(k))))
             .collect();
+        let mut attributes = LayerAttributes::default();
+        if let Some(spp) = self.spp.and_then(|n| i32::try_from(n).ok()) {
+            attributes
+                .other
+                .insert(Text::from(SPP_ATTRIBUTE), AttributeValue::I32(spp));
+        }
         let layer = Layer::new(
             (self.width as usize, self.height as usize),
-            LayerAttributes::default(),
+            attributes,
             Encoding::SMALL_LOSSLESS,
             AnyChannels::sort(list),
         );
@@ -89,51 +117,22 @@ impl Image {
     // ANCHOR_END: write_exr
 
     /// Reads an EXR written by [`Image::write_exr`] (or by another renderer with the same
-    /// channels: `R`, `G`, `B`, and `var.R`, `var.G`, `var.B`; any sample type).
+    /// channels: `R`, `G`, `B`, and `var.R`, `var.G`, `var.B`; any order, half or float),
+    /// as [`ExrContents::read`] does, and requires the variance channels.
     ///
     /// # Errors
-    /// A [`FileError`] naming `path`: not readable, not an EXR, or a channel missing
-    /// (the message lists the channels there are).
+    /// As [`ExrContents::read`], and a [`FileError`] naming `path` when a variance channel
+    /// is missing (the message lists the channels there are).
     pub fn read_exr(path: &Path) -> Result<Image, FileError> {
-        let err = |problem: String| FileError::new(path, problem);
-        if !path.is_file() {
-            return Err(err("no such file".into()));
-        }
-        let image = exr::prelude::read_first_flat_layer_from_file(path)
-            .map_err(|e| err(format!("not a readable OpenEXR file: {e}")))?;
-        let layer = &image.layer_data;
-        let (w, h) = (layer.size.0, layer.size.1);
-        let names: Vec<String> = layer
-            .channel_data
-            .list
-            .iter()
-            .map(|c| c.name.to_string())
-            .collect();
-        let mut data: Vec<Vec<f64>> = Vec::new();
-        for name in CHANNELS {
-            let Some(c) = layer
-                .channel_data
-                .list
-                .iter()
-                .find(|c| c.name.to_string() == name)
-            else {
-                return Err(err(format!(
-                    "no channel {name:?}; the file has {} (a raylemma image has R, G, B, var.R, var.G, var.B)",
-                    names.join(", ")
-                )));
-            };
-            data.push(c.sample_data.values_as_f32().map(f64::from).collect());
-        }
-        let pixel = |k: usize| -> Vec<DVec3> {
-            (0..w * h)
-                .map(|i| DVec3::new(data[k][i], data[k + 1][i], data[k + 2][i]))
-                .collect()
-        };
-        Ok(Image {
-            width: u32::try_from(w).map_err(|_| err("too wide".into()))?,
-            height: u32::try_from(h).map_err(|_| err("too tall".into()))?,
-            mean: pixel(0),
-            var: pixel(3),
+        let contents = ExrContents::read(path)?;
+        let channels = contents.channels.join(", ");
+        contents.into_image().ok_or_else(|| {
+            FileError::new(
+                path,
+                format!(
+                    "no channel \"var.R\"; the file has {channels} (a raylemma image has R, G, B, var.R, var.G, var.B)"
+                ),
+            )
         })
     }
 
@@ -162,4 +161,178 @@ impl Image {
             &display::to_display_rgb8(&self.mean, stops),
         )
     }
+}
+
+/// What an OpenEXR file holds, as `compare` reads it: the means, the variances of the means
+/// if the file has them, and the samples per pixel if its header says.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExrContents {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `R`, `G`, `B` of each pixel, row-major from the top-left pixel.
+    pub mean: Vec<DVec3>,
+    /// `var.R`, `var.G`, `var.B`, when the file has all three.
+    pub var: Option<Vec<DVec3>>,
+    /// The header attribute `spp`, when present.
+    pub spp: Option<u32>,
+    /// Every channel's name, in the file's order (for messages).
+    pub channels: Vec<String>,
+}
+
+impl ExrContents {
+    /// Reads the first layer of the OpenEXR file `path` (see the module's documentation):
+    /// channels `R`, `G`, `B` by name in any order, half or float; `var.R`, `var.G`,
+    /// `var.B` if all three are there; the `spp` attribute if it is a positive integer.
+    ///
+    /// # Errors
+    /// A [`FileError`] naming `path`: missing, not OpenEXR (a PNG is called one), truncated
+    /// or otherwise unreadable, no `R`, `G` or `B` channel (the message lists the
+    /// channels), a channel of integers, only some of the variance channels, a mean that
+    /// is NaN or infinite or a variance that is NaN, infinite or negative (the first such
+    /// pixel, its channel and value).
+    pub fn read(path: &Path) -> Result<ExrContents, FileError> {
+        let err = |problem: String| FileError::new(path, problem);
+        if !path.is_file() {
+            return Err(err("no such file".into()));
+        }
+        let mut magic = [0u8; 4];
+        let read = std::fs::File::open(path)
+            .and_then(|mut f| f.read(&mut magic))
+            .map_err(|e| err(format!("cannot read the file: {e}")))?;
+        if read < 4 || magic != EXR_MAGIC {
+            let what = if magic == PNG_MAGIC {
+                "a PNG image, not an OpenEXR file: compare needs linear floating-point pixels (an .exr, as `raylemma render` or any renderer writes)"
+            } else {
+                "not an OpenEXR file (it does not start with the OpenEXR magic number)"
+            };
+            return Err(err(what.into()));
+        }
+        let image = exr::prelude::read()
+            .no_deep_data()
+            .largest_resolution_level()
+            .all_channels()
+            .first_valid_layer()
+            .all_attributes()
+            .pedantic()
+            .from_file(path)
+            .map_err(|e| {
+                err(format!(
+                    "not a readable OpenEXR file (truncated or damaged?): {e}"
+                ))
+            })?;
+        let layer = &image.layer_data;
+        let (w, h) = (layer.size.0, layer.size.1);
+        let width = u32::try_from(w).map_err(|_| err("too wide".into()))?;
+        let height = u32::try_from(h).map_err(|_| err("too tall".into()))?;
+        let list = &layer.channel_data.list;
+        let channels: Vec<String> = list.iter().map(|c| c.name.to_string()).collect();
+        let find = |name: &str| -> Result<Option<Vec<f64>>, FileError> {
+            let Some(c) = list.iter().find(|c| c.name.to_string() == name) else {
+                return Ok(None);
+            };
+            if let FlatSamples::U32(_) = c.sample_data {
+                return Err(err(format!(
+                    "channel {name} holds unsigned integers, not colours (half or float needed)"
+                )));
+            }
+            Ok(Some(c.sample_data.values_as_f32().map(f64::from).collect()))
+        };
+        let mut rgb = Vec::new();
+        for name in &CHANNELS[..3] {
+            match find(name)? {
+                Some(values) => rgb.push(values),
+                None => {
+                    return Err(err(format!(
+                        "no channel {name:?}; the file has {} (compare needs R, G, B: linear sRGB)",
+                        channels.join(", ")
+                    )));
+                }
+            }
+        }
+        let mut var = Vec::new();
+        for name in &CHANNELS[3..] {
+            if let Some(values) = find(name)? {
+                var.push(values);
+            }
+        }
+        if !var.is_empty() && var.len() < 3 {
+            return Err(err(format!(
+                "only some of the variance channels var.R, var.G, var.B: the file has {}",
+                channels.join(", ")
+            )));
+        }
+        let pixels = |d: &[Vec<f64>]| -> Vec<DVec3> {
+            (0..w * h)
+                .map(|i| DVec3::new(d[0][i], d[1][i], d[2][i]))
+                .collect()
+        };
+        let contents = ExrContents {
+            width,
+            height,
+            mean: pixels(&rgb),
+            var: (!var.is_empty()).then(|| pixels(&var)),
+            spp: spp_attribute(&image.attributes.other)
+                .or_else(|| spp_attribute(&layer.attributes.other)),
+            channels,
+        };
+        contents.check().map_err(err)?;
+        Ok(contents)
+    }
+
+    /// The first pixel whose mean is not finite or whose variance is not a finite number
+    /// `>= 0`, in words.
+    fn check(&self) -> Result<(), String> {
+        let at = |i: usize| (i as u32 % self.width.max(1), i as u32 / self.width.max(1));
+        for (i, m) in self.mean.iter().enumerate() {
+            if let Some(c) = (0..3).find(|&c| !m[c].is_finite()) {
+                let (x, y) = at(i);
+                return Err(format!(
+                    "pixel ({x}, {y}) channel {} is {}, not a finite number",
+                    CHANNELS[c], m[c]
+                ));
+            }
+        }
+        for (i, v) in self.var.iter().flatten().enumerate() {
+            if let Some(c) = (0..3).find(|&c| !(v[c].is_finite() && v[c] >= 0.0)) {
+                let (x, y) = at(i);
+                let why = if v[c].is_nan() {
+                    " (a render with one sample per pixel has no variance: it needs at least 2 samples per pixel)"
+                } else {
+                    ""
+                };
+                return Err(format!(
+                    "pixel ({x}, {y}) channel {} is {}: a variance must be a finite number >= 0{why}",
+                    CHANNELS[c + 3],
+                    v[c]
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The image, if the file has variance channels.
+    pub fn into_image(self) -> Option<Image> {
+        let var = self.var?;
+        Some(Image {
+            width: self.width,
+            height: self.height,
+            mean: self.mean,
+            var,
+            spp: self.spp,
+        })
+    }
+}
+
+/// The `spp` attribute among a header's custom attributes, if it is a positive integer
+/// (an `int`, or a `float` or `double` with an integer value).
+fn spp_attribute(other: &std::collections::HashMap<Text, AttributeValue>) -> Option<u32> {
+    let value = match other.get(&Text::from(SPP_ATTRIBUTE))? {
+        AttributeValue::I32(n) => f64::from(*n),
+        AttributeValue::F32(x) => f64::from(*x),
+        AttributeValue::F64(x) => *x,
+        _ => return None,
+    };
+    (value >= 1.0 && value.fract() == 0.0 && value <= f64::from(u32::MAX)).then_some(value as u32)
 }

@@ -18,10 +18,12 @@
 //! * [`files`]: the three files of a render (EXR, PNG, the JSON [`Sidecar`]), written
 //!   together or not at all;
 //! * [`compare`]: do two renders agree within their noise?
+//! * [`export`]: the scene for other renderers: Mitsuba 3 XML and fully resolved JSON.
 
 pub mod camera;
 pub mod compare;
 pub mod driver;
+pub mod export;
 pub mod files;
 pub mod format;
 pub mod image;

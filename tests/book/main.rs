@@ -48,6 +48,8 @@ mod spectral {
 }
 
 mod renderer {
+    pub(crate) mod compare;
+    mod export;
     mod render;
     mod scene;
     mod testing;

@@ -3,7 +3,7 @@
 #
 #   tools/mitsuba/setup.sh            venv + libLLVM for the llvm_* variants, then a
 #                                     tiny render in each CPU variant; prints those that work
-#   tools/mitsuba/setup.sh --pip-only only the venv with the pinned packages (what run.sh uses)
+#   tools/mitsuba/setup.sh --pip-only only the venv with the pinned packages (what compare_all.sh uses)
 #   tools/mitsuba/setup.sh --no-test  venv + libLLVM, no test renders
 #
 # The venv is $RAYLEMMA_MITSUBA_VENV, default /root/.cache/raylemma-mitsuba-venv.

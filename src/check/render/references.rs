@@ -160,6 +160,7 @@ pub fn crop(image: &Image, window: Window) -> Result<Image, String> {
         height: window.height,
         mean: Vec::with_capacity((window.width * window.height) as usize),
         var: Vec::with_capacity((window.width * window.height) as usize),
+        spp: image.spp,
     };
     for y in window.y..window.y + window.height {
         for x in window.x..window.x + window.width {

@@ -14,7 +14,7 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 use raylemma::geometry::Parallelogram;
-use raylemma::render::compare::{compare, two_sided_critical};
+use raylemma::render::compare::{compare_images as compare, two_sided_critical};
 use raylemma::render::image::{Image, Welford};
 use raylemma::render::integrator::offset_origin;
 use raylemma::render::scene::{self, Environment, Geometry, Material, Scene, Surface};
@@ -381,7 +381,11 @@ fn compare_accepts_two_seeds_and_rejects_a_changed_scene() {
     s2.settings.seed = 99;
     let b = render(&s2, 32, Progress::Silent);
     let c = compare(&a, &b, test_alpha()).unwrap();
-    assert!(c.agree(), "two seeds of one scene differ:\n{}", c.report());
+    assert!(
+        c.agree(),
+        "two seeds of one scene differ:\n{}",
+        c.report(["a", "b"])
+    );
     assert!(
         (0.8..=1.25).contains(&c.mean_z2),
         "mean z^2 = {} (variances wrong?)",
@@ -399,7 +403,11 @@ fn compare_accepts_two_seeds_and_rejects_a_changed_scene() {
     }
     let d = render(&bright, 32, Progress::Silent);
     let c = compare(&a, &d, test_alpha()).unwrap();
-    assert!(!c.agree(), "a 5 % brighter box passed:\n{}", c.report());
+    assert!(
+        !c.agree(),
+        "a 5 % brighter box passed:\n{}",
+        c.report(["a", "b"])
+    );
     assert!(c.regions[0].z.abs() > c.z_critical);
 }
 
@@ -458,7 +466,7 @@ fn emission_wavelengths_agree_with_hero_visible_and_cut_the_noise() {
     assert!(
         c.agree(),
         "emission vs visible wavelengths:\n{}",
-        c.report()
+        c.report(["a", "b"])
     );
     let gain = total_variance(&by_visible) / total_variance(&by_emission);
     assert!(
@@ -487,7 +495,11 @@ fn emission_wavelengths_weighted_by_another_pdf_are_rejected() {
         w
     }));
     let c = compare(&lamp(None), &wrong, test_alpha()).unwrap();
-    assert!(!c.agree(), "a wrong weight passed:\n{}", c.report());
+    assert!(
+        !c.agree(),
+        "a wrong weight passed:\n{}",
+        c.report(["a", "b"])
+    );
 }
 
 #[test]
@@ -497,6 +509,7 @@ fn sidecar_strings_are_valid_json() {
         height: 1,
         mean: vec![DVec3::ZERO; 2],
         var: vec![DVec3::ZERO; 2],
+        spp: None,
     };
     let keys = [
         "renderer",

@@ -11,9 +11,9 @@ use raylemma::output::{self, FileSet};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, coursework, dispersion, display, emission, external, frame, fresnel, lambert, reflect,
-    roulette, sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample,
-    wavelength,
+    colour, compare, coursework, dispersion, display, emission, export, external, frame, fresnel,
+    lambert, mitsuba, reflect, roulette, shadow, sampling, specular, sphere, stats, tabulated,
+    testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -58,6 +58,9 @@ pub fn all() -> Vec<Output> {
     outputs.extend(emission::outputs());
     outputs.extend(display::outputs());
     outputs.extend(upsample::outputs());
+    outputs.extend(compare::outputs());
+    outputs.extend(export::outputs());
+    outputs.extend(mitsuba::outputs());
     outputs.extend(testing::outputs());
     outputs
 }

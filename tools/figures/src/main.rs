@@ -14,14 +14,17 @@ mod render;
 mod timing;
 
 mod colour;
+mod compare;
 mod coursework;
 mod dispersion;
 mod display;
 mod emission;
+mod export;
 mod external;
 mod frame;
 mod fresnel;
 mod lambert;
+mod mitsuba;
 mod reflect;
 mod roulette;
 mod sampling;

@@ -21,7 +21,6 @@ use raylemma::render::provenance::{self, MadeFrom};
 use raylemma::render::scene::Scene;
 use raylemma::render::{self, Progress, Sidecar};
 use raylemma::spectral::display;
-use raylemma::stats::binomial::wilson;
 
 /// The canonical scenes: the name of the reference files, and the scene file under
 /// `scenes/` (the library's list, which the renderer's tests also read).
@@ -263,110 +262,6 @@ fn stderr_png(image: &Image) -> Result<Vec<u8>, BoxError> {
     plot::encode_png(image.width, image.height, rgb)
 }
 
-/// One row of the calibration of `compare`: `pairs` pairs of renders of `scene` (cropped
-/// to `side`, `spp` samples) with independent seeds, and as many pairs where the second
-/// render's reflectances are `1 + bias` times higher.
-struct Calibration {
-    scene: &'static str,
-    side: u32,
-    spp: u32,
-    pairs: u32,
-    false_alarms: u32,
-    detected: u32,
-    mean_z2: f64,
-}
-
-/// The brightening of the planted twin: every tabulated reflectance 3 % higher.
-pub const CALIBRATION_BIAS: f64 = 0.03;
-
-fn calibrate(
-    settings: &Settings,
-    scene: &'static str,
-    side: u32,
-    spp: u32,
-    pairs: u32,
-) -> Result<Calibration, BoxError> {
-    use raylemma::render::compare::compare;
-    use raylemma::render::scene::Material;
-    use raylemma::spectral::spectrum::Spectrum;
-    let mut s = render::load(&scenes_dir(settings).join(scene))?;
-    s.camera.width = side;
-    s.camera.height = side;
-    let mut bright = s.clone();
-    for m in &mut bright.materials {
-        if let Material::Lambert {
-            reflectance: Spectrum::Table(t),
-        } = m
-        {
-            *t = t.scaled(1.0 + CALIBRATION_BIAS);
-        }
-    }
-    let (mut false_alarms, mut detected, mut z2) = (0, 0, 0.0);
-    for k in 0..pairs {
-        let mut a = s.clone();
-        a.settings.seed = 2 * u64::from(k) + 1_000;
-        let mut b = s.clone();
-        b.settings.seed = 2 * u64::from(k) + 1_001;
-        let mut c = bright.clone();
-        c.settings.seed = b.settings.seed;
-        let ia = render::render(&a, spp, Progress::Silent);
-        let ib = render::render(&b, spp, Progress::Silent);
-        let ic = render::render(&c, spp, Progress::Silent);
-        let same = compare(&ia, &ib, 0.01)?;
-        z2 += same.mean_z2;
-        false_alarms += u32::from(!same.agree());
-        detected += u32::from(!compare(&ia, &ic, 0.01)?.agree());
-    }
-    Ok(Calibration {
-        scene,
-        side,
-        spp,
-        pairs,
-        false_alarms,
-        detected,
-        mean_z2: z2 / f64::from(pairs),
-    })
-}
-
-fn calibration_md(settings: &Settings) -> Result<String, BoxError> {
-    let pairs = if settings.quick { 4 } else { 60 };
-    let rows = [
-        calibrate(settings, "cornell-diffuse.toml", 64, 64, pairs)?,
-        calibrate(settings, "cornell-diffuse.toml", 64, 256, pairs)?,
-        calibrate(settings, "cornell.toml", 64, 64, pairs)?,
-        calibrate(settings, "cornell.toml", 64, 256, pairs)?,
-    ];
-    let mut md = String::from(
-        "| scene | size | spp | pairs | false alarms (nominal 1 %) | 95 % interval | mean z² | 3 % brighter detected |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
-    );
-    for r in &rows {
-        let (lo, hi) = wilson(r.false_alarms, r.pairs);
-        let _ = writeln!(
-            md,
-            "| `{}` | {}x{} | {} | {} | {} ({:.1} %) | {:.1}–{:.1} % | {:.3} | {} of {} |",
-            r.scene.trim_end_matches(".toml"),
-            r.side,
-            r.side,
-            r.spp,
-            r.pairs,
-            r.false_alarms,
-            100.0 * f64::from(r.false_alarms) / f64::from(r.pairs),
-            100.0 * lo,
-            100.0 * hi,
-            r.mean_z2,
-            r.detected,
-            r.pairs
-        );
-    }
-    let _ = write!(
-        md,
-        "\n*Each pair: two renders with independent seeds, compared at `--alpha 0.01`; and the first against the same scene with every measured reflectance {} % higher (same seed as the second){}.*\n",
-        100.0 * CALIBRATION_BIAS,
-        quick_note(settings.quick)
-    );
-    Ok(md)
-}
-
 /// Renders every canonical scene whose committed reference is out of date (all of them
 /// with `force`), saying which it skips and why, then the speed series and the tables, and
 /// writes the results into `figures/reference/` and `figures/` as one set of files, which
@@ -408,23 +303,18 @@ pub fn write_references(
     }
     if fresh.is_empty() {
         eprintln!(
-            "  every reference is current: the noise table, the RMSE against time and the calibration of compare are kept (`references --force` renders them all)"
+            "  every reference is current: the noise table and the RMSE against time are kept (`references --force` renders them all)"
         );
         return Ok(Vec::new());
     }
     eprintln!("  cornell: RMSE against time");
     let series = speed_series(&rendered[0].image, settings)?;
-    eprintln!("  compare: false alarms and power over pairs of renders");
     let mut files = FileSet::new();
     let refs = figures.join("reference");
     for r in rendered.iter().filter(|r| fresh.contains(&r.name)) {
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
-    let flat: [(&str, Vec<u8>); 5] = [
-        (
-            "render_compare_calibration.md",
-            calibration_md(settings)?.into_bytes(),
-        ),
+    let flat: [(&str, Vec<u8>); 4] = [
         (
             "render_references.md",
             references_md(&rendered, settings).into_bytes(),

@@ -1,0 +1,361 @@
+//! Tests of `compare` with few candidates (chapter *The reference renderer*, *Comparing
+//! two renders*): the statistics of variances estimated from few images, the reading of
+//! plain EXRs as other renderers write them, and the refusal of images no comparison can
+//! use.
+//!
+//! Statistical tests (2 of the suite's budget of 200), on synthetic images with normal
+//! noise of known size (no rendering: the tests cost milliseconds): the pixel z's of 2, 4
+//! and 16 candidates are standard normal and the verdict is *agree*; 4 candidates
+//! with normal critical values (the planted twin) raise false alarms; a 3 % brighter
+//! candidate is refused. Each at `raylemma::stats::test_alpha()`, shared by Šidák.
+
+use std::path::PathBuf;
+
+use exr::prelude::{
+    AnyChannel, AnyChannels, Encoding, FlatSamples, Image as ExrImage, Layer, LayerAttributes,
+    SmallVec, WritableImage, f16,
+};
+use glam::DVec3;
+use raylemma::render::compare::{Estimate, compare, equivalent_z, two_sided_critical};
+use raylemma::render::image::{ExrContents, Image};
+use raylemma::rng::{self, Rng};
+use raylemma::stats::null::standard_normal;
+use raylemma::stats::{sidak, test_alpha};
+
+/// Side of the synthetic images.
+const SIDE: u32 = 128;
+
+/// A synthetic scene: the exact value of every pixel and the standard deviation of one
+/// image's pixel mean there (both varying over the image, as in a render).
+struct Truth {
+    mean: Vec<DVec3>,
+    sd: Vec<DVec3>,
+}
+
+fn truth(rng: &mut Rng) -> Truth {
+    let n = (SIDE * SIDE) as usize;
+    let mut v = || {
+        DVec3::new(
+            rng::uniform(rng, 0.05, 1.0),
+            rng::uniform(rng, 0.05, 1.0),
+            0.3,
+        )
+    };
+    let mean: Vec<DVec3> = (0..n).map(|_| v()).collect();
+    let sd = mean.iter().map(|m| 0.05 * *m * (1.0 + m.x)).collect();
+    Truth { mean, sd }
+}
+
+/// One image of the scene scaled by `gain`: every pixel its exact value plus normal noise.
+fn draw(t: &Truth, gain: f64, rng: &mut Rng) -> Vec<DVec3> {
+    t.mean
+        .iter()
+        .zip(&t.sd)
+        .map(|(m, s)| {
+            gain * *m
+                + *s * DVec3::new(
+                    standard_normal(rng),
+                    standard_normal(rng),
+                    standard_normal(rng),
+                )
+        })
+        .collect()
+}
+
+/// A reference whose variance is known exactly (a 64th of one candidate image's), as a
+/// render with very many samples per pixel.
+fn reference(t: &Truth, rng: &mut Rng) -> Estimate {
+    let quarter: Vec<DVec3> = t.sd.iter().map(|s| *s * *s / 64.0).collect();
+    let mean = t
+        .mean
+        .iter()
+        .zip(&quarter)
+        .map(|(m, v)| {
+            *m + v.map(f64::sqrt)
+                * DVec3::new(
+                    standard_normal(rng),
+                    standard_normal(rng),
+                    standard_normal(rng),
+                )
+        })
+        .collect();
+    Estimate::from_variance(Image {
+        width: SIDE,
+        height: SIDE,
+        mean,
+        var: quarter,
+        spp: None,
+    })
+}
+
+fn candidates(t: &Truth, k: usize, gain: f64, rng: &mut Rng) -> Estimate {
+    let images: Vec<Vec<DVec3>> = (0..k).map(|_| draw(t, gain, rng)).collect();
+    let means: Vec<&[DVec3]> = images.iter().map(|m| &m[..]).collect();
+    Estimate::from_spread(SIDE, SIDE, &means).unwrap()
+}
+
+/// The share of the `n` pixel-channel z's beyond 1.96, as a z-score against the 5 % of a
+/// standard normal (binomial, normal approximation: `n p` is in the hundreds).
+fn share_z(share: f64, n: usize) -> f64 {
+    let n = n as f64;
+    (share - 0.05) * n / (n * 0.05 * 0.95).sqrt()
+}
+
+#[test]
+fn few_candidates_keep_the_false_alarm_rate_and_normal_critical_values_do_not() {
+    let mut rng = rng::seeded(0x5eed_c0de);
+    let t = truth(&mut rng);
+    let r = reference(&t, &mut rng);
+    // Nine claims: for each K, the pixels' share beyond 1.96, the blocks' z's and the verdict.
+    let level = sidak(test_alpha(), 9);
+    let critical = two_sided_critical(level);
+    for k in [2, 4, 16] {
+        let c = candidates(&t, k, 1.0, &mut rng);
+        assert_eq!(c.dof, (k - 1) as f64);
+        let cmp = compare(&r, &c, level).unwrap();
+        // Pixels: conservative, so at most 5 % beyond 1.96 (one-sided).
+        let z = share_z(cmp.share_beyond_95, cmp.pixel_tests);
+        assert!(
+            z <= critical,
+            "K = {k}: |z| > 1.96 in {:.3} % of pixel-channels (z = {z:.2})",
+            100.0 * cmp.share_beyond_95
+        );
+        // Blocks: their z's are standard normal, so their sum of squares is chi-squared
+        // with one degree of freedom per block and channel.
+        let n = 3.0 * cmp.regions.len() as f64;
+        let sum: f64 = cmp
+            .regions
+            .iter()
+            .map(|b| b.zs.length_squared())
+            .sum::<f64>();
+        let chi = (sum - n) / (2.0 * n).sqrt();
+        assert!(
+            chi.abs() <= critical,
+            "K = {k}: blocks' sum of z^2 {sum:.1} over {n} blocks (z = {chi:.2})"
+        );
+        assert!(cmp.agree(), "K = {k}:\n{}", cmp.report(["ref", "cand"]));
+        // The planted twin: the same candidates with normal critical values.
+        if k == 4 {
+            let mut normal = c.clone();
+            normal.dof = f64::INFINITY;
+            let wrong = compare(&r, &normal, level).unwrap();
+            assert!(
+                wrong.share_beyond_95 > 0.08 && wrong.pixel_failure_count > 10 && !wrong.agree(),
+                "normal critical values with 4 candidates raised no false alarm: {} pixels, {:.3} % beyond 1.96",
+                wrong.pixel_failure_count,
+                100.0 * wrong.share_beyond_95
+            );
+        }
+    }
+}
+
+#[test]
+fn four_candidates_three_percent_brighter_are_refused() {
+    let mut rng = rng::seeded(0xb4_1647);
+    let t = truth(&mut rng);
+    let r = reference(&t, &mut rng);
+    let c = compare(&r, &candidates(&t, 4, 1.03, &mut rng), test_alpha()).unwrap();
+    assert!(!c.agree(), "{}", c.report(["ref", "cand"]));
+    assert!(
+        c.image.iter().all(|(z, _)| *z < -c.z_critical),
+        "the whole image's mean is not the test that fails: {:?}",
+        c.image
+    );
+}
+
+#[test]
+fn the_spread_of_images_is_their_sample_variance_over_k() {
+    // Three images of one pixel: 1, 2, 4 (R); mean 7/3, s^2 = 7/3, variance of the mean 7/9.
+    let images = [
+        [DVec3::new(1.0, 0.0, 5.0)],
+        [DVec3::new(2.0, 0.0, 5.0)],
+        [DVec3::new(4.0, 0.0, 5.0)],
+    ];
+    let means: Vec<&[DVec3]> = images.iter().map(|m| &m[..]).collect();
+    let e = Estimate::from_spread(1, 1, &means).unwrap();
+    assert!((e.image.mean[0].x - 7.0 / 3.0).abs() < 1e-15);
+    assert!((e.image.var[0].x - 7.0 / 9.0).abs() < 1e-15);
+    assert_eq!((e.image.var[0].y, e.image.var[0].z), (0.0, 0.0));
+    assert_eq!(e.dof, 2.0);
+    assert!(Estimate::from_spread(1, 1, &means[..1]).is_err());
+    assert!(Estimate::from_spread(2, 1, &means).is_err());
+}
+
+#[test]
+fn equivalent_z_matches_the_t_table_and_satterthwaite_the_hand_count() {
+    // Published two-sided 5 % points: t_3 = 3.182446, t_15 = 2.131450, t_1 = 12.706205.
+    for (t, dof) in [(3.182_446, 3.0), (2.131_450, 15.0), (12.706_205, 1.0)] {
+        let z = equivalent_z(t, 1.0, dof);
+        assert!((z - 1.959_964).abs() < 2e-5, "t = {t} with {dof}: z = {z}");
+        assert!((equivalent_z(-t, 1.0, dof) + z).abs() < 1e-12);
+    }
+    assert_eq!(equivalent_z(2.5, 1.0, f64::INFINITY), 2.5);
+    assert_eq!(equivalent_z(0.0, 0.0, 3.0), 0.0);
+    assert_eq!(equivalent_z(1.0, 0.0, 3.0), f64::INFINITY);
+    // One pixel, variances 1 and 1 with 3 and 3 degrees of freedom: the pixel test takes
+    // the smaller, 3; the whole image's mean (one pixel here) Welch-Satterthwaite with
+    // unbiased squares, 2^2 / (1/5 + 1/5) = 10; with 3 and infinitely many, 3 and
+    // 2^2 / (1/5) = 20.
+    let one = |var: f64, spp: Option<u32>| {
+        Estimate::from_variance(Image {
+            width: 1,
+            height: 1,
+            mean: vec![DVec3::ZERO],
+            var: vec![DVec3::splat(var)],
+            spp,
+        })
+    };
+    let c = compare(&one(1.0, Some(4)), &one(1.0, Some(4)), 0.01).unwrap();
+    assert_eq!(c.pixel_dof, (3.0, 3.0));
+    assert!((c.image[0].1 - 10.0).abs() < 1e-12, "{:?}", c.image);
+    let c = compare(&one(1.0, Some(4)), &one(1.0, None), 0.01).unwrap();
+    assert_eq!(c.pixel_dof, (3.0, 3.0));
+    assert!((c.image[0].1 - 20.0).abs() < 1e-12, "{:?}", c.image);
+    // A side with no variance at all does not lower the degrees of freedom.
+    let c = compare(&one(1.0, None), &one(0.0, Some(4)), 0.01).unwrap();
+    assert_eq!(c.pixel_dof.0, f64::INFINITY);
+    assert!(
+        c.sources[0].contains("no spp attribute"),
+        "{}",
+        c.sources[0]
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Files as other renderers write them.
+
+pub fn tmp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("raylemma-compare-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+/// Writes a plain EXR with the channels `names` (in that order; EXR sorts them), each
+/// `value(channel index, pixel index)`, as half floats if `half`.
+pub fn write_plain(
+    path: &std::path::Path,
+    (w, h): (usize, usize),
+    names: &[&str],
+    half: bool,
+    value: impl Fn(usize, usize) -> f32,
+) {
+    let list: SmallVec<[AnyChannel<FlatSamples>; 4]> = names
+        .iter()
+        .enumerate()
+        .map(|(c, name)| {
+            let v: Vec<f32> = (0..w * h).map(|i| value(c, i)).collect();
+            let samples = if half {
+                FlatSamples::F16(v.iter().map(|&x| f16::from_f32(x)).collect())
+            } else {
+                FlatSamples::F32(v)
+            };
+            AnyChannel::new(*name, samples)
+        })
+        .collect();
+    let layer = Layer::new(
+        (w, h),
+        LayerAttributes::default(),
+        Encoding::UNCOMPRESSED,
+        AnyChannels::sort(list),
+    );
+    ExrImage::from_layer(layer).write().to_file(path).unwrap();
+}
+
+#[test]
+fn plain_exrs_are_read_in_any_channel_order_half_or_float() {
+    let path = tmp("plain-half.exr");
+    // Alpha first, then B, G, R: what matters is the names.
+    let rgb = |c: usize, i: usize| [0.0, 0.25, 0.5, 1.0][c] + i as f32;
+    write_plain(&path, (3, 2), &["A", "B", "G", "R"], true, rgb);
+    let c = ExrContents::read(&path).unwrap();
+    assert_eq!(
+        (c.width, c.height, c.var.is_none(), c.spp),
+        (3, 2, true, None)
+    );
+    assert_eq!(c.mean[4], DVec3::new(5.0, 4.5, 4.25));
+    let path = tmp("plain-float.exr");
+    write_plain(&path, (3, 2), &["R", "G", "B"], false, |c, i| {
+        0.1 * c as f32 + i as f32
+    });
+    let c = ExrContents::read(&path).unwrap();
+    assert!((c.mean[5] - DVec3::new(5.0, 5.1, 5.2)).abs().max_element() < 1e-6);
+    // raylemma's own files carry their samples per pixel.
+    let image = Image {
+        width: 2,
+        height: 1,
+        mean: vec![DVec3::ONE; 2],
+        var: vec![DVec3::splat(0.5); 2],
+        spp: Some(64),
+    };
+    let path = tmp("with-spp.exr");
+    image.write_exr(&path).unwrap();
+    let back = Image::read_exr(&path).unwrap();
+    assert_eq!(back, image);
+    assert_eq!(Estimate::from_variance(back).dof, 63.0);
+}
+
+#[test]
+fn images_no_comparison_can_use_are_refused_by_name() {
+    let good = |c: usize, _| [1.0, 0.5, 0.25, 0.01, 0.01, 0.01][c];
+    let six = ["R", "G", "B", "var.R", "var.G", "var.B"];
+    let problem = |name: &str, names: &[&str], value: &dyn Fn(usize, usize) -> f32| {
+        let path = tmp(name);
+        write_plain(&path, (4, 3), names, false, value);
+        let e = ExrContents::read(&path).unwrap_err();
+        assert!(e.to_string().contains(name), "{e}");
+        e.problem
+    };
+    let p = problem("nan.exr", &six, &|c, i| {
+        if (c, i) == (1, 6) {
+            f32::NAN
+        } else {
+            good(c, i)
+        }
+    });
+    assert!(p.contains("pixel (2, 1) channel G is NaN"), "{p}");
+    let p = problem("inf.exr", &six, &|c, i| {
+        if (c, i) == (0, 0) {
+            f32::INFINITY
+        } else {
+            good(c, i)
+        }
+    });
+    assert!(p.contains("pixel (0, 0) channel R is inf"), "{p}");
+    let p = problem("negative.exr", &six, &|c, i| {
+        if (c, i) == (5, 11) { -1e-3 } else { good(c, i) }
+    });
+    assert!(
+        p.contains("pixel (3, 2) channel var.B") && p.contains(">= 0"),
+        "{p}"
+    );
+    let p = problem("some-var.exr", &["R", "G", "B", "var.R"], &good);
+    assert!(p.contains("only some of the variance channels"), "{p}");
+    let p = problem("no-rgb.exr", &["Y"], &good);
+    assert!(p.contains("no channel \"R\"") && p.contains("Y"), "{p}");
+    // Truncated: the first half of a valid file.
+    let whole = tmp("whole.exr");
+    write_plain(&whole, (16, 16), &six, false, good);
+    let bytes = std::fs::read(&whole).unwrap();
+    let cut = tmp("truncated.exr");
+    std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
+    let e = ExrContents::read(&cut).unwrap_err();
+    assert!(e.problem.contains("truncated"), "{e}");
+    // A PNG is named as one.
+    let png = tmp("image.png");
+    let bytes = raylemma::spectral::display::encode_png(1, 1, &[0, 0, 0]).unwrap();
+    std::fs::write(&png, bytes).unwrap();
+    let e = ExrContents::read(&png).unwrap_err();
+    assert!(e.problem.contains("a PNG image"), "{e}");
+    // A render of one sample per pixel has no variance.
+    let one = Image {
+        width: 1,
+        height: 1,
+        mean: vec![DVec3::ONE],
+        var: vec![DVec3::NAN],
+        spp: Some(1),
+    };
+    let path = tmp("one-spp.exr");
+    one.write_exr(&path).unwrap();
+    let e = ExrContents::read(&path).unwrap_err();
+    assert!(e.problem.contains("at least 2 samples"), "{e}");
+}

@@ -1,0 +1,199 @@
+//! The renderer chapter's calibration of `compare` with few candidates: how often it calls
+//! a correct candidate different (false alarms at the stated 1 %), with the variance from
+//! the spread of 2, 4 or 16 plain images or from one image's own variance channels, next
+//! to the same comparisons with normal critical values (the mistake the degrees of freedom
+//! correct); and how often it notices a scene 1 % and 3 % brighter.
+//!
+//! Every trial renders its own reference (many samples per pixel, with its `spp`) and its
+//! own candidates (independent seeds), so that the trials are independent. The brighter
+//! scenes are the same candidates with every pixel multiplied by `1 + b`: exactly the
+//! images of the scene with a light `1 + b` times brighter and the same seeds (the light's
+//! spectrum enters every path as a factor; nothing else depends on it).
+
+use std::fmt::Write as _;
+
+use rayon::prelude::*;
+
+use super::{Output, Settings};
+use crate::plot::BoxError;
+use crate::timing::quick_note;
+use raylemma::render::compare::{Estimate, compare};
+use raylemma::render::image::Image;
+use raylemma::render::{self, Progress};
+use raylemma::stats::binomial::wilson;
+
+/// The outputs of this module.
+pub fn outputs() -> Vec<Output> {
+    vec![Output {
+        file: "render_compare_calibration.md",
+        what: "false alarms and power of compare with few candidates",
+        make: calibration_md,
+    }]
+}
+
+/// The family-wise level of the calibrated comparisons (`compare`'s default).
+const ALPHA: f64 = 0.01;
+/// The planted brightenings.
+const GAINS: [f64; 2] = [0.01, 0.03];
+/// Side of the images (the whole scene at this resolution).
+const SIDE: u32 = 32;
+/// Samples per pixel of each plain candidate image.
+const CANDIDATE_SPP: u32 = 64;
+/// Samples per pixel of the reference.
+const REFERENCE_SPP: u32 = 1024;
+/// The candidate sets: `0` is one image of `16 * CANDIDATE_SPP` samples with its own
+/// variance channels; the others are that many plain images.
+const SETS: [usize; 4] = [0, 2, 4, 16];
+
+/// The counts of one candidate set over all trials.
+#[derive(Clone, Copy, Default)]
+struct Counts {
+    false_alarms: u32,
+    normal_false_alarms: u32,
+    detected: [u32; 2],
+    mean_z2: f64,
+}
+
+/// One candidate set's outcome in one trial: false alarm, false alarm with normal critical
+/// values, detected at each gain, mean z².
+type Outcome = (bool, bool, [bool; 2], f64);
+
+/// One trial: the outcome of each candidate set.
+fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, String> {
+    let seeded = |seed: u64| {
+        let mut s = scene.clone();
+        s.settings.seed = seed;
+        s
+    };
+    let base = 1_000 + 100 * k;
+    let reference = Estimate::from_variance(render::render(
+        &seeded(base),
+        REFERENCE_SPP,
+        Progress::Silent,
+    ));
+    let plain: Vec<Image> = (0..16)
+        .map(|j| render::render(&seeded(base + 1 + j), CANDIDATE_SPP, Progress::Silent))
+        .collect();
+    let one = render::render(&seeded(base + 50), 16 * CANDIDATE_SPP, Progress::Silent);
+    let mut out = Vec::new();
+    for &set in &SETS {
+        let candidate = |gain: f64| -> Result<Estimate, String> {
+            if set == 0 {
+                let mut image = one.clone();
+                for m in &mut image.mean {
+                    *m *= gain;
+                }
+                for v in &mut image.var {
+                    *v *= gain * gain;
+                }
+                return Ok(Estimate::from_variance(image));
+            }
+            let scaled: Vec<Vec<glam::DVec3>> = plain[..set]
+                .iter()
+                .map(|i| i.mean.iter().map(|m| *m * gain).collect())
+                .collect();
+            let means: Vec<&[glam::DVec3]> = scaled.iter().map(|m| &m[..]).collect();
+            Estimate::from_spread(SIDE, SIDE, &means)
+        };
+        let correct = candidate(1.0)?;
+        let same = compare(&reference, &correct, ALPHA)?;
+        let mut normal = correct.clone();
+        normal.dof = f64::INFINITY;
+        let mut normal_ref = reference.clone();
+        normal_ref.dof = f64::INFINITY;
+        let wrong = compare(&normal_ref, &normal, ALPHA)?;
+        let mut detected = [false; 2];
+        for (d, g) in detected.iter_mut().zip(GAINS) {
+            *d = !compare(&reference, &candidate(1.0 + g)?, ALPHA)?.agree();
+        }
+        out.push((!same.agree(), !wrong.agree(), detected, same.mean_z2));
+    }
+    Ok(out)
+}
+
+/// The scenes calibrated: `cornell-diffuse` (every surface diffuse: next-event estimation
+/// does the work, pixels are nearly normal) and `cornell` (caustics through the glass and
+/// the mirror: heavy-tailed pixels).
+const SCENES: [&str; 2] = ["cornell-diffuse", "cornell"];
+
+/// The counts of every candidate set over `trials` trials of `name`.
+fn calibrate(settings: &Settings, name: &str, trials: u64) -> Result<[Counts; 4], BoxError> {
+    let mut scene = render::load(&settings.root.join("scenes").join(format!("{name}.toml")))?;
+    scene.camera.width = SIDE;
+    scene.camera.height = SIDE;
+    let results: Vec<Vec<Outcome>> = (0..trials)
+        .into_par_iter()
+        .map(|k| trial(&scene, k))
+        .collect::<Result<_, _>>()?;
+    let mut counts = [Counts::default(); SETS.len()];
+    for r in &results {
+        for (c, &(fa, nfa, det, z2)) in counts.iter_mut().zip(r) {
+            c.false_alarms += u32::from(fa);
+            c.normal_false_alarms += u32::from(nfa);
+            for (d, x) in c.detected.iter_mut().zip(det) {
+                *d += u32::from(x);
+            }
+            c.mean_z2 += z2 / trials as f64;
+        }
+    }
+    Ok(counts)
+}
+
+fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let trials: u64 = if settings.quick { 2 } else { 100 };
+    let n = u32::try_from(trials)?;
+    let rate = |k: u32| {
+        let (lo, hi) = wilson(k, n);
+        format!(
+            "{k} ({:.1} %; {:.1}–{:.1} %)",
+            100.0 * f64::from(k) / f64::from(n),
+            100.0 * lo,
+            100.0 * hi
+        )
+    };
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| scene | candidate | degrees of freedom of a pixel | false alarms (nominal 1 %; 95 % interval) | with normal critical values | 1 % brighter detected | 3 % brighter detected | mean z² |"
+    )?;
+    writeln!(md, "|---|---|---:|---:|---:|---:|---:|---:|")?;
+    for name in SCENES {
+        let counts = calibrate(settings, name, trials)?;
+        for (&set, c) in SETS.iter().zip(&counts) {
+            let (what, dof) = if set == 0 {
+                (
+                    format!(
+                        "1 image of {} spp with its variance channels",
+                        16 * CANDIDATE_SPP
+                    ),
+                    16 * CANDIDATE_SPP - 1,
+                )
+            } else {
+                (
+                    format!("{set} plain images of {CANDIDATE_SPP} spp"),
+                    set as u32 - 1,
+                )
+            };
+            writeln!(
+                md,
+                "| `{name}` | {what} | {dof} | {} | {} | {} of {n} | {} of {n} | {:.3} |",
+                rate(c.false_alarms),
+                rate(c.normal_false_alarms),
+                c.detected[0],
+                c.detected[1],
+                c.mean_z2
+            )?;
+        }
+    }
+    writeln!(
+        md,
+        "\n*Each scene at {SIDE}x{SIDE} pixels, {trials} trials, each with its own reference of {REFERENCE_SPP} spp and its own candidates (independent seeds), compared at `--alpha {ALPHA}`. \"Normal critical values\": the same comparisons with both sides' degrees of freedom taken as infinite. The brighter scenes are the candidates with every pixel {} % higher: the images of the same seeds under a light that much brighter.{}*",
+        GAINS
+            .iter()
+            .map(|g| format!("{}", 100.0 * g))
+            .collect::<Vec<_>>()
+            .join(" and "),
+        quick_note(settings.quick)
+    )?;
+    Ok(md.into_bytes())
+}
