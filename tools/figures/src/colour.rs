@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use plotters::prelude::*;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, PALETTE, Panel, Scale, Series};
+use crate::plot::{self, BoxError, PALETTE, Panel, Series};
 use raylemma::spectral::cie::{
     self, chromaticity, cmf, cmf_fit, krystek, xyz, xyz_to_linear_srgb, xyz_with,
 };
@@ -29,9 +29,9 @@ pub fn outputs() -> Vec<Output> {
             make: illuminants_md,
         },
         Output {
-            file: "colour_fit.png",
+            file: "colour_fit.svg",
             what: "colour-matching functions: table against the Wyman-Sloan-Shirley fit",
-            make: fit_png,
+            make: fit_svg,
         },
         Output {
             file: "colour_fit.md",
@@ -231,7 +231,7 @@ fn illuminants_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn fit_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let nms: Vec<f64> = (0..=94).map(|i| 360.0 + 5.0 * f64::from(i)).collect();
     // The error oscillates with a period of about 10 nm: 5 nm steps would alias it.
     let fine: Vec<f64> = (0..=470).map(|i| 360.0 + f64::from(i)).collect();
@@ -239,59 +239,45 @@ fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut curves = Vec::new();
     let mut errors = Vec::new();
     for (k, name) in names.iter().enumerate() {
-        curves.push(Series {
-            label: format!("{name} (table)"),
-            points: nms.iter().map(|&l| (l, cmf(l)[k])).collect(),
-        });
-        curves.push(Series {
-            label: format!("{name} fit"),
-            points: nms.iter().map(|&l| (l, cmf_fit(l)[k])).collect(),
-        });
-        errors.push(Series {
-            label: format!("{name} fit − table"),
-            points: fine
-                .iter()
+        curves.push(Series::line(
+            format!("{name} (table)"),
+            nms.iter().map(|&l| (l, cmf(l)[k])).collect(),
+        ));
+        curves.push(Series::line(
+            format!("{name} fit"),
+            nms.iter().map(|&l| (l, cmf_fit(l)[k])).collect(),
+        ));
+        errors.push(Series::line(
+            format!("{name} fit − table"),
+            fine.iter()
                 .map(|&l| (l, cmf_fit(l)[k] - cmf(l)[k]))
                 .collect(),
-        });
+        ));
     }
     let worst = errors
         .iter()
         .flat_map(|s| s.points.iter().map(|p| p.1.abs()))
         .fold(0.0, f64::max);
     let range = (LAMBDA_MIN, LAMBDA_MAX);
-    plot::ranged_chart_png(
-        &[
-            (
-                Panel {
-                    title: "CIE 1931 table and the Wyman-Sloan-Shirley fit".into(),
-                    x_label: "wavelength (nm)".into(),
-                    y_label: "value".into(),
-                    x_scale: Scale::Linear,
-                    y_scale: Scale::Linear,
-                    series: curves,
-                },
-                range,
-                (-0.05, 1.9),
-                plot::Legend::UpperRight,
+    plot::ranged_chart(&[
+        (
+            Panel::new(
+                "CIE 1931 table and the Wyman-Sloan-Shirley fit",
+                "wavelength (nm)",
+                "value",
+                curves,
             ),
-            (
-                Panel {
-                    title: "fit − table".into(),
-                    x_label: "wavelength (nm)".into(),
-                    y_label: "difference".into(),
-                    x_scale: Scale::Linear,
-                    y_scale: Scale::Linear,
-                    series: errors,
-                },
-                range,
-                (-1.1 * worst, 1.1 * worst),
-                plot::Legend::UpperRight,
-            ),
-        ],
-        1300,
-        520,
-    )
+            range,
+            (-0.05, 1.9),
+            plot::Legend::UpperRight,
+        ),
+        (
+            Panel::new("fit − table", "wavelength (nm)", "difference", errors),
+            range,
+            (-1.1 * worst, 1.1 * worst),
+            plot::Legend::UpperRight,
+        ),
+    ])
 }
 
 /// The largest |fit − table| of each function over 360-830 nm at 0.1 nm, with where it is,

@@ -12,7 +12,7 @@ use raylemma::output::{self, FileSet};
 use crate::plot::BoxError;
 use crate::{
     colour, compare, coursework, dispersion, display, emission, export, external, frame, fresnel,
-    lambert, mitsuba, reflect, roulette, shadow, sampling, specular, sphere, stats, tabulated,
+    lambert, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats, tabulated,
     testing, thinfilm, upsample, wavelength,
 };
 
@@ -27,7 +27,7 @@ pub struct Settings {
 
 /// One output file of the figure job.
 pub struct Output {
-    /// File name inside `figures/`, e.g. `sphere_far_error.png`.
+    /// File name inside `figures/`, e.g. `sphere_far_error.svg`.
     pub file: &'static str,
     /// What it shows, for progress and error messages.
     pub what: &'static str,
@@ -141,7 +141,7 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(
-            err.contains("no_such_figure") && err.contains("sphere_far_error.png"),
+            err.contains("no_such_figure") && err.contains("sphere_far_error.svg"),
             "{err}"
         );
         assert!(!dir.exists(), "nothing is written for an unknown name");

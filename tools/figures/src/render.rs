@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use super::Settings;
 use super::timing::{machine, quick_note};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
 use raylemma::render::compare::{mse_against, noise_level};
@@ -217,30 +217,29 @@ fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered, settings: &Setting
     md
 }
 
-fn speed_png(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
-    let measured = Series {
-        label: "raylemma, cornell 256x256".into(),
-        points: series.iter().map(|&(_, s, e)| (s, e)).collect(),
-    };
+fn speed_svg(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
+    let measured = Series::measured(
+        "raylemma, cornell 256x256",
+        series.iter().map(|&(_, s, e)| (s, e)).collect(),
+    );
     let (s0, e0) = (series[0].1, series[0].2);
-    let slope = Series {
-        label: "slope −1/2 (unbiased Monte Carlo)".into(),
-        points: series
+    let slope = Series::line(
+        "slope −1/2 (unbiased Monte Carlo)",
+        series
             .iter()
             .map(|&(_, s, _)| (s, e0 * (s0 / s).sqrt()))
             .collect(),
-    };
-    plot::line_chart_png(
-        &[Panel {
-            title: "RMSE against render time".into(),
-            x_label: "seconds".into(),
-            y_label: "RMSE (linear sRGB)".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series: vec![measured, slope],
-        }],
-        640,
-        420,
+    );
+    plot::chart(
+        &[Panel::new(
+            "RMSE against render time",
+            "seconds",
+            "RMSE (linear sRGB)",
+            vec![measured, slope],
+        )
+        .log_x()
+        .log_y()],
+        1,
     )
 }
 
@@ -323,7 +322,7 @@ pub fn write_references(
             "render_speed.md",
             speed_md(&series, &rendered[0], settings).into_bytes(),
         ),
-        ("render_error_time.png", speed_png(&series)?),
+        ("render_error_time.svg", speed_svg(&series)?),
         ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
     ];
     for (name, bytes) in flat {
