@@ -19,9 +19,9 @@ use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "colour_chromaticity.png",
+            file: "colour_chromaticity.svg",
             what: "CIE 1931 chromaticity diagram: locus, sRGB, Planckian locus, illuminants",
-            make: chromaticity_png,
+            make: chromaticity_svg,
         },
         Output {
             file: "colour_illuminants.md",
@@ -85,25 +85,17 @@ fn planck_xy(kelvin: f64) -> DVec2 {
     xy_of(xyz(|nm| planck(nm, kelvin)))
 }
 
-fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    let (width, height) = (820u32, 860u32);
-    plot::draw_png(width, height, |root| {
-        let mut chart = ChartBuilder::on(root)
-            .caption(
-                "CIE 1931 chromaticity: spectral locus, sRGB, Planckian locus",
-                ("sans-serif", 18),
-            )
-            .margin(14)
-            .x_label_area_size(40)
-            .y_label_area_size(50)
-            .build_cartesian_2d(0.0..0.8, 0.0..0.9)?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .label_style(("sans-serif", 13))
-            .axis_desc_style(("sans-serif", 15))
-            .draw()?;
+fn chromaticity_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let small = || plot::font(plot::TICK_PX);
+    plot::svg(plot::WIDTH, 800, |root, _| {
+        let rest = plot::draw_title(
+            root,
+            "CIE 1931 chromaticity: spectral locus, sRGB, Planckian locus",
+        )?;
+        let mut chart = plot::builder(&rest).build_cartesian_2d(0.0..0.8, 0.0..0.9)?;
+        plot::mesh!(chart, "x", "y", &|v| plot::format_linear_tick(*v), &|v| {
+            plot::format_linear_tick(*v)
+        });
         // The spectral locus, 380-700 nm (beyond 700 nm it stays at the red end), closed by
         // the line of purples.
         let mut locus: Vec<(f64, f64)> = (380..=700)
@@ -120,8 +112,7 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             chart.draw_series(std::iter::once(Circle::new((p.x, p.y), 3, BLACK.filled())))?;
             let offset = if p.x < 0.2 { (-38, -6) } else { (6, -6) };
             chart.draw_series(std::iter::once(
-                EmptyElement::at((p.x, p.y))
-                    + Text::new(format!("{nm}"), offset, ("sans-serif", 13)),
+                EmptyElement::at((p.x, p.y)) + Text::new(format!("{nm}"), offset, small()),
             ))?;
         }
         // The sRGB gamut.
@@ -155,7 +146,7 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             chart.draw_series(std::iter::once(
                 EmptyElement::at((p.x, p.y))
                     + Circle::new((0, 0), 3, orange.filled())
-                    + Text::new(format!("{t} K"), (4, 6), ("sans-serif", 12)),
+                    + Text::new(format!("{t} K"), (4, 6), small()),
             ))?;
         }
         // The illuminants, computed from their spectra.
@@ -168,7 +159,7 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             let series = chart.draw_series(std::iter::once(
                 EmptyElement::at((p.x, p.y))
                     + Cross::new((0, 0), 5, green.stroke_width(2))
-                    + Text::new((*name).to_string(), offset, ("sans-serif", 12)),
+                    + Text::new((*name).to_string(), offset, small()),
             ))?;
             if k == 0 {
                 series
@@ -178,9 +169,9 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         }
         chart
             .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK.mix(0.4))
+            .label_font(small())
             .position(SeriesLabelPosition::UpperRight)
             .draw()?;
         Ok(())

@@ -99,7 +99,7 @@ fn curves_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
         &[
             encoded,
             dark.x_range((0.0, 0.02))
-                .y_range((-2.0, 10.0))
+                .y_range((-2.0, 14.0))
                 .legend(Legend::UpperRight),
             whole
                 .x_range((0.0, 1.0))

@@ -58,6 +58,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(emission::outputs());
     outputs.extend(display::outputs());
     outputs.extend(upsample::outputs());
+    outputs.extend(crate::render::outputs());
     outputs.extend(compare::outputs());
     outputs.extend(export::outputs());
     outputs.extend(mitsuba::outputs());

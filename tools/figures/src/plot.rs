@@ -224,6 +224,8 @@ pub enum Legend {
     UpperLeft,
     /// Bottom left.
     LowerLeft,
+    /// Below the panel, outside it (a chart of one panel only; elsewhere the top right).
+    Below,
 }
 
 /// One panel of a chart.
@@ -357,7 +359,7 @@ fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
 pub type SvgArea<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
 /// SVG elements written as text, for what plotters' backend has no call for (many dots as
-/// one path, an embedded raster image); [`svg`] puts them after plotters' drawing.
+/// one path); [`svg`] puts them after plotters' drawing.
 #[derive(Default)]
 pub struct Overlay(Vec<String>);
 
@@ -374,46 +376,6 @@ impl Overlay {
             "<path d=\"{d}\" fill=\"none\" stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"{size}\" stroke-linecap=\"round\"/>\n"
         ));
     }
-
-    /// An RGB8 raster `(width, height, pixels)` stretched over the backend rectangle
-    /// `(x0, y0)..(x1, y1)`, embedded as a PNG data URL.
-    pub fn image(
-        &mut self,
-        (x0, y0): BackendCoord,
-        (x1, y1): BackendCoord,
-        (width, height, rgb): (u32, u32, Vec<u8>),
-    ) -> Result<(), BoxError> {
-        let png = encode_png(width, height, rgb)?;
-        self.0.push(format!(
-            "<image x=\"{x0}\" y=\"{y0}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"/>\n",
-            x1 - x0,
-            y1 - y0,
-            base64(&png)
-        ));
-        Ok(())
-    }
-}
-
-/// Standard base64 with padding (RFC 4648).
-fn base64(bytes: &[u8]) -> String {
-    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
-    for chunk in bytes.chunks(3) {
-        let b = [
-            chunk[0],
-            *chunk.get(1).unwrap_or(&0),
-            *chunk.get(2).unwrap_or(&0),
-        ];
-        let n = u32::from(b[0]) << 16 | u32::from(b[1]) << 8 | u32::from(b[2]);
-        for k in 0..4 {
-            if k <= chunk.len() {
-                out.push(char::from(ALPHABET[(n >> (18 - 6 * k) & 63) as usize]));
-            } else {
-                out.push('=');
-            }
-        }
-    }
-    out
 }
 
 /// A white `width x height` SVG, handed to `draw` (with an [`Overlay`] for elements written
@@ -489,7 +451,10 @@ pub fn chart(panels: &[Panel], columns: usize) -> Result<Vec<u8>, BoxError> {
     let columns = columns.clamp(1, 2).min(panels.len().max(1));
     let rows = panels.len().div_ceil(columns);
     let cell_height = panel_height(columns, panels.len());
-    let shared = shared_keys(panels);
+    let shared = shared_keys(panels).or_else(|| match panels {
+        [one] if one.legend == Some(Legend::Below) && !one.keys().is_empty() => Some(one.keys()),
+        _ => None,
+    });
     let spare = rows * columns > panels.len();
     let strip = match &shared {
         Some(keys) if !spare => legend_rows(keys, WIDTH as i32 - 40).len() as i32 * LEGEND_ROW + 14,
@@ -859,10 +824,10 @@ fn draw_panel(
                 let (w, h) = legend_box_size(&keys);
                 let x = match corner {
                     Legend::UpperLeft | Legend::LowerLeft => xs.start + 8,
-                    Legend::UpperRight | Legend::LowerRight => xs.end - 8 - w,
+                    Legend::UpperRight | Legend::LowerRight | Legend::Below => xs.end - 8 - w,
                 };
                 let y = match corner {
-                    Legend::UpperLeft | Legend::UpperRight => ys.start + 8,
+                    Legend::UpperLeft | Legend::UpperRight | Legend::Below => ys.start + 8,
                     Legend::LowerLeft | Legend::LowerRight => ys.end - 8 - h,
                 };
                 draw_legend_box(area, &keys, (x - base.0, y - base.1))?;
@@ -1050,22 +1015,6 @@ impl<Coord, DB: DrawingBackend> Drawable<DB> for Marker<Coord> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn base64_matches_rfc_4648() {
-        // RFC 4648, section 10.
-        for (plain, coded) in [
-            ("", ""),
-            ("f", "Zg=="),
-            ("fo", "Zm8="),
-            ("foo", "Zm9v"),
-            ("foob", "Zm9vYg=="),
-            ("fooba", "Zm9vYmE="),
-            ("foobar", "Zm9vYmFy"),
-        ] {
-            assert_eq!(base64(plain.as_bytes()), coded);
-        }
-    }
 
     #[test]
     fn a_chart_is_an_svg_of_the_book_width_with_legible_text() {

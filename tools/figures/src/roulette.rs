@@ -170,7 +170,9 @@ fn efficiency_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
                 ],
             ),
         ],
-    )];
+    )
+    .x_range((0.3, 1.02))
+    .legend(plot::Legend::Below)];
     plot::chart(&panels, 1)
 }
 
