@@ -391,6 +391,7 @@ try {
           const src = img.getAttribute('src') || '';
           if (!/\.svg(\?|#|$)/i.test(src) || !img.complete || !img.naturalWidth) continue;
           const shown = img.getBoundingClientRect().width;
+          if (!img.checkVisibility() || shown === 0) continue; // mdBook's click-to-enlarge copy, hidden until clicked
           let doc;
           try {
             doc = new DOMParser().parseFromString(await (await fetch(img.src)).text(), 'image/svg+xml');
@@ -529,6 +530,29 @@ try {
     }
     await tab.close();
     report(`screenshot ${p} -> ${file}`, problems);
+  }
+  // A chart on a dark theme (coal): the figure as a reader of that theme sees it.
+  {
+    const page = 'optics/fresnel.html';
+    const { tab, status } = await open(page);
+    const problems = [];
+    const file = path.join(shotDir, 'figure_coal.png');
+    if (status !== 200) problems.push(`HTTP ${status}`);
+    else {
+      try {
+        await tab.evaluate(() => localStorage.setItem('mdbook-theme', 'coal'));
+        await tab.reload({ waitUntil: 'load' });
+        const img = tab.locator('main img[src$=".svg"]').first();
+        await img.scrollIntoViewIfNeeded();
+        const theme = await tab.evaluate(() => document.documentElement.classList.contains('coal'));
+        if (!theme) problems.push('the coal theme did not apply');
+        await img.screenshot({ path: file, timeout: NAV_TIMEOUT });
+      } catch (e) {
+        problems.push(`screenshot failed: ${short(e.message)}`);
+      }
+    }
+    await tab.close();
+    report(`screenshot of a chart on the coal theme (${page}) -> ${file}`, problems);
   }
   exitCode = failed ? 1 : 0;
 } finally {
