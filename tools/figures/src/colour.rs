@@ -260,13 +260,13 @@ fn fit_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
             ),
             range,
             (-0.05, 1.9),
-            plot::Legend::UpperRight,
+            plot::Legend::Below,
         ),
         (
             Panel::new("fit − table", "wavelength (nm)", "difference", errors),
             range,
             (-1.1 * worst, 1.1 * worst),
-            plot::Legend::UpperRight,
+            plot::Legend::Below,
         ),
     ])
 }

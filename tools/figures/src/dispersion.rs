@@ -280,8 +280,8 @@ fn prism_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let [first, second] = panels;
     let (y1, y2) = (y_range(&first.series), y_range(&second.series));
     plot::ranged_chart(&[
-        (first, RENDER_RANGE_NM, y1, Legend::UpperRight),
-        (second, (0.0, 90.0), y2, Legend::UpperRight),
+        (first, RENDER_RANGE_NM, y1, Legend::Below),
+        (second, (0.0, 90.0), y2, Legend::Below),
     ])
 }
 
@@ -351,21 +351,21 @@ fn rainbow_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
         Panel::new(
             "radius of the primary bow",
             "wavelength (nm)",
-            "angle from the antisolar point (degrees)",
+            "from the antisolar point (°)",
             bow,
         ),
         Panel::new(
             "180° − D(i): rays pile up at the maximum",
             "angle of incidence on the drop (degrees)",
-            "angle from the antisolar point (degrees)",
+            "from the antisolar point (°)",
             curves,
         ),
     ];
     let [first, second] = panels;
     let y1 = y_range(&first.series);
     plot::ranged_chart(&[
-        (first, RENDER_RANGE_NM, y1, Legend::LowerRight),
-        (second, (0.0, 90.0), (0.0, 45.0), Legend::UpperRight),
+        (first, RENDER_RANGE_NM, y1, Legend::Below),
+        (second, (0.0, 90.0), (0.0, 45.0), Legend::Below),
     ])
 }
 

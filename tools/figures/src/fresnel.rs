@@ -398,7 +398,7 @@ fn speed_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         Panel::new(
             title,
             "ns per evaluation",
-            "worst |R − R_exact|, n = 1.33, 1.5, 2.4",
+            "worst |R − R_exact| (n = 1.33–2.4)",
             rows.iter()
                 .map(|row| Series::points(row.name, vec![pick(row)]))
                 .collect(),

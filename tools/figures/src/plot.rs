@@ -224,7 +224,7 @@ pub enum Legend {
     UpperLeft,
     /// Bottom left.
     LowerLeft,
-    /// Below the panel, outside it (a chart of one panel only; elsewhere the top right).
+    /// Below the panel, outside it (the panel's cell grows to hold it).
     Below,
 }
 
@@ -450,11 +450,20 @@ const SAMPLE: i32 = 36;
 pub fn chart(panels: &[Panel], columns: usize) -> Result<Vec<u8>, BoxError> {
     let columns = columns.clamp(1, 2).min(panels.len().max(1));
     let rows = panels.len().div_ceil(columns);
-    let cell_height = panel_height(columns, panels.len());
     let shared = shared_keys(panels).or_else(|| match panels {
         [one] if one.legend == Some(Legend::Below) && !one.keys().is_empty() => Some(one.keys()),
         _ => None,
     });
+    // Panels of their own legends placed below them: the cells grow by the tallest of these.
+    let cell_width = WIDTH as i32 / columns as i32;
+    let below = |p: &Panel| match (&shared, p.legend, p.keys()) {
+        (None, Some(Legend::Below), keys) if !keys.is_empty() => {
+            legend_rows(&keys, cell_width - 40).len() as i32 * LEGEND_ROW + 10
+        }
+        _ => 0,
+    };
+    let legend_below = panels.iter().map(below).max().unwrap_or(0);
+    let cell_height = panel_height(columns, panels.len()) + legend_below as u32;
     let spare = rows * columns > panels.len();
     let strip = match &shared {
         Some(keys) if !spare => legend_rows(keys, WIDTH as i32 - 40).len() as i32 * LEGEND_ROW + 14,
@@ -465,7 +474,7 @@ pub fn chart(panels: &[Panel], columns: usize) -> Result<Vec<u8>, BoxError> {
         let (grid, below) = root.split_vertically(rows as u32 * cell_height);
         let cells = grid.split_evenly((rows, columns));
         for (panel, cell) in panels.iter().zip(&cells) {
-            draw_panel(panel, cell, shared.is_none(), overlay)?;
+            draw_panel(panel, cell, shared.is_none(), legend_below, overlay)?;
         }
         if let Some(keys) = &shared {
             if spare {
@@ -732,10 +741,13 @@ macro_rules! mesh {
 }
 pub(crate) use mesh;
 
+/// Draws `panel` on `area`, with its own legend when `own_legend`: where
+/// [`Panel::legend`] says, [`Legend::Below`] in the bottom `legend_below` units of `area`.
 fn draw_panel(
     panel: &Panel,
     area: &SvgArea<'_>,
     own_legend: bool,
+    legend_below: i32,
     overlay: &mut Overlay,
 ) -> Result<(), BoxError> {
     let pts = || {
@@ -751,7 +763,10 @@ fn draw_panel(
     let (y0, y1) = panel
         .y_range
         .unwrap_or_else(|| range(pts().map(|p| p.1), panel.y_scale));
-    let rest = draw_title(area, &panel.title)?;
+    let below = own_legend && panel.legend == Some(Legend::Below) && legend_below > 0;
+    let (_, height) = area.dim_in_pixel();
+    let (top, strip) = area.split_vertically(height as i32 - if below { legend_below } else { 0 });
+    let rest = draw_title(&top, &panel.title)?;
     let mut builder = builder(&rest);
     // plotters types linear and log axes differently, hence four arms.
     macro_rules! draw {
@@ -815,7 +830,9 @@ fn draw_panel(
                 }
             }
             let keys = panel.keys();
-            if own_legend && !keys.is_empty() {
+            if below {
+                draw_legend_strip(&strip, &keys)?;
+            } else if own_legend && !keys.is_empty() {
                 let corner = panel.legend.unwrap_or_else(|| {
                     emptiest_corner(pts(), (x0, x1, panel.x_scale), (y0, y1, panel.y_scale))
                 });
@@ -1046,6 +1063,27 @@ mod tests {
         assert!(sizes.iter().all(|&s| s >= TICK_PX - 0.01), "{sizes:?}");
         // The two panels share one legend: each label once.
         assert_eq!(svg.matches(">\nb\n</text>").count(), 1, "{svg}");
+    }
+
+    #[test]
+    fn a_legend_below_its_panel_makes_the_cell_taller() {
+        let panel = |label: &str| {
+            Panel::new(
+                "t",
+                "x",
+                "y",
+                vec![Series::line(label, vec![(0.0, 1.0), (1.0, 2.0)])],
+            )
+        };
+        let height = |panels: &[Panel]| {
+            let svg = String::from_utf8(chart(panels, 2).unwrap()).unwrap();
+            let h = svg.split("height=\"").nth(1).unwrap();
+            h[..h.find('"').unwrap()].parse::<u32>().unwrap()
+        };
+        let inside = height(&[panel("a"), panel("b")]);
+        let below = height(&[panel("a").legend(Legend::Below), panel("b")]);
+        assert_eq!(inside, panel_height(2, 2));
+        assert!(below > inside, "{below} vs {inside}");
     }
 
     #[test]

@@ -75,8 +75,8 @@ fn spectra_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     );
     let range = (LAMBDA_MIN, LAMBDA_MAX);
     plot::ranged_chart(&[
-        (corners, range, (-0.02, 1.02), Legend::UpperRight),
-        (everyday, range, (-0.02, 1.02), Legend::UpperRight),
+        (corners, range, (-0.02, 1.02), Legend::Below),
+        (everyday, range, (-0.02, 1.02), Legend::Below),
     ])
 }
 
