@@ -6,7 +6,7 @@
 // Serves BOOK_DIR on 127.0.0.1 (a small static server, below), then visits every page of the
 // book (the sidebar's links, every .html file on disk, index.html, print.html) and checks each:
 // HTTP 200, no console errors or page errors, no failed or off-machine requests, every <img>
-// loaded, no raw TeX left in the text, <math> present where the chapter's source has math, no
+// loaded, every SVG figure's text at least 12 CSS px as shown at the default width, no raw TeX left in the text, <math> present where the chapter's source has math, no
 // literal `{{#include`. Then it searches the book with mdBook's search bar and takes screenshots.
 // Prints `ok PATH` / `FAIL PATH: reasons` per page and check, and closes with `N passed, M failed`;
 // exits 1 on any failure, 2 when it could not run at all.
@@ -33,6 +33,9 @@ const LAUNCH_ARGS = [
   '--disable-sync',
 ];
 // Pages screenshotted when present, plus every page whose path mentions "renderer".
+// The smallest text an SVG figure may show, in CSS px, at the default window width.
+const MIN_FIGURE_TEXT_PX = 12;
+const viewportWidth = 1280;
 const SCREENSHOT_PAGES = ['index.html', 'geometry/sphere.html', 'optics/fresnel.html'];
 
 function die(msg) {
@@ -225,7 +228,7 @@ const started = Date.now();
 const browser = await chromium.launch({ executablePath: chromiumPath, args: LAUNCH_ARGS, headless: true, timeout: NAV_TIMEOUT });
 let exitCode = 2;
 try {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+  const context = await browser.newContext({ viewport: { width: viewportWidth, height: 900 }, deviceScaleFactor: 1 });
   context.setDefaultTimeout(STEP_TIMEOUT);
   context.setDefaultNavigationTimeout(NAV_TIMEOUT);
   // print.html calls window.print() on load; a no-op keeps the headless browser from waiting.
@@ -316,6 +319,7 @@ try {
 
   // --- Every page.
   const lostVariants = { pages: [], count: new Map() };
+  const svgFigures = { count: 0, smallest: Infinity };
   // index.html first, then the sidebar's order, then the rest (print.html) by name.
   const rest = [...pages].filter((p) => p !== 'index.html' && !sidebarPages.includes(p)).sort();
   const ordered = ['index.html', ...sidebarPages.filter((p) => p !== 'index.html'), ...rest];
@@ -379,6 +383,51 @@ try {
         for (const v of facts.lostVariants) lostVariants.count.set(v, (lostVariants.count.get(v) || 0) + 1);
       }
       for (const src of facts.badImages) problems.push(`image not loaded: ${src}`);
+      // SVG figures: every text at least MIN_FIGURE_TEXT_PX as displayed (font-size times the
+      // image's displayed width over the SVG's own width), and no figure wider than the page.
+      const figures = await tab.evaluate(async () => {
+        const out = [];
+        for (const img of document.images) {
+          const src = img.getAttribute('src') || '';
+          if (!/\.svg(\?|#|$)/i.test(src) || !img.complete || !img.naturalWidth) continue;
+          const shown = img.getBoundingClientRect().width;
+          if (!img.checkVisibility() || shown === 0) continue; // mdBook's click-to-enlarge copy, hidden until clicked
+          let doc;
+          try {
+            doc = new DOMParser().parseFromString(await (await fetch(img.src)).text(), 'image/svg+xml');
+          } catch (e) {
+            out.push({ src, error: String(e) });
+            continue;
+          }
+          const svg = doc.documentElement;
+          const own = parseFloat(svg.getAttribute('width')) || (svg.viewBox && svg.viewBox.baseVal && svg.viewBox.baseVal.width) || img.naturalWidth;
+          const sizes = [...doc.querySelectorAll('text')]
+            .filter((t) => t.textContent.trim())
+            .map((t) => parseFloat(t.getAttribute('font-size') || (t.closest('[font-size]') || svg).getAttribute('font-size') || '16'));
+          out.push({
+            src,
+            alt: img.getAttribute('alt') || '',
+            shown,
+            own,
+            texts: sizes.length,
+            smallest: sizes.length ? (Math.min(...sizes) * shown) / own : null,
+            overflow: img.getBoundingClientRect().right > document.documentElement.clientWidth + 1,
+          });
+        }
+        return out;
+      });
+      for (const f of figures) {
+        if (f.error) problems.push(`figure ${f.src}: ${f.error}`);
+        else {
+          svgFigures.count += 1;
+          if (f.smallest !== null) svgFigures.smallest = Math.min(svgFigures.smallest, f.smallest);
+          if (!f.alt.trim()) problems.push(`figure ${f.src}: no alt text`);
+          if (f.smallest !== null && f.smallest < MIN_FIGURE_TEXT_PX) {
+            problems.push(`figure ${f.src}: text ${f.smallest.toFixed(1)} px as shown (${Math.round(f.shown)} of its ${f.own} px), under ${MIN_FIGURE_TEXT_PX} px`);
+          }
+          if (f.overflow) problems.push(`figure ${f.src}: wider than the page`);
+        }
+      }
       const tex = findRawTex([...facts.texts, ...facts.blocks]);
       if (tex.length) problems.push(`raw TeX in text: ${tex.slice(0, 3).map((t) => JSON.stringify(t)).join(', ')}${tex.length > 3 ? ` (+${tex.length - 3} more)` : ''}`);
       if (facts.katexErrors.length) problems.push(`KaTeX errors: ${facts.katexErrors.slice(0, 3).map((e) => short(e, 80)).join(', ')}`);
@@ -394,6 +443,11 @@ try {
     report(pagePath, problems);
   }
 
+  console.log(
+    svgFigures.count
+      ? `note: ${svgFigures.count} SVG figures shown, smallest text ${svgFigures.smallest.toFixed(1)} px at a ${viewportWidth} px wide window (minimum ${MIN_FIGURE_TEXT_PX} px)`
+      : 'note: no SVG figures in the book',
+  );
   if (lostVariants.pages.length) {
     const kinds = [...lostVariants.count].map(([v, n]) => `${n} ${v}`).join(', ');
     console.log(
@@ -476,6 +530,29 @@ try {
     }
     await tab.close();
     report(`screenshot ${p} -> ${file}`, problems);
+  }
+  // A chart on a dark theme (coal): the figure as a reader of that theme sees it.
+  {
+    const page = 'optics/fresnel.html';
+    const { tab, status } = await open(page);
+    const problems = [];
+    const file = path.join(shotDir, 'figure_coal.png');
+    if (status !== 200) problems.push(`HTTP ${status}`);
+    else {
+      try {
+        await tab.evaluate(() => localStorage.setItem('mdbook-theme', 'coal'));
+        await tab.reload({ waitUntil: 'load' });
+        const img = tab.locator('main img[src$=".svg"]').first();
+        await img.scrollIntoViewIfNeeded();
+        const theme = await tab.evaluate(() => document.documentElement.classList.contains('coal'));
+        if (!theme) problems.push('the coal theme did not apply');
+        await img.screenshot({ path: file, timeout: NAV_TIMEOUT });
+      } catch (e) {
+        problems.push(`screenshot failed: ${short(e.message)}`);
+      }
+    }
+    await tab.close();
+    report(`screenshot of a chart on the coal theme (${page}) -> ${file}`, problems);
   }
   exitCode = failed ? 1 : 0;
 } finally {

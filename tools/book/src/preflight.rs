@@ -1,6 +1,7 @@
 //! Preflight check of the chapter sources, run before mdBook so that the book cannot drift
 //! from the code it quotes: every `{{#include}}` / `{{#rustdoc_include}}` / `{{#playground}}`
-//! target must exist (with its anchors), and every local image must exist in the built book.
+//! target must exist (with its anchors), and every local image must exist in the built book
+//! and have alt text saying what it shows (`![what it shows](path)`, `<img alt="...">`).
 //!
 //! Path conventions (mirroring what mdBook does):
 //! - include paths are relative to the directory of the chapter file on disk;
@@ -16,7 +17,7 @@ use std::io;
 use std::path::{Component, Path, PathBuf};
 use std::sync::LazyLock;
 
-use pulldown_cmark::{Event, Options, Parser, Tag};
+use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 use regex::Regex;
 
 /// Same pattern as mdBook's `links` preprocessor (mdbook-driver 0.5, `find_links`).
@@ -31,6 +32,11 @@ static ANCHOR_END: LazyLock<Regex> =
 static IMG_SRC: LazyLock<Regex> = LazyLock::new(|| {
     Regex::new(r#"(?is)<img\b[^>]*?\bsrc\s*=\s*(?:"([^"]*)"|'([^']*)'|([^\s>]+))"#)
         .expect("valid regex")
+});
+static IMG_TAG: LazyLock<Regex> =
+    LazyLock::new(|| Regex::new(r"(?is)<img\b[^>]*>").expect("valid regex"));
+static IMG_ALT: LazyLock<Regex> = LazyLock::new(|| {
+    Regex::new(r#"(?is)\balt\s*=\s*(?:"([^"]*)"|'([^']*)'|([^\s>]+))"#).expect("valid regex")
 });
 static SCHEME: LazyLock<Regex> =
     LazyLock::new(|| Regex::new(r"^[a-zA-Z][a-zA-Z0-9+.-]*:").expect("valid regex"));
@@ -177,6 +183,8 @@ impl Checker {
         opts.insert(Options::ENABLE_STRIKETHROUGH);
         opts.insert(Options::ENABLE_TASKLISTS);
         opts.insert(Options::ENABLE_HEADING_ATTRIBUTES);
+        // The image being read: its URL, where it starts, and its alt text so far.
+        let mut image: Option<(String, usize, String)> = None;
         for (event, range) in Parser::new_ext(text, opts).into_offset_iter() {
             match event {
                 Event::Start(Tag::Image { dest_url, .. }) => {
@@ -187,8 +195,42 @@ impl Checker {
                             message: format!("image {dest_url}: {message}"),
                         });
                     }
+                    image = Some((dest_url.to_string(), range.start, String::new()));
+                }
+                Event::Text(t) | Event::Code(t) if image.is_some() => {
+                    if let Some((_, _, alt)) = image.as_mut() {
+                        alt.push_str(&t);
+                    }
+                }
+                Event::End(TagEnd::Image) => {
+                    if let Some((url, start, alt)) = image.take()
+                        && alt.trim().is_empty()
+                    {
+                        problems.push(Problem {
+                            file: self.display_path(file),
+                            line: line_of(text, start),
+                            message: format!(
+                                "image {url}: no alt text (write ![what it shows]({url}))"
+                            ),
+                        });
+                    }
                 }
                 Event::Html(html) | Event::InlineHtml(html) => {
+                    for tag in IMG_TAG.find_iter(&html) {
+                        let alt = IMG_ALT
+                            .captures(tag.as_str())
+                            .and_then(|c| c.get(1).or(c.get(2)).or(c.get(3)))
+                            .map_or("", |m| m.as_str());
+                        if alt.trim().is_empty() {
+                            let offset = range.start + tag.start();
+                            problems.push(Problem {
+                                file: self.display_path(file),
+                                line: line_of(text, offset.min(text.len())),
+                                message: "<img> without alt text (add alt=\"what it shows\")"
+                                    .into(),
+                            });
+                        }
+                    }
                     for cap in IMG_SRC.captures_iter(&html) {
                         let Some(src) = cap.get(1).or(cap.get(2)).or(cap.get(3)) else {
                             continue;
@@ -425,7 +467,7 @@ mod tests {
             "# Sphere\n\n```rust\n{{#include ../../src/x.rs:foo}}\n```\n\
              {{#rustdoc_include ../../src/x.rs:2:3}}\n{{#include ../../src/x.rs}}\n\
              ![plot](../figures/plot.png \"title\")\n![l](../local.png)\n\
-             ![remote](https://example.com/x.png)\n<img src=\"../figures/plot.png\">\n\
+             ![remote](https://example.com/x.png)\n<img alt=\"a plot\" src=\"../figures/plot.png\">\n\
              \\{{#include missing.rs}} is escaped\n",
         );
         t.write(
@@ -433,6 +475,26 @@ mod tests {
             "![p](figures/plot.png) {{ #include ../src/x.rs:foo }}",
         );
         assert_eq!(t.check(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn images_without_alt_text_are_reported() {
+        let t = Tree::new("alt");
+        t.write("figures/plot.svg", "<svg/>");
+        t.write(
+            "chapters/a.md",
+            "![](figures/plot.svg)\n\n![ ](figures/plot.svg)\n\n![`code` alt](figures/plot.svg)\n\n\
+             <img src=\"figures/plot.svg\">\n\n<img alt='' src=\"figures/plot.svg\">\n",
+        );
+        assert_eq!(
+            t.check(),
+            [
+                "chapters/a.md:1: image figures/plot.svg: no alt text (write ![what it shows](figures/plot.svg))",
+                "chapters/a.md:3: image figures/plot.svg: no alt text (write ![what it shows](figures/plot.svg))",
+                "chapters/a.md:7: <img> without alt text (add alt=\"what it shows\")",
+                "chapters/a.md:9: <img> without alt text (add alt=\"what it shows\")",
+            ]
+        );
     }
 
     #[test]

@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use plotters::prelude::*;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, PALETTE, Panel, Scale, Series};
+use crate::plot::{self, BoxError, PALETTE, Panel, Series};
 use raylemma::spectral::cie::{
     self, chromaticity, cmf, cmf_fit, krystek, xyz, xyz_to_linear_srgb, xyz_with,
 };
@@ -19,9 +19,9 @@ use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "colour_chromaticity.png",
+            file: "colour_chromaticity.svg",
             what: "CIE 1931 chromaticity diagram: locus, sRGB, Planckian locus, illuminants",
-            make: chromaticity_png,
+            make: chromaticity_svg,
         },
         Output {
             file: "colour_illuminants.md",
@@ -29,9 +29,9 @@ pub fn outputs() -> Vec<Output> {
             make: illuminants_md,
         },
         Output {
-            file: "colour_fit.png",
+            file: "colour_fit.svg",
             what: "colour-matching functions: table against the Wyman-Sloan-Shirley fit",
-            make: fit_png,
+            make: fit_svg,
         },
         Output {
             file: "colour_fit.md",
@@ -85,25 +85,17 @@ fn planck_xy(kelvin: f64) -> DVec2 {
     xy_of(xyz(|nm| planck(nm, kelvin)))
 }
 
-fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    let (width, height) = (820u32, 860u32);
-    plot::draw_png(width, height, |root| {
-        let mut chart = ChartBuilder::on(root)
-            .caption(
-                "CIE 1931 chromaticity: spectral locus, sRGB, Planckian locus",
-                ("sans-serif", 18),
-            )
-            .margin(14)
-            .x_label_area_size(40)
-            .y_label_area_size(50)
-            .build_cartesian_2d(0.0..0.8, 0.0..0.9)?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .label_style(("sans-serif", 13))
-            .axis_desc_style(("sans-serif", 15))
-            .draw()?;
+fn chromaticity_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let small = || plot::font(plot::TICK_PX);
+    plot::svg(plot::WIDTH, 800, |root, _| {
+        let rest = plot::draw_title(
+            root,
+            "CIE 1931 chromaticity: spectral locus, sRGB, Planckian locus",
+        )?;
+        let mut chart = plot::builder(&rest).build_cartesian_2d(0.0..0.8, 0.0..0.9)?;
+        plot::mesh!(chart, "x", "y", &|v| plot::format_linear_tick(*v), &|v| {
+            plot::format_linear_tick(*v)
+        });
         // The spectral locus, 380-700 nm (beyond 700 nm it stays at the red end), closed by
         // the line of purples.
         let mut locus: Vec<(f64, f64)> = (380..=700)
@@ -120,8 +112,7 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             chart.draw_series(std::iter::once(Circle::new((p.x, p.y), 3, BLACK.filled())))?;
             let offset = if p.x < 0.2 { (-38, -6) } else { (6, -6) };
             chart.draw_series(std::iter::once(
-                EmptyElement::at((p.x, p.y))
-                    + Text::new(format!("{nm}"), offset, ("sans-serif", 13)),
+                EmptyElement::at((p.x, p.y)) + Text::new(format!("{nm}"), offset, small()),
             ))?;
         }
         // The sRGB gamut.
@@ -155,7 +146,7 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             chart.draw_series(std::iter::once(
                 EmptyElement::at((p.x, p.y))
                     + Circle::new((0, 0), 3, orange.filled())
-                    + Text::new(format!("{t} K"), (4, 6), ("sans-serif", 12)),
+                    + Text::new(format!("{t} K"), (4, 6), small()),
             ))?;
         }
         // The illuminants, computed from their spectra.
@@ -168,7 +159,7 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             let series = chart.draw_series(std::iter::once(
                 EmptyElement::at((p.x, p.y))
                     + Cross::new((0, 0), 5, green.stroke_width(2))
-                    + Text::new((*name).to_string(), offset, ("sans-serif", 12)),
+                    + Text::new((*name).to_string(), offset, small()),
             ))?;
             if k == 0 {
                 series
@@ -178,9 +169,9 @@ fn chromaticity_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         }
         chart
             .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK.mix(0.4))
+            .label_font(small())
             .position(SeriesLabelPosition::UpperRight)
             .draw()?;
         Ok(())
@@ -231,7 +222,7 @@ fn illuminants_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn fit_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let nms: Vec<f64> = (0..=94).map(|i| 360.0 + 5.0 * f64::from(i)).collect();
     // The error oscillates with a period of about 10 nm: 5 nm steps would alias it.
     let fine: Vec<f64> = (0..=470).map(|i| 360.0 + f64::from(i)).collect();
@@ -239,59 +230,45 @@ fn fit_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut curves = Vec::new();
     let mut errors = Vec::new();
     for (k, name) in names.iter().enumerate() {
-        curves.push(Series {
-            label: format!("{name} (table)"),
-            points: nms.iter().map(|&l| (l, cmf(l)[k])).collect(),
-        });
-        curves.push(Series {
-            label: format!("{name} fit"),
-            points: nms.iter().map(|&l| (l, cmf_fit(l)[k])).collect(),
-        });
-        errors.push(Series {
-            label: format!("{name} fit − table"),
-            points: fine
-                .iter()
+        curves.push(Series::line(
+            format!("{name} (table)"),
+            nms.iter().map(|&l| (l, cmf(l)[k])).collect(),
+        ));
+        curves.push(Series::line(
+            format!("{name} fit"),
+            nms.iter().map(|&l| (l, cmf_fit(l)[k])).collect(),
+        ));
+        errors.push(Series::line(
+            format!("{name} fit − table"),
+            fine.iter()
                 .map(|&l| (l, cmf_fit(l)[k] - cmf(l)[k]))
                 .collect(),
-        });
+        ));
     }
     let worst = errors
         .iter()
         .flat_map(|s| s.points.iter().map(|p| p.1.abs()))
         .fold(0.0, f64::max);
     let range = (LAMBDA_MIN, LAMBDA_MAX);
-    plot::ranged_chart_png(
-        &[
-            (
-                Panel {
-                    title: "CIE 1931 table and the Wyman-Sloan-Shirley fit".into(),
-                    x_label: "wavelength (nm)".into(),
-                    y_label: "value".into(),
-                    x_scale: Scale::Linear,
-                    y_scale: Scale::Linear,
-                    series: curves,
-                },
-                range,
-                (-0.05, 1.9),
-                plot::Legend::UpperRight,
+    plot::ranged_chart(&[
+        (
+            Panel::new(
+                "CIE 1931 table and the Wyman-Sloan-Shirley fit",
+                "wavelength (nm)",
+                "value",
+                curves,
             ),
-            (
-                Panel {
-                    title: "fit − table".into(),
-                    x_label: "wavelength (nm)".into(),
-                    y_label: "difference".into(),
-                    x_scale: Scale::Linear,
-                    y_scale: Scale::Linear,
-                    series: errors,
-                },
-                range,
-                (-1.1 * worst, 1.1 * worst),
-                plot::Legend::UpperRight,
-            ),
-        ],
-        1300,
-        520,
-    )
+            range,
+            (-0.05, 1.9),
+            plot::Legend::Below,
+        ),
+        (
+            Panel::new("fit − table", "wavelength (nm)", "difference", errors),
+            range,
+            (-1.1 * worst, 1.1 * worst),
+            plot::Legend::Below,
+        ),
+    ])
 }
 
 /// The largest |fit − table| of each function over 360-830 nm at 0.1 nm, with where it is,

@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 
 use super::{Output, Settings};
-use crate::plot::{BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::optics::dispersion::{
     self as disp, FUSED_SILICA, LINE_C_NM, LINE_D_NM, LINE_F_NM, N_BK7, PrismPath, RENDER_RANGE_NM,
     WATER,
@@ -13,9 +13,9 @@ use raylemma::optics::dispersion::{
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "dispersion_index.png",
+            file: "dispersion_index.svg",
             what: "refractive index against wavelength",
-            make: index_png,
+            make: index_svg,
         },
         Output {
             file: "dispersion_catalogue.md",
@@ -23,9 +23,9 @@ pub fn outputs() -> Vec<Output> {
             make: catalogue_md,
         },
         Output {
-            file: "dispersion_prism.png",
+            file: "dispersion_prism.svg",
             what: "prism deviation against wavelength and incidence",
-            make: prism_png,
+            make: prism_svg,
         },
         Output {
             file: "dispersion_prism.md",
@@ -33,9 +33,9 @@ pub fn outputs() -> Vec<Output> {
             make: prism_md,
         },
         Output {
-            file: "dispersion_rainbow.png",
+            file: "dispersion_rainbow.svg",
             what: "rainbow angle against wavelength",
-            make: rainbow_png,
+            make: rainbow_svg,
         },
         Output {
             file: "dispersion_rainbow.md",
@@ -47,7 +47,7 @@ pub fn outputs() -> Vec<Output> {
 
 const MATERIALS: [&str; 3] = [N_BK7, FUSED_SILICA, WATER];
 
-use crate::plot::{Legend, ranged_chart_png};
+use crate::plot::Legend;
 
 /// The range of the points of `series`, padded by 5 % each side.
 fn y_range(series: &[Series]) -> (f64, f64) {
@@ -68,16 +68,13 @@ fn wavelengths(step: usize) -> Vec<f64> {
     (lo..=hi).step_by(step).map(|l| l as f64).collect()
 }
 
-fn index_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn index_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let ls = wavelengths(5);
     let series = MATERIALS
         .iter()
         .map(|&name| {
             let g = disp::material(name);
-            Series {
-                label: name.into(),
-                points: ls.iter().map(|&l| (l, g.index(l))).collect(),
-            }
+            Series::line(name, ls.iter().map(|&l| (l, g.index(l))).collect())
         })
         .collect();
     // The same curves relative to each material's n_d, to compare their dispersion.
@@ -86,36 +83,32 @@ fn index_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         .map(|&name| {
             let g = disp::material(name);
             let nd = g.index(LINE_D_NM);
-            Series {
-                label: name.into(),
-                points: ls.iter().map(|&l| (l, 1e3 * (g.index(l) - nd))).collect(),
-            }
+            Series::line(
+                name,
+                ls.iter().map(|&l| (l, 1e3 * (g.index(l) - nd))).collect(),
+            )
         })
         .collect();
     let range = RENDER_RANGE_NM;
     let panels = [
-        Panel {
-            title: "Sellmeier fits over the render range".into(),
-            x_label: "wavelength (nm)".into(),
-            y_label: "refractive index n".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
+        Panel::new(
+            "Sellmeier fits over the render range",
+            "wavelength (nm)",
+            "refractive index n",
             series,
-        },
-        Panel {
-            title: "n(λ) − n_d".into(),
-            x_label: "wavelength (nm)".into(),
-            y_label: "(n − n_d) × 1000".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: relative,
-        },
+        ),
+        Panel::new(
+            "n(λ) − n_d",
+            "wavelength (nm)",
+            "(n − n_d) × 1000",
+            relative,
+        ),
     ];
     let panels = panels.map(|p| {
         let yr = y_range(&p.series);
         (p, range, yr, Legend::UpperRight)
     });
-    ranged_chart_png(&panels, 1200, 480)
+    plot::ranged_chart(&panels)
 }
 
 fn catalogue_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
@@ -230,7 +223,7 @@ fn catalogue_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
 
 const APEX_DEG: f64 = 60.0;
 
-fn prism_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn prism_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let apex = APEX_DEG.to_radians();
     let ls = wavelengths(5);
     let mut by_wavelength = Vec::new();
@@ -238,26 +231,25 @@ fn prism_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
         let g = disp::material(name);
         let (i0, _) = disp::minimum_deviation_numeric(g.index(LINE_D_NM), apex)
             .ok_or("no ray through the prism")?;
-        by_wavelength.push(Series {
-            label: format!("{name}, incidence {:.2}°", i0.to_degrees()),
-            points: ls
-                .iter()
+        by_wavelength.push(Series::line(
+            format!("{name}, incidence {:.2}°", i0.to_degrees()),
+            ls.iter()
                 .filter_map(|&l| {
                     disp::prism(g.index(l), apex, i0)
                         .deviation()
                         .map(|dev| (l, dev.to_degrees()))
                 })
                 .collect(),
-        });
+        ));
     }
     let g = disp::material(N_BK7);
     let by_incidence = [400.0, 550.0, 700.0]
         .iter()
         .map(|&l| {
             let n = g.index(l);
-            Series {
-                label: format!("N-BK7, {l:.0} nm"),
-                points: (0..=180)
+            Series::line(
+                format!("N-BK7, {l:.0} nm"),
+                (0..=180)
                     .filter_map(|k| {
                         let i = (f64::from(k) * 0.5).to_radians();
                         match disp::prism(n, apex, i) {
@@ -268,37 +260,29 @@ fn prism_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                         }
                     })
                     .collect(),
-            }
+            )
         })
         .collect();
     let panels = [
-        Panel {
-            title: format!("{APEX_DEG:.0}° prism at the d line's minimum-deviation incidence"),
-            x_label: "wavelength (nm)".into(),
-            y_label: "deviation (degrees)".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: by_wavelength,
-        },
-        Panel {
-            title: "deviation against incidence (missing: total internal reflection)".into(),
-            x_label: "angle of incidence (degrees)".into(),
-            y_label: "deviation (degrees)".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: by_incidence,
-        },
+        Panel::new(
+            format!("{APEX_DEG:.0}° prism at the d line's minimum-deviation incidence"),
+            "wavelength (nm)",
+            "deviation (degrees)",
+            by_wavelength,
+        ),
+        Panel::new(
+            "deviation against incidence (missing: total internal reflection)",
+            "angle of incidence (degrees)",
+            "deviation (degrees)",
+            by_incidence,
+        ),
     ];
     let [first, second] = panels;
     let (y1, y2) = (y_range(&first.series), y_range(&second.series));
-    ranged_chart_png(
-        &[
-            (first, RENDER_RANGE_NM, y1, Legend::UpperRight),
-            (second, (0.0, 90.0), y2, Legend::UpperRight),
-        ],
-        1200,
-        480,
-    )
+    plot::ranged_chart(&[
+        (first, RENDER_RANGE_NM, y1, Legend::Below),
+        (second, (0.0, 90.0), y2, Legend::Below),
+    ])
 }
 
 fn prism_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
@@ -336,23 +320,22 @@ fn prism_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn rainbow_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn rainbow_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let water = disp::material(WATER);
     let ls = wavelengths(5);
-    let bow = vec![Series {
-        label: "primary bow, water at 20 °C".into(),
-        points: ls
-            .iter()
+    let bow = vec![Series::line(
+        "primary bow, water at 20 °C",
+        ls.iter()
             .map(|&l| (l, disp::rainbow_angle(water.index(l)).to_degrees()))
             .collect(),
-    }];
+    )];
     let curves = [400.0, 550.0, 700.0]
         .iter()
         .map(|&l| {
             let n = water.index(l);
-            Series {
-                label: format!("{l:.0} nm"),
-                points: (0..=90)
+            Series::line(
+                format!("{l:.0} nm"),
+                (0..=90)
                     .map(|k| {
                         let i = f64::from(k).to_radians();
                         (
@@ -361,37 +344,29 @@ fn rainbow_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                         )
                     })
                     .collect(),
-            }
+            )
         })
         .collect();
     let panels = [
-        Panel {
-            title: "radius of the primary bow".into(),
-            x_label: "wavelength (nm)".into(),
-            y_label: "angle from the antisolar point (degrees)".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: bow,
-        },
-        Panel {
-            title: "180° − D(i): rays pile up at the maximum".into(),
-            x_label: "angle of incidence on the drop (degrees)".into(),
-            y_label: "angle from the antisolar point (degrees)".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: curves,
-        },
+        Panel::new(
+            "radius of the primary bow",
+            "wavelength (nm)",
+            "from the antisolar point (°)",
+            bow,
+        ),
+        Panel::new(
+            "180° − D(i): rays pile up at the maximum",
+            "angle of incidence on the drop (degrees)",
+            "from the antisolar point (°)",
+            curves,
+        ),
     ];
     let [first, second] = panels;
     let y1 = y_range(&first.series);
-    ranged_chart_png(
-        &[
-            (first, RENDER_RANGE_NM, y1, Legend::LowerRight),
-            (second, (0.0, 90.0), (0.0, 45.0), Legend::UpperRight),
-        ],
-        1200,
-        480,
-    )
+    plot::ranged_chart(&[
+        (first, RENDER_RANGE_NM, y1, Legend::Below),
+        (second, (0.0, 90.0), (0.0, 45.0), Legend::Below),
+    ])
 }
 
 fn rainbow_md(_: &Settings) -> Result<Vec<u8>, BoxError> {

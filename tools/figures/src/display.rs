@@ -6,17 +6,16 @@ use glam::DVec3;
 use plotters::prelude::*;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::plot::{Legend, ranged_chart_png};
+use crate::plot::{self, BoxError, Legend, Panel, Series};
 use raylemma::spectral::display::*;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "display_curves.png",
+            file: "display_curves.svg",
             what: "sRGB curve vs gamma 2.2, and their difference in 8-bit codes",
-            make: curves_png,
+            make: curves_svg,
         },
         Output {
             file: "display_codes.md",
@@ -41,97 +40,77 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn curves_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn curves_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     // Linear inputs spaced evenly in log from 1e-4 to 1, so that the dark end shows.
     let xs: Vec<f64> = (0..=120)
         .map(|i| 10f64.powf(-4.0 + 4.0 * f64::from(i) / 120.0))
         .collect();
-    let curve = |label: &str, f: &dyn Fn(f64) -> f64| Series {
-        label: label.into(),
-        points: xs.iter().map(|&x| (x, f(x))).collect(),
+    let curve = |label: &str, f: &dyn Fn(f64) -> f64| {
+        Series::line(label, xs.iter().map(|&x| (x, f(x))).collect())
     };
-    let encoded = Panel {
-        title: "encoded value V of linear light x".into(),
-        x_label: "linear x (log scale)".into(),
-        y_label: "V".into(),
-        x_scale: Scale::Log,
-        y_scale: Scale::Linear,
-        series: vec![
+    let encoded = Panel::new(
+        "encoded value V of linear light x",
+        "linear x (log scale)",
+        "V",
+        vec![
             curve("sRGB (IEC 61966-2-1)", &srgb_encode),
             curve("gamma 2.2: x^(1/2.2)", &|x| gamma_encode(x, 2.2)),
             curve("sqrt: x^(1/2)", &|x| gamma_encode(x, 2.0)),
         ],
-    };
+    )
+    .log_x();
     let difference = |hi: f64, n: u32, rounded: bool| {
-        let exact = Series {
-            label: "255 (x^(1/2.2) − sRGB(x))".into(),
-            points: (0..=n)
+        let exact = Series::line(
+            "255 (x^(1/2.2) − sRGB(x))",
+            (0..=n)
                 .map(|i| {
                     let x = hi * f64::from(i) / f64::from(n);
                     (x, 255.0 * (gamma_encode(x, 2.2) - srgb_encode(x)))
                 })
                 .collect(),
-        };
+        );
         let mut series = vec![exact];
         if rounded {
-            series.push(Series {
-                label: "both rounded to 8 bits".into(),
-                points: (0..=n)
+            series.push(Series::line(
+                "both rounded to 8 bits",
+                (0..=n)
                     .map(|i| {
                         let x = hi * f64::from(i) / f64::from(n);
                         (x, f64::from(gamma8(x, 2.2)) - f64::from(srgb8(x)))
                     })
                     .collect(),
-            });
+            ));
         }
         series
     };
-    let dark = Panel {
-        title: "gamma 2.2 minus sRGB, codes, dark end".into(),
-        x_label: "linear x".into(),
-        y_label: "codes".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: difference(0.02, 2000, true),
-    };
-    let whole = Panel {
-        title: "gamma 2.2 minus sRGB, codes, 0 ≤ x ≤ 1".into(),
-        x_label: "linear x".into(),
-        y_label: "codes".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: difference(1.0, 1000, false),
-    };
-    stack_png(&[
-        plot::line_chart_png(&[encoded], 1000, 400)?,
-        ranged_chart_png(
-            &[
-                (dark, (0.0, 0.02), (-2.0, 10.0), Legend::UpperRight),
-                (whole, (0.0, 1.0), (-2.0, 10.0), Legend::UpperRight),
-            ],
-            1000,
-            400,
-        )?,
-    ])
+    let dark = Panel::new(
+        "gamma 2.2 minus sRGB, codes, dark end",
+        "linear x",
+        "codes",
+        difference(0.02, 2000, true),
+    );
+    let whole = Panel::new(
+        "gamma 2.2 minus sRGB, codes, 0 ≤ x ≤ 1",
+        "linear x",
+        "codes",
+        difference(1.0, 1000, false),
+    );
+    plot::chart(
+        &[
+            encoded,
+            dark.x_range((0.0, 0.02))
+                .y_range((-2.0, 14.0))
+                .legend(Legend::UpperRight),
+            whole
+                .x_range((0.0, 1.0))
+                .y_range((-2.0, 10.0))
+                .legend(Legend::UpperRight),
+        ],
+        2,
+    )
 }
 
 /// Stacks PNGs of equal width vertically.
-fn stack_png(pngs: &[Vec<u8>]) -> Result<Vec<u8>, BoxError> {
-    let images: Vec<image::RgbImage> = pngs
-        .iter()
-        .map(|p| image::load_from_memory(p).map(|i| i.to_rgb8()))
-        .collect::<Result<_, _>>()?;
-    let w = images.iter().map(|i| i.width()).max().unwrap_or(1);
-    let h: u32 = images.iter().map(|i| i.height()).sum();
-    let mut out = image::RgbImage::from_pixel(w, h, image::Rgb([255, 255, 255]));
-    let mut y = 0;
-    for i in &images {
-        image::imageops::replace(&mut out, i, 0, i64::from(y));
-        y += i.height();
-    }
-    plot::encode_png(w, h, out.into_raw())
-}
-
 /// An encoder of linear light to an 8-bit code.
 type Encoder = fn(f64) -> u8;
 

@@ -6,7 +6,7 @@ use glam::DVec3;
 use rand::RngExt;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::spectral::cie;
 use raylemma::spectral::emission::*;
@@ -17,9 +17,9 @@ use raylemma::stats::ttest::Summary;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "emission_histograms.png",
+            file: "emission_histograms.svg",
             what: "each lamp's pdf and a histogram of its samples",
-            make: histograms_png,
+            make: histograms_svg,
         },
         Output {
             file: "emission_swatches.png",
@@ -53,68 +53,42 @@ fn sampler(t: &Table) -> Result<EmissionSampler, BoxError> {
     EmissionSampler::new(t).map_err(|e| e.to_string().into())
 }
 
-fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    use plotters::prelude::*;
+fn histograms_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
-    let lamps = lamps();
-    let (width, height) = (1500u32, 820u32);
-    plot::draw_png(width, height, |root| {
-        let areas = root.split_evenly((2, 3));
-        let (blue, orange) = (plot::PALETTE[0], plot::PALETTE[1]);
-        for (k, (lamp, area)) in lamps.iter().zip(&areas).enumerate() {
-            let s = sampler(&lamp.spectrum)?;
-            // 1 nm histogram bins over 380-830 nm: density = count / (n * 1 nm).
-            let mut counts = vec![0u64; 450];
-            let mut r = rng::seeded(0xE1 + k as u64);
-            for _ in 0..n {
-                let nm = s.sample(r.random::<f64>()).nm;
-                counts[((nm - IMAGE_FIRST_NM) as usize).min(449)] += 1;
-            }
-            let pdf: Vec<(f64, f64)> = (0..=4500)
-                .map(|i| {
-                    let nm = 380.0 + 0.1 * f64::from(i);
-                    (nm, s.pdf(nm))
-                })
-                .collect();
-            let ymax = pdf.iter().map(|p| p.1).fold(0.0, f64::max) * 1.1;
-            let mut chart = ChartBuilder::on(area)
-                .caption(lamp.name, ("sans-serif", 18))
-                .margin(10)
-                .x_label_area_size(36)
-                .y_label_area_size(60)
-                .build_cartesian_2d(380f64..830f64, 0f64..ymax)?;
-            chart
-                .configure_mesh()
-                .x_desc("wavelength (nm)")
-                .y_desc("density (1/nm)")
-                .label_style(("sans-serif", 12))
-                .axis_desc_style(("sans-serif", 14))
-                .x_label_formatter(&|v| plot::format_tick(*v))
-                .y_label_formatter(&|v| plot::format_tick(*v))
-                .draw()?;
-            chart.draw_series(counts.iter().enumerate().filter(|(_, c)| **c > 0).map(
-                |(i, &c)| {
-                    let x = 380.0 + i as f64;
-                    Rectangle::new(
-                        [(x, 0.0), (x + 1.0, c as f64 / n as f64)],
-                        orange.mix(0.6).filled(),
-                    )
-                },
-            ))?;
-            chart.draw_series(LineSeries::new(pdf, blue.stroke_width(2)))?;
+    let mut panels = Vec::new();
+    for (k, lamp) in lamps().iter().enumerate() {
+        let s = sampler(&lamp.spectrum)?;
+        // 1 nm histogram bins over 380-830 nm: density = count / (n * 1 nm).
+        let mut counts = vec![0u64; 450];
+        let mut r = rng::seeded(0xE1 + k as u64);
+        for _ in 0..n {
+            let nm = s.sample(r.random::<f64>()).nm;
+            counts[((nm - IMAGE_FIRST_NM) as usize).min(449)] += 1;
         }
-        areas[5].draw(&Text::new(
-            format!("{n} samples per lamp, 1 nm bins (orange);"),
-            (20, 150),
-            ("sans-serif", 18),
-        ))?;
-        areas[5].draw(&Text::new(
-            "the pdf L(λ)/∫L (blue)",
-            (20, 180),
-            ("sans-serif", 18),
-        ))?;
-        Ok(())
-    })
+        let edges: Vec<f64> = (0..=450).map(|i| 380.0 + f64::from(i)).collect();
+        let heights: Vec<f64> = counts.iter().map(|&c| c as f64 / n as f64).collect();
+        let pdf: Vec<(f64, f64)> = (0..=4500)
+            .map(|i| {
+                let nm = 380.0 + 0.1 * f64::from(i);
+                (nm, s.pdf(nm))
+            })
+            .collect();
+        let ymax = pdf.iter().map(|p| p.1).fold(0.0, f64::max) * 1.1;
+        panels.push(
+            Panel::new(
+                lamp.name,
+                "wavelength (nm)",
+                "density (1/nm)",
+                vec![
+                    Series::bars(format!("{n} samples, 1 nm bins"), &edges, &heights),
+                    Series::line("the pdf L(λ)/∫L", pdf),
+                ],
+            )
+            .x_range((380.0, 830.0))
+            .y_range((0.0, ymax)),
+        );
+    }
+    plot::chart(&panels, 2)
 }
 
 fn swatches_png(_: &Settings) -> Result<Vec<u8>, BoxError> {

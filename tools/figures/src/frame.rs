@@ -8,7 +8,7 @@ use std::hint::black_box;
 use glam::{DVec3, Vec3};
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::sampling::frame::{Construction, Frame, cross_product_frame, duff, frisvad};
 use raylemma::single::sampling::frame as frame32;
@@ -18,9 +18,9 @@ use raylemma::workload::timing_normals;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "frame_error.png",
+            file: "frame_error.svg",
             what: "orthonormality error near (0, 0, -1)",
-            make: error_png,
+            make: error_svg,
         },
         Output {
             file: "frame_errors.md",
@@ -64,7 +64,7 @@ pub fn worst64(normals: &[DVec3], f: Construction) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let azimuths = if settings.quick { 64 } else { 1024 };
     // 1 + z from 1 down to 1e-7 (f32) and 1e-15 (f64), four points per decade.
     let deltas = |decades: i32| -> Vec<f64> {
@@ -72,53 +72,57 @@ fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             .map(|k| 10f64.powf(-f64::from(k) / 4.0))
             .collect()
     };
-    let series32 = |label: &str, f: frame32::Construction| Series {
-        label: label.into(),
-        points: deltas(7)
-            .into_iter()
-            .map(|d| {
-                // The distance the rounded normals really have from z = -1.
-                let normals = ring(d, azimuths);
-                let dz = 1.0 + f64::from(normals[0].as_vec3().z);
-                (dz, worst32(&normals, f))
-            })
-            .collect(),
+    let series32 = |label: &str, f: frame32::Construction| {
+        Series::line(
+            label,
+            deltas(7)
+                .into_iter()
+                .map(|d| {
+                    // The distance the rounded normals really have from z = -1.
+                    let normals = ring(d, azimuths);
+                    let dz = 1.0 + f64::from(normals[0].as_vec3().z);
+                    (dz, worst32(&normals, f))
+                })
+                .collect(),
+        )
     };
-    let series64 = |label: &str, f: Construction| Series {
-        label: label.into(),
-        points: deltas(15)
-            .into_iter()
-            .map(|d| {
-                let normals = ring(d, azimuths);
-                (1.0 + normals[0].z, worst64(&normals, f))
-            })
-            .collect(),
+    let series64 = |label: &str, f: Construction| {
+        Series::line(
+            label,
+            deltas(15)
+                .into_iter()
+                .map(|d| {
+                    let normals = ring(d, azimuths);
+                    (1.0 + normals[0].z, worst64(&normals, f))
+                })
+                .collect(),
+        )
     };
     let panels = [
-        Panel {
-            title: "f32: worst error over a ring of normals".into(),
-            x_label: "1 + z (distance from (0, 0, -1) along z)".into(),
-            y_label: "worst error (units of f32 epsilon)".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series: vec![
+        Panel::new(
+            "f32: worst error over a ring of normals",
+            "1 + z (distance from (0, 0, −1))",
+            "worst error (f32 epsilons)",
+            vec![
                 series32("Frisvad 2012", frame32::frisvad),
                 series32("Duff et al. 2017", frame32::duff),
             ],
-        },
-        Panel {
-            title: "f64".into(),
-            x_label: "1 + z".into(),
-            y_label: "worst error (units of f64 epsilon)".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series: vec![
+        )
+        .log_x()
+        .log_y(),
+        Panel::new(
+            "f64",
+            "1 + z",
+            "worst error (f64 epsilons)",
+            vec![
                 series64("Frisvad 2012", frisvad),
                 series64("Duff et al. 2017", duff),
             ],
-        },
+        )
+        .log_x()
+        .log_y(),
     ];
-    plot::line_chart_png(&panels, 1200, 480)
+    plot::chart(&panels, 2)
 }
 
 fn errors_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {

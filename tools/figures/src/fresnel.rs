@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::hint::black_box;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::Options;
 use raylemma::check::fresnel::{self as check, planted};
 use raylemma::optics::fresnel::{
@@ -18,19 +18,19 @@ use raylemma::workload::timing_cosines;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "fresnel_outside.png",
+            file: "fresnel_outside.svg",
             what: "R_s, R_p, R from the less dense side",
-            make: outside_png,
+            make: outside_svg,
         },
         Output {
-            file: "fresnel_inside.png",
+            file: "fresnel_inside.svg",
             what: "R_s, R_p, R from the denser side",
-            make: inside_png,
+            make: inside_svg,
         },
         Output {
-            file: "fresnel_error.png",
+            file: "fresnel_error.svg",
             what: "approximation error against angle",
-            make: error_png,
+            make: error_svg,
         },
         Output {
             file: "fresnel_errors.md",
@@ -48,9 +48,9 @@ pub fn outputs() -> Vec<Output> {
             make: speed_md,
         },
         Output {
-            file: "fresnel_speed.png",
+            file: "fresnel_speed.svg",
             what: "speed against error",
-            make: speed_png,
+            make: speed_svg,
         },
     ]
 }
@@ -76,10 +76,7 @@ fn cos_deg(d: f64) -> f64 {
 }
 
 fn curve(label: &str, f: impl Fn(f64) -> f64) -> Series {
-    Series {
-        label: label.into(),
-        points: degrees().map(|d| (d, f(cos_deg(d)))).collect(),
-    }
+    Series::line(label, degrees().map(|d| (d, f(cos_deg(d)))).collect())
 }
 
 fn reflectance_panels(inside: bool) -> Vec<Panel> {
@@ -105,27 +102,27 @@ fn reflectance_panels(inside: bool) -> Vec<Panel> {
                     schlick_seed(c, n1, n2)
                 }));
             }
-            Panel {
-                title: format!("n1 = {n1}, n2 = {n2}"),
-                x_label: "angle of incidence θi (degrees)".into(),
-                y_label: "reflectance".into(),
-                x_scale: Scale::Linear,
-                y_scale: Scale::Linear,
+            Panel::new(
+                format!("n1 = {n1}, n2 = {n2}"),
+                "angle of incidence θi (degrees)",
+                "reflectance",
                 series,
-            }
+            )
+            .x_range((0.0, 90.0))
+            .y_range((0.0, 1.02))
         })
         .collect()
 }
 
-fn outside_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    plot::line_chart_png(&reflectance_panels(false), 1500, 480)
+fn outside_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    plot::chart(&reflectance_panels(false), 2)
 }
 
-fn inside_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    plot::line_chart_png(&reflectance_panels(true), 1500, 480)
+fn inside_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    plot::chart(&reflectance_panels(true), 2)
 }
 
-fn error_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let panels: Vec<Panel> = FIGURE_IORS
         .iter()
         .map(|&n| {
@@ -137,13 +134,11 @@ fn error_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                 series.points.retain(|p| p.1 >= 1e-9);
                 series
             };
-            Panel {
-                title: format!("relative index {n}"),
-                x_label: "angle of incidence θi (degrees)".into(),
-                y_label: "|approximation − exact|".into(),
-                x_scale: Scale::Linear,
-                y_scale: Scale::Log,
-                series: vec![
+            Panel::new(
+                format!("relative index {n}"),
+                "angle of incidence θi (degrees)",
+                "|approximation − exact|",
+                vec![
                     error("Schlick, outside", 1.0, n, &|c| schlick(c, 1.0, n)),
                     error("Schlick (cos θt), inside", n, 1.0, &|c| schlick(c, n, 1.0)),
                     error("seed: Schlick (cos θi), inside", n, 1.0, &|c| {
@@ -152,10 +147,12 @@ fn error_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                     error("Chebyshev-8, outside", 1.0, n, &|c| fit_out.eval(c)),
                     error("Chebyshev-8, inside", n, 1.0, &|c| fit_in.eval(c)),
                 ],
-            }
+            )
+            .x_range((0.0, 90.0))
+            .log_y()
         })
         .collect();
-    plot::line_chart_png(&panels, 1500, 520)
+    plot::chart(&panels, 2)
 }
 
 /// Worst errors of Schlick, the seed's Schlick and the fit for light in medium `n1`.
@@ -395,25 +392,22 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let rows = timed(settings);
-    let panel = |title: &str, pick: fn(&Timed) -> (f64, f64)| Panel {
-        title: title.into(),
-        x_label: "ns per evaluation".into(),
-        y_label: "worst |R − R_exact| (n = 1.33, 1.5, 2.4)".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Log,
-        series: rows
-            .iter()
-            .map(|row| Series {
-                label: row.name.into(),
-                points: vec![pick(row)],
-            })
-            .collect(),
+    let panel = |title: &str, pick: fn(&Timed) -> (f64, f64)| {
+        Panel::new(
+            title,
+            "ns per evaluation",
+            "worst |R − R_exact| (n = 1.33–2.4)",
+            rows.iter()
+                .map(|row| Series::points(row.name, vec![pick(row)]))
+                .collect(),
+        )
+        .log_y()
     };
     let panels = [
         panel("entering glass (1 → 1.5)", |r| (r.ns.0, r.error.0)),
         panel("leaving glass (1.5 → 1)", |r| (r.ns.1, r.error.1)),
     ];
-    plot::line_chart_png(&panels, 1200, 520)
+    plot::chart(&panels, 2)
 }

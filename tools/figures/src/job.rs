@@ -30,7 +30,7 @@ pub struct Settings {
 
 /// One output file of the figure job.
 pub struct Output {
-    /// File name inside `figures/`, e.g. `sphere_far_error.png`.
+    /// File name inside `figures/`, e.g. `sphere_far_error.svg`.
     pub file: &'static str,
     /// What it shows, for progress and error messages.
     pub what: &'static str,
@@ -61,6 +61,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(emission::outputs());
     outputs.extend(display::outputs());
     outputs.extend(upsample::outputs());
+    outputs.extend(crate::render::outputs());
     outputs.extend(compare::outputs());
     outputs.extend(export::outputs());
     outputs.extend(limit::outputs());
@@ -217,7 +218,7 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(
-            err.contains("no_such_figure") && err.contains("sphere_far_error.png"),
+            err.contains("no_such_figure") && err.contains("sphere_far_error.svg"),
             "{err}"
         );
         assert!(!dir.exists(), "nothing is written for an unknown name");

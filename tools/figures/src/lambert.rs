@@ -6,7 +6,7 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::stats::ttest::{self, Summary};
 use raylemma::transport::lambert::*;
@@ -25,9 +25,9 @@ pub fn outputs() -> Vec<Output> {
             make: furnace_md,
         },
         Output {
-            file: "lambert_sky_variance.png",
+            file: "lambert_sky_variance.svg",
             what: "variance against the sky's exponent",
-            make: sky_variance_png,
+            make: sky_variance_svg,
         },
     ]
 }
@@ -130,26 +130,14 @@ fn furnace_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn sky_variance_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn sky_variance_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 20_000 } else { 200_000 };
     let ks: Vec<i32> = (0..=10).collect();
     let mut series = vec![
-        Series {
-            label: "uniform, formula".into(),
-            points: Vec::new(),
-        },
-        Series {
-            label: "uniform, measured".into(),
-            points: Vec::new(),
-        },
-        Series {
-            label: "cosine, formula".into(),
-            points: Vec::new(),
-        },
-        Series {
-            label: "cosine, measured".into(),
-            points: Vec::new(),
-        },
+        Series::line("uniform, formula", Vec::new()),
+        Series::points("uniform, measured", Vec::new()),
+        Series::line("cosine, formula", Vec::new()),
+        Series::points("cosine, measured", Vec::new()),
     ];
     for &k in &ks {
         let env = move |w: DVec3| w.z.max(0.0).powi(k);
@@ -166,31 +154,27 @@ fn sky_variance_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let rel: Vec<Series> = series
         .iter()
         .map(|s| Series {
-            label: s.label.clone(),
             points: s
                 .points
                 .iter()
                 .map(|&(x, v)| (x, v / (2.0 * RHO / (x + 2.0)).powi(2)))
                 .collect(),
+            ..s.clone()
         })
         .collect();
     let panels = [
-        Panel {
-            title: format!("variance of one estimate, sky max(z,0)^k, ρ = {RHO}"),
-            x_label: "sky exponent k".into(),
-            y_label: "variance".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
+        Panel::new(
+            format!("variance of one estimate, sky max(z,0)^k, ρ = {RHO}"),
+            "sky exponent k",
+            "variance",
             series,
-        },
-        Panel {
-            title: "relative variance (variance / exact²)".into(),
-            x_label: "sky exponent k".into(),
-            y_label: "relative variance".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: rel,
-        },
+        ),
+        Panel::new(
+            "relative variance (variance / exact²)",
+            "sky exponent k",
+            "relative variance",
+            rel,
+        ),
     ];
-    plot::line_chart_png(&panels, 1000, 420)
+    plot::chart(&panels, 2)
 }

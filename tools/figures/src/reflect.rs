@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use super::{Output, Settings};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::reflect::{self as check, planted};
 use raylemma::check::{Options, Verdict};
 use raylemma::optics::reflect::{Refraction, reflect, refract};
@@ -19,9 +19,9 @@ pub fn outputs() -> Vec<Output> {
             make: checks_md,
         },
         Output {
-            file: "reflect_snell.png",
+            file: "reflect_snell.svg",
             what: "refracted angle against incident angle",
-            make: snell_png,
+            make: snell_svg,
         },
     ]
 }
@@ -104,39 +104,40 @@ pub fn refracted_degrees(degrees: f64, n1: f64, n2: f64) -> Option<f64> {
     Some(w_t.cross(n).length().atan2(-w_t.dot(n)).to_degrees())
 }
 
-fn snell_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn snell_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let pairs = [(1.0, 1.33), (1.0, 1.5), (1.0, 2.4)];
     let series = |inside: bool| -> Vec<Series> {
         pairs
             .iter()
             .map(|&(a, b)| {
                 let (n1, n2) = if inside { (b, a) } else { (a, b) };
-                Series {
-                    label: format!("n1 = {n1}, n2 = {n2}"),
-                    points: (0..=900)
+                Series::line(
+                    format!("n1 = {n1}, n2 = {n2}"),
+                    (0..=900)
                         .filter_map(|k| {
                             let d = f64::from(k) * 0.1;
                             refracted_degrees(d, n1, n2).map(|t| (d, t))
                         })
                         .collect(),
-                }
+                )
             })
             .collect()
     };
-    let panel = |title: &str, inside: bool| Panel {
-        title: title.into(),
-        x_label: "angle of incidence θi (degrees)".into(),
-        y_label: "angle of refraction θt (degrees)".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: series(inside),
+    let panel = |title: &str, inside: bool| {
+        Panel::new(
+            title,
+            "angle of incidence θi (degrees)",
+            "angle of refraction θt (degrees)",
+            series(inside),
+        )
+        .x_range((0.0, 90.0))
+        .y_range((0.0, 90.0))
     };
-    plot::line_chart_png(
+    plot::chart(
         &[
             panel("entering the denser medium", false),
             panel("leaving it: curves end at the critical angle", true),
         ],
-        1200,
-        480,
+        2,
     )
 }

@@ -10,9 +10,9 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use super::Settings;
 use super::timing::{machine, quick_note};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use super::{Output, Settings};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
 use raylemma::render::compare::{mse_against, noise_level};
@@ -217,30 +217,70 @@ fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered, settings: &Setting
     md
 }
 
-fn speed_png(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
-    let measured = Series {
-        label: "raylemma, cornell 256x256".into(),
-        points: series.iter().map(|&(_, s, e)| (s, e)).collect(),
-    };
+/// The figure job's output made from a table of the references: the RMSE against time,
+/// drawn from the committed `render_speed.md` (no rendering).
+pub fn outputs() -> Vec<Output> {
+    vec![Output {
+        file: "render_error_time.svg",
+        what: "RMSE against render time, from render_speed.md",
+        make: error_time_svg,
+    }]
+}
+
+fn error_time_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+    let path = settings.root.join("figures").join("render_speed.md");
+    let md = std::fs::read_to_string(&path)
+        .map_err(|e| format!("{}: {e} (`references` writes it)", path.display()))?;
+    let series = parse_speed_md(&md);
+    if series.is_empty() {
+        return Err(format!("{}: no rows of spp, seconds and RMSE", path.display()).into());
+    }
+    speed_svg(&series)
+}
+
+/// The rows `(spp, seconds, RMSE)` of a table written by [`speed_md`].
+fn parse_speed_md(md: &str) -> Vec<(u32, f64, f64)> {
+    md.lines()
+        .filter_map(|line| {
+            let cells: Vec<&str> = line
+                .trim()
+                .trim_matches('|')
+                .split('|')
+                .map(str::trim)
+                .collect();
+            match cells[..] {
+                [spp, seconds, _, rmse, _] => {
+                    Some((spp.parse().ok()?, seconds.parse().ok()?, rmse.parse().ok()?))
+                }
+                _ => None,
+            }
+        })
+        .collect()
+}
+
+fn speed_svg(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
+    let measured = Series::measured(
+        "raylemma, cornell 256x256",
+        series.iter().map(|&(_, s, e)| (s, e)).collect(),
+    );
     let (s0, e0) = (series[0].1, series[0].2);
-    let slope = Series {
-        label: "slope −1/2 (unbiased Monte Carlo)".into(),
-        points: series
+    let slope = Series::line(
+        "slope −1/2 (unbiased Monte Carlo)",
+        series
             .iter()
             .map(|&(_, s, _)| (s, e0 * (s0 / s).sqrt()))
             .collect(),
-    };
-    plot::line_chart_png(
-        &[Panel {
-            title: "RMSE against render time".into(),
-            x_label: "seconds".into(),
-            y_label: "RMSE (linear sRGB)".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series: vec![measured, slope],
-        }],
-        640,
-        420,
+    );
+    plot::chart(
+        &[Panel::new(
+            "RMSE against render time",
+            "seconds",
+            "RMSE (linear sRGB)",
+            vec![measured, slope],
+        )
+        .log_x()
+        .log_y()],
+        1,
     )
 }
 
@@ -314,7 +354,7 @@ pub fn write_references(
     for r in rendered.iter().filter(|r| fresh.contains(&r.name)) {
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
-    let flat: [(&str, Vec<u8>); 4] = [
+    let flat: [(&str, Vec<u8>); 3] = [
         (
             "render_references.md",
             references_md(&rendered, settings).into_bytes(),
@@ -323,11 +363,21 @@ pub fn write_references(
             "render_speed.md",
             speed_md(&series, &rendered[0], settings).into_bytes(),
         ),
-        ("render_error_time.png", speed_png(&series)?),
         ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
     ];
     for (name, bytes) in flat {
         files.write(&figures.join(name), &bytes)?;
     }
     Ok(files.commit()?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_speed_table_reads_back_as_written() {
+        let md = "| spp | seconds | pixel samples / s | RMSE | RMSE² × seconds |\n|---:|---:|---:|---:|---:|\n| 1 | 0.042 | 1.568e6 | 4.5e-1 | 7.880e-3 |\n| 2 | 0.075 | 1.741e6 | 3.091e-1 | 7.192e-3 |\n\n*note*\n";
+        assert_eq!(parse_speed_md(md), [(1, 0.042, 0.45), (2, 0.075, 0.3091)]);
+    }
 }

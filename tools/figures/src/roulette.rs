@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::stats::ttest::{self, Summary};
 use raylemma::transport::roulette::*;
@@ -17,9 +17,9 @@ pub fn outputs() -> Vec<Output> {
             make: single_md,
         },
         Output {
-            file: "roulette_efficiency.png",
+            file: "roulette_efficiency.svg",
             what: "efficiency against the survival probability",
-            make: efficiency_png,
+            make: efficiency_svg,
         },
         Output {
             file: "roulette_efficiency.md",
@@ -132,7 +132,7 @@ fn efficiency(m: &Measured) -> f64 {
     1.0 / (m.summary.variance() * m.ns_per_path)
 }
 
-fn efficiency_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn efficiency_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let s = study(settings);
     let fine: Vec<f64> = (1..200)
         .map(|i| 0.34 + (0.995 - 0.34) * f64::from(i) / 200.0)
@@ -148,38 +148,32 @@ fn efficiency_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         .map(|p| p.1)
         .chain([peak])
         .fold(0.0, f64::max);
-    let panels = [Panel {
-        title: format!(
+    let panels = [Panel::new(
+        format!(
             "furnace a = {}, uniform bounces: efficiency 1/(variance × ns per path)",
             FURNACE.albedo
         ),
-        x_label: "fixed survival probability q".into(),
-        y_label: "efficiency".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: vec![
-            Series {
-                label: "predicted (formula, fitted ns per vertex)".into(),
-                points: predicted,
-            },
-            Series {
-                label: "measured".into(),
-                points: measured,
-            },
-            Series {
-                label: format!("predicted optimum q = {:.3}", s.optimum),
-                points: vec![(s.optimum, 0.0), (s.optimum, top * 1.05)],
-            },
-            Series {
-                label: "throughput-based p = min(1, T), measured".into(),
-                points: vec![
+        "fixed survival probability q",
+        "efficiency",
+        vec![
+            Series::line("predicted (formula, fitted ns per vertex)", predicted),
+            Series::points("measured", measured),
+            Series::line(
+                format!("predicted optimum q = {:.3}", s.optimum),
+                vec![(s.optimum, 0.0), (s.optimum, top * 1.05)],
+            ),
+            Series::line(
+                "throughput-based p = min(1, T), measured",
+                vec![
                     (0.34, efficiency(&s.throughput)),
                     (1.0, efficiency(&s.throughput)),
                 ],
-            },
+            ),
         ],
-    }];
-    plot::line_chart_png(&panels, 900, 480)
+    )
+    .x_range((0.3, 1.02))
+    .legend(plot::Legend::Below)];
+    plot::chart(&panels, 1)
 }
 
 fn efficiency_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {

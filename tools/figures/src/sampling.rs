@@ -10,7 +10,7 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Legend, Mark, Panel, Series};
 use raylemma::check::Options;
 use raylemma::check::warp::{self, Domain, RngWarp, SquareWarp, Warp, WarpOptions, planted};
 use raylemma::rng::{self, Rng};
@@ -23,19 +23,19 @@ use raylemma::stats;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "sampling_scatter.png",
+            file: "sampling_scatter.svg",
             what: "sample scatter plots",
-            make: scatter_png,
+            make: scatter_svg,
         },
         Output {
-            file: "sampling_histograms.png",
+            file: "sampling_histograms.svg",
             what: "histograms against pdfs",
-            make: histograms_png,
+            make: histograms_svg,
         },
         Output {
-            file: "sampling_warped_grids.png",
+            file: "sampling_warped_grids.svg",
             what: "disc maps' distortion",
-            make: warped_grids_png,
+            make: warped_grids_svg,
         },
         Output {
             file: "sampling_distortion.md",
@@ -53,9 +53,9 @@ pub fn outputs() -> Vec<Output> {
             make: power_md,
         },
         Output {
-            file: "sampling_calibration.png",
+            file: "sampling_calibration.svg",
             what: "p-values of correct samplers",
-            make: calibration_png,
+            make: calibration_svg,
         },
         Output {
             file: "sampling_calibration.md",
@@ -305,7 +305,7 @@ fn calibration_p_values(settings: &Settings) -> Vec<(String, Vec<f64>)> {
         .collect()
 }
 
-fn calibration_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn calibration_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let all: Vec<f64> = calibration_p_values(settings)
         .into_iter()
         .flat_map(|(_, ps)| ps)
@@ -321,27 +321,24 @@ fn calibration_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         steps.push((k as f64 / bins as f64, density(k)));
         steps.push(((k + 1) as f64 / bins as f64, density(k)));
     }
-    let panels = [Panel {
-        title: format!(
+    let panels = [Panel::new(
+        format!(
             "chi-squared p-values of the correct samplers ({} runs)",
             all.len()
         ),
-        x_label: "p-value".into(),
-        y_label: "density".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: vec![
+        "p-value",
+        "density",
+        vec![
             Series {
                 label: "observed".into(),
                 points: steps,
+                mark: Mark::Bars,
             },
-            Series {
-                label: "uniform (ideal)".into(),
-                points: vec![(0.0, 1.0), (1.0, 1.0)],
-            },
+            Series::line("uniform (ideal)", vec![(0.0, 1.0), (1.0, 1.0)]),
         ],
-    }];
-    plot::line_chart_png(&panels, 800, 420)
+    )
+    .x_range((0.0, 1.0))];
+    plot::chart(&panels, 1)
 }
 
 fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
@@ -398,18 +395,17 @@ fn distortion_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn warped_grids_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn warped_grids_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
-    let (w, h) = (900u32, 470u32);
-    plot::draw_png(w, h, |root| {
+    plot::svg(plot::WIDTH, 420, |root, _| {
         type Map = fn(DVec2) -> DVec3;
         let maps: [(&str, Map); 2] = [
             ("polar map", disc_polar),
             ("concentric map", disc_concentric),
         ];
         for ((name, f), area) in maps.iter().zip(root.split_evenly((1, 2)).iter()) {
-            let mut chart = ChartBuilder::on(area)
-                .caption(*name, ("sans-serif", 18))
+            let rest = plot::draw_title(area, name)?;
+            let mut chart = ChartBuilder::on(&rest)
                 .margin(15)
                 .build_cartesian_2d(-1.05..1.05, -1.05..1.05)?;
             let lines = 12;
@@ -438,8 +434,7 @@ fn phi_z(w: DVec3) -> (f64, f64) {
     (if phi < 0.0 { phi + TAU } else { phi }, w.z)
 }
 
-fn scatter_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    use plot::ScatterPanel;
+fn scatter_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut rng = rng::seeded(0x5CA7);
     let n = 2500;
     let sphere_icdf: Vec<_> = (0..n)
@@ -461,28 +456,22 @@ fn scatter_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let malley: Vec<_> = (0..n)
         .map(|_| xy(cosine_malley(warp::square_point(&mut rng))))
         .collect();
-    let sphere_panel = |title: &str, points| ScatterPanel {
-        title: title.into(),
-        x_label: "phi".into(),
-        y_label: "cos theta".into(),
-        x_range: (0.0, TAU),
-        y_range: (-1.0, 1.0),
-        points,
+    let sphere_panel = |title: &str, points| {
+        Panel::new(title, "φ", "cos θ", vec![Series::dots("", points)])
+            .x_range((0.0, TAU))
+            .y_range((-1.0, 1.0))
     };
-    let disc_panel = |title: &str, points| ScatterPanel {
-        title: title.into(),
-        x_label: "x".into(),
-        y_label: "y".into(),
-        x_range: (-1.05, 1.05),
-        y_range: (-1.05, 1.05),
-        points,
+    let disc_panel = |title: &str, points| {
+        Panel::new(title, "x", "y", vec![Series::dots("", points)])
+            .x_range((-1.05, 1.05))
+            .y_range((-1.05, 1.05))
     };
     let panels = [
         sphere_panel("sphere, inverse CDF (equal-area coordinates)", sphere_icdf),
         sphere_panel("sphere, Gaussian (equal-area coordinates)", sphere_gauss),
         disc_panel("cosine, Malley: (x, y) of the directions", malley),
         disc_panel(
-            "polar map of 24 x 24 stratified samples",
+            "polar map of 24 × 24 stratified samples",
             strata.iter().map(|&u| xy(disc_polar(u))).collect(),
         ),
         disc_panel(
@@ -490,10 +479,10 @@ fn scatter_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             strata.iter().map(|&u| xy(disc_concentric(u))).collect(),
         ),
     ];
-    plot::scatter_png(&panels, 3, 1200, 800)
+    plot::chart(&panels, 2)
 }
 
-fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn histograms_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let bins = 40;
     let histogram = |sample: &dyn Fn(&mut Rng) -> f64| {
@@ -514,41 +503,35 @@ fn histograms_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let cosine = histogram(&|r| cosine_malley(warp::square_point(r)).z);
     let uniform =
         histogram(&|r| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z).z);
+    let bars = |label: &str, points| Series {
+        label: label.into(),
+        points,
+        mark: Mark::Bars,
+    };
     let panels = [
-        Panel {
-            title: format!("cos theta of {n} cosine-weighted samples"),
-            x_label: "cos theta".into(),
-            y_label: "density".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: vec![
-                Series {
-                    label: "histogram (Malley)".into(),
-                    points: cosine,
-                },
-                Series {
-                    label: "pdf 2 cos theta".into(),
-                    points: vec![(0.0, 0.0), (1.0, 2.0)],
-                },
+        Panel::new(
+            format!("cos θ of {n} cosine-weighted samples"),
+            "cos θ",
+            "density",
+            vec![
+                bars("histogram (Malley)", cosine),
+                Series::line("pdf 2 cos θ", vec![(0.0, 0.0), (1.0, 2.0)]),
             ],
-        },
-        Panel {
-            title: format!("cos theta of {n} uniform hemisphere samples"),
-            x_label: "cos theta".into(),
-            y_label: "density".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: vec![
-                Series {
-                    label: "histogram (flipped inverse CDF)".into(),
-                    points: uniform,
-                },
-                Series {
-                    label: "pdf 1".into(),
-                    points: vec![(0.0, 1.0), (1.0, 1.0)],
-                },
+        )
+        .x_range((0.0, 1.0))
+        .legend(Legend::UpperLeft),
+        Panel::new(
+            format!("cos θ of {n} uniform hemisphere samples"),
+            "cos θ",
+            "density",
+            vec![
+                bars("histogram (flipped inverse CDF)", uniform),
+                Series::line("pdf 1", vec![(0.0, 1.0), (1.0, 1.0)]),
             ],
-        },
+        )
+        .x_range((0.0, 1.0))
+        .y_range((0.0, 1.5))
+        .legend(Legend::UpperLeft),
     ];
-    plot::line_chart_png(&panels, 1100, 420)
+    plot::chart(&panels, 2)
 }

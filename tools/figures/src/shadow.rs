@@ -6,7 +6,7 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::warp::square_point;
 use raylemma::rng;
 use raylemma::stats::ttest::Summary;
@@ -24,9 +24,9 @@ pub fn outputs() -> Vec<Output> {
             make: strategies_md,
         },
         Output {
-            file: "shadow_convergence.png",
+            file: "shadow_convergence.svg",
             what: "error against time for three strategies",
-            make: convergence_png,
+            make: convergence_svg,
         },
         Output {
             file: "shadow_sphere.md",
@@ -115,33 +115,37 @@ fn strategies_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn convergence_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn convergence_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut panels = Vec::new();
     for (label, side) in SIDES {
         let rows = measure(&square_light(side)?, settings);
         let series = rows
             .into_iter()
-            .map(|(name, exact, var, ns)| Series {
-                label: name.to_string(),
-                // n independent samples: relative RMS error sqrt(var / n) / E after n * ns.
-                points: (0..=16)
-                    .map(|k| {
-                        let n = 2f64.powi(k);
-                        (n * ns / 1e3, (var / n).sqrt() / exact)
-                    })
-                    .collect(),
+            .map(|(name, exact, var, ns)| {
+                Series::line(
+                    name,
+                    // n independent samples: relative RMS error sqrt(var / n) / E after n * ns.
+                    (0..=16)
+                        .map(|k| {
+                            let n = 2f64.powi(k);
+                            (n * ns / 1e3, (var / n).sqrt() / exact)
+                        })
+                        .collect(),
+                )
             })
             .collect();
-        panels.push(Panel {
-            title: format!("{label} light"),
-            x_label: "time per estimate (µs)".into(),
-            y_label: "relative RMS error".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series,
-        });
+        panels.push(
+            Panel::new(
+                format!("{label} light"),
+                "time per estimate (µs)",
+                "relative RMS error",
+                series,
+            )
+            .log_x()
+            .log_y(),
+        );
     }
-    plot::line_chart_png(&panels, 1200, 480)
+    plot::chart(&panels, 2)
 }
 
 fn sphere_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {

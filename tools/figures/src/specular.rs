@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Settings};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::optics::specular::*;
 use raylemma::rng;
 use raylemma::stats::ttest::Summary;
@@ -14,9 +14,9 @@ use raylemma::stats::ttest::Summary;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "specular_lobe.png",
+            file: "specular_lobe.svg",
             what: "narrow lobe against angle",
-            make: lobe_png,
+            make: lobe_svg,
         },
         Output {
             file: "specular_furnace.md",
@@ -41,7 +41,7 @@ fn lobe_mean(kappa: f64, theta: f64, divide: bool, n: usize) -> f64 {
         / n as f64
 }
 
-fn lobe_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn lobe_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 2_000 } else { 20_000 };
     let angles: Vec<f64> = (0..=44).map(|k| f64::from(k) * 2.0).collect();
     let mut series = Vec::new();
@@ -64,17 +64,15 @@ fn lobe_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             .iter()
             .map(|&deg| (deg, lobe_mean(kappa, deg.to_radians(), divide, n)))
             .collect();
-        series.push(Series { label, points });
+        series.push(Series::line(label, points));
     }
-    let panels = [Panel {
-        title: "reflected radiance of a narrow lobe in a white furnace (rho = 1)".into(),
-        x_label: "angle of the outgoing direction from the normal (degrees)".into(),
-        y_label: "reflected radiance".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
+    let panels = [Panel::new(
+        "reflected radiance of a narrow lobe in a white furnace (ρ = 1)",
+        "angle of the outgoing direction from the normal (degrees)",
+        "reflected radiance",
         series,
-    }];
-    plot::line_chart_png(&panels, 900, 480)
+    )];
+    plot::chart(&panels, 1)
 }
 
 fn furnace_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {

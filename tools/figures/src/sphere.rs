@@ -6,7 +6,7 @@ use std::hint::black_box;
 use glam::DVec3;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
 use raylemma::check::{Options, Real};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
@@ -20,9 +20,9 @@ use raylemma::workload::timing_rays;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "sphere_far_error.png",
+            file: "sphere_far_error.svg",
             what: "error against distance",
-            make: far_error_png,
+            make: far_error_svg,
         },
         Output {
             file: "sphere_far_table.md",
@@ -68,7 +68,7 @@ fn far_options(settings: &Settings) -> Options {
     }
 }
 
-fn far_error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn far_error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let options = far_options(settings);
     let forms: [(&str, &dyn Fn(f64) -> FarRow); 2] = [
         ("textbook (seed)", &|d| {
@@ -83,37 +83,35 @@ fn far_error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let mut wrong = Vec::new();
     for (label, run) in forms {
         let rows: Vec<FarRow> = distances.iter().map(|&d| run(d)).collect();
-        error.push(Series {
-            label: label.into(),
-            points: rows.iter().map(|r| (r.distance, r.worst_t_error)).collect(),
-        });
-        wrong.push(Series {
-            label: label.into(),
-            points: rows
-                .iter()
+        error.push(Series::line(
+            label,
+            rows.iter().map(|r| (r.distance, r.worst_t_error)).collect(),
+        ));
+        wrong.push(Series::line(
+            label,
+            rows.iter()
                 .map(|r| (r.distance, 100.0 * r.wrong as f64 / r.rays as f64))
                 .collect(),
-        });
+        ));
     }
     let panels = [
-        Panel {
-            title: "worst error of t (f32, rays within 0.9 r of the centre)".into(),
-            x_label: "distance to the sphere (radii)".into(),
-            y_label: "|t - t*| (radii)".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series: error,
-        },
-        Panel {
-            title: "wrong hit/miss answers (f32)".into(),
-            x_label: "distance to the sphere (radii)".into(),
-            y_label: "% of rays".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Linear,
-            series: wrong,
-        },
+        Panel::new(
+            "worst error of t (f32, rays within 0.9 r of the centre)",
+            "distance to the sphere (radii)",
+            "|t − t*| (radii)",
+            error,
+        )
+        .log_x()
+        .log_y(),
+        Panel::new(
+            "wrong hit/miss answers (f32)",
+            "distance to the sphere (radii)",
+            "% of rays",
+            wrong,
+        )
+        .log_x(),
     ];
-    plot::line_chart_png(&panels, 1200, 480)
+    plot::chart(&panels, 2)
 }
 
 fn far_table_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {

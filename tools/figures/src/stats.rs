@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 use std::sync::OnceLock;
 
 use super::{Output, Settings};
-use crate::plot::{self, BoxError};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::stats::null::{NULL_CASES, NullCase};
 use raylemma::stats::{ks, test_alpha};
 
@@ -18,9 +18,9 @@ use raylemma::stats::{ks, test_alpha};
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "stats_pvalues.png",
+            file: "stats_pvalues.svg",
             what: "p-values under the null",
-            make: pvalues_png,
+            make: pvalues_svg,
         },
         Output {
             file: "stats_calibration.md",
@@ -56,73 +56,54 @@ fn calibration(settings: &Settings) -> Result<&'static Calibration, BoxError> {
 
 const BINS: usize = 20;
 
-fn pvalues_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    use plotters::prelude::*;
+fn pvalues_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let cal = calibration(settings)?;
-    let (width, height) = (1200u32, 720u32);
-    plot::register_embedded_font();
-    let mut buffer = vec![255u8; (width * height * 3) as usize];
     // Under the null each bin holds Binomial(runs, 1/BINS) p-values: density 1 ± 2 sd.
     let share = 1.0 / BINS as f64;
     let sd = (share * (1.0 - share) / cal.runs as f64).sqrt() / share;
-    {
-        let root = BitMapBackend::with_buffer(&mut buffer, (width, height)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let root = root.titled(
-            &format!(
-                "p-values under a true null hypothesis, {} runs each (uniform if calibrated)",
-                cal.runs
-            ),
-            ("sans-serif", 20),
-        )?;
-        for ((case, ps), area) in cal.p_values.iter().zip(root.split_evenly((2, 3)).iter()) {
+    let edges: Vec<f64> = (0..=BINS).map(|i| i as f64 * share).collect();
+    let panels: Vec<Panel> = cal
+        .p_values
+        .iter()
+        .map(|(case, ps)| {
             let mut counts = [0usize; BINS];
             for &p in ps {
                 counts[((p * BINS as f64) as usize).min(BINS - 1)] += 1;
             }
-            let density = |c: usize| c as f64 / (ps.len() as f64 * share);
-            let top = counts
+            let density: Vec<f64> = counts
                 .iter()
-                .map(|&c| density(c))
-                .fold(1.0 + 3.0 * sd, f64::max)
-                * 1.1;
-            let mut chart = ChartBuilder::on(area)
-                .caption(case.test(), ("sans-serif", 17))
-                .margin(10)
-                .x_label_area_size(36)
-                .y_label_area_size(46)
-                .build_cartesian_2d(0f64..1f64, 0f64..top)?;
-            chart
-                .configure_mesh()
-                .disable_x_mesh()
-                .light_line_style(TRANSPARENT)
-                .x_desc("p-value")
-                .y_desc("density")
-                .label_style(("sans-serif", 12))
-                .axis_desc_style(("sans-serif", 13))
-                .x_label_formatter(&|v| plot::format_tick(*v))
-                .y_label_formatter(&|v| plot::format_tick(*v))
-                .draw()?;
-            let RGBColor(r, g, b) = plot::PALETTE[0];
-            let light = |c: u8| ((u16::from(c) + 2 * 255) / 3) as u8;
-            let fill = RGBColor(light(r), light(g), light(b));
-            for style in [fill.filled(), plot::PALETTE[0].stroke_width(1)] {
-                chart.draw_series(counts.iter().enumerate().map(|(i, &c)| {
-                    let x0 = i as f64 * share;
-                    Rectangle::new([(x0, 0.0), (x0 + share, density(c))], style)
-                }))?;
-            }
-            for (y, style) in [
-                (1.0, BLACK.stroke_width(2)),
-                (1.0 - 2.0 * sd, plot::PALETTE[1].stroke_width(1)),
-                (1.0 + 2.0 * sd, plot::PALETTE[1].stroke_width(1)),
-            ] {
-                chart.draw_series(DashedLineSeries::new(vec![(0.0, y), (1.0, y)], 6, 4, style))?;
-            }
-        }
-        root.present()?;
-    }
-    plot::encode_png(width, height, buffer)
+                .map(|&c| c as f64 / (ps.len() as f64 * share))
+                .collect();
+            let top = density.iter().copied().fold(1.0 + 3.0 * sd, f64::max) * 1.1;
+            let (lo, hi) = (1.0 - 2.0 * sd, 1.0 + 2.0 * sd);
+            Panel::new(
+                case.test(),
+                "p-value",
+                "density",
+                vec![
+                    Series::bars(
+                        format!("p-values of {} runs, {BINS} bins", cal.runs),
+                        &edges,
+                        &density,
+                    ),
+                    Series::line("uniform density 1", vec![(0.0, 1.0), (1.0, 1.0)]),
+                    Series::line(
+                        "1 ± 2 sd of a bin under the null",
+                        vec![
+                            (0.0, lo),
+                            (1.0, lo),
+                            (f64::NAN, f64::NAN),
+                            (0.0, hi),
+                            (1.0, hi),
+                        ],
+                    ),
+                ],
+            )
+            .x_range((0.0, 1.0))
+            .y_range((0.0, top))
+        })
+        .collect();
+    plot::chart(&panels, 2)
 }
 
 fn percent(rejected: usize, runs: u64) -> String {

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use rand::RngExt;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError};
+use crate::plot::{self, BoxError, Mark, Panel, Series};
 use raylemma::rng;
 use raylemma::sampling::tabulated::{
     ONE_MINUS_EPSILON, Piecewise1D, emission_table, emission_values, segment_cdf, segment_inverse,
@@ -17,9 +17,9 @@ use raylemma::workload::{TIMING_BINS, timing_tables};
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "tabulated_histogram.png",
+            file: "tabulated_histogram.svg",
             what: "samples of an emission spectrum against its pdf",
-            make: histogram_png,
+            make: histogram_svg,
         },
         Output {
             file: "tabulated_checks.md",
@@ -39,8 +39,7 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn histogram_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
-    use plotters::prelude::*;
+fn histogram_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let table = emission_table();
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
     let mut counts = vec![0u64; table.bins()];
@@ -57,52 +56,40 @@ fn histogram_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         .collect();
     let pdf: Vec<f64> = (0..table.bins()).map(|i| table.pdf(edges[i])).collect();
     let steps = |v: &[f64], floor: f64| -> Vec<(f64, f64)> {
-        v.iter()
-            .enumerate()
-            .flat_map(|(i, &y)| [(edges[i], y.max(floor)), (edges[i + 1], y.max(floor))])
-            .collect()
+        plot::steps(edges, &v.iter().map(|y| y.max(floor)).collect::<Vec<_>>())
     };
-    let (width, height) = (1200u32, 480u32);
-    plot::draw_png(width, height, |root| {
-        let areas = root.split_evenly((1, 2));
-        let ymax = pdf.iter().copied().fold(0.0, f64::max) * 1.1;
-        let (blue, orange) = (plot::PALETTE[0], plot::PALETTE[1]);
-        let title = format!("histogram of {n} samples (orange) and the pdf (blue)");
-        macro_rules! panel {
-            ($area:expr, $yrange:expr, $floor:expr, $title:expr) => {{
-                let mut chart = ChartBuilder::on($area)
-                    .caption($title, ("sans-serif", 18))
-                    .margin(12)
-                    .x_label_area_size(40)
-                    .y_label_area_size(70)
-                    .build_cartesian_2d(380f64..780f64, $yrange)?;
-                chart
-                    .configure_mesh()
-                    .x_desc("wavelength (nm)")
-                    .y_desc("density (1/nm)")
-                    .label_style(("sans-serif", 13))
-                    .axis_desc_style(("sans-serif", 15))
-                    .x_label_formatter(&|v| plot::format_tick(*v))
-                    .y_label_formatter(&|v| plot::format_tick(*v))
-                    .draw()?;
-                chart.draw_series(estimate.iter().enumerate().map(|(i, &y)| {
-                    Rectangle::new(
-                        [(edges[i], $floor), (edges[i + 1], y.max($floor))],
-                        orange.mix(0.6).filled(),
-                    )
-                }))?;
-                chart.draw_series(LineSeries::new(steps(&pdf, $floor), blue.stroke_width(1)))?;
-            }};
-        }
-        panel!(&areas[0], 0f64..ymax, 0.0, title.as_str());
-        panel!(
-            &areas[1],
-            (1e-5f64..1.0).log_scale(),
-            1e-5,
-            "the same, logarithmic (zero bins at the floor)"
-        );
-        Ok(())
-    })
+    let ymax = pdf.iter().copied().fold(0.0, f64::max) * 1.1;
+    let floor = 1e-5;
+    let series = |floor: f64| {
+        vec![
+            Series {
+                label: format!("histogram of {n} samples"),
+                points: steps(&estimate, floor),
+                mark: Mark::Bars,
+            },
+            Series::line("the pdf", steps(&pdf, floor)),
+        ]
+    };
+    let panels = [
+        Panel::new(
+            "histogram and pdf",
+            "wavelength (nm)",
+            "density (1/nm)",
+            series(0.0),
+        )
+        .x_range((380.0, 780.0))
+        .y_range((0.0, ymax)),
+        Panel::new(
+            "the same, logarithmic (zero bins at the floor)",
+            "wavelength (nm)",
+            "density (1/nm)",
+            series(floor),
+        )
+        .log_y()
+        .x_range((380.0, 780.0))
+        .y_range((floor, 1.0)),
+    ];
+    plot::chart(&panels, 2)
 }
 
 /// KS and chi-squared (one cell per bin) of `xs` against `table`: the KS p-value, and

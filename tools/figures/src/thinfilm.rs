@@ -6,8 +6,8 @@ use num_complex::Complex64;
 use plotters::prelude::*;
 
 use super::{Output, Settings};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
-use crate::plot::{Legend, ranged_chart_png};
+use crate::plot::Legend;
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::optics::thinfilm::{
     Film, airy_r, cos_theta, film_colour, interface, phase, quarter_wave_reflectance,
     seed_reflectance,
@@ -18,9 +18,9 @@ use raylemma::spectral::display;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "thinfilm_spectra.png",
+            file: "thinfilm_spectra.svg",
             what: "reflectance against wavelength",
-            make: spectra_png,
+            make: spectra_svg,
         },
         Output {
             file: "thinfilm_map.png",
@@ -33,9 +33,9 @@ pub fn outputs() -> Vec<Output> {
             make: colours_png,
         },
         Output {
-            file: "thinfilm_angle.png",
+            file: "thinfilm_angle.svg",
             what: "s, p and unpolarised reflectance against angle",
-            make: angle_png,
+            make: angle_svg,
         },
         Output {
             file: "thinfilm_seed.md",
@@ -59,27 +59,29 @@ fn film(n: (f64, f64, f64), d: f64) -> Film {
     Film::new(n.0, n.1, n.2, d)
 }
 
-fn spectra_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn spectra_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let thicknesses = [100.0, 250.0, 400.0, 800.0];
-    let panel = |title: &str, n: (f64, f64, f64)| Panel {
-        title: title.into(),
-        x_label: "wavelength (nm)".into(),
-        y_label: "reflectance (normal incidence)".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: thicknesses
-            .iter()
-            .map(|&d| Series {
-                label: format!("d = {d:.0} nm"),
-                points: (380..=780)
-                    .step_by(4)
-                    .map(|l| {
-                        let l = f64::from(l);
-                        (l, film(n, d).reflectance(l, 0.0))
-                    })
-                    .collect(),
-            })
-            .collect(),
+    let panel = |title: &str, n: (f64, f64, f64)| {
+        Panel::new(
+            title,
+            "wavelength (nm)",
+            "reflectance (normal incidence)",
+            thicknesses
+                .iter()
+                .map(|&d| {
+                    Series::line(
+                        format!("d = {d:.0} nm"),
+                        (380..=780)
+                            .step_by(4)
+                            .map(|l| {
+                                let l = f64::from(l);
+                                (l, film(n, d).reflectance(l, 0.0))
+                            })
+                            .collect(),
+                    )
+                })
+                .collect(),
+        )
     };
     let panels = [
         (
@@ -95,7 +97,7 @@ fn spectra_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             Legend::UpperLeft,
         ),
     ];
-    ranged_chart_png(&panels, 1200, 480)
+    plot::ranged_chart(&panels)
 }
 
 /// Viridis, by linear interpolation between five of its colours; `t` in `[0, 1]`.
@@ -184,20 +186,20 @@ fn map_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     })
 }
 
-fn angle_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn angle_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     let angles: Vec<f64> = (0..=180).map(|k| f64::from(k) * 0.5).collect();
     let panel = |title: String, f: Film| {
-        let curve = |label: &str, pick: &dyn Fn(f64) -> f64| Series {
-            label: label.into(),
-            points: angles.iter().map(|&a| (a, pick(a.to_radians()))).collect(),
+        let curve = |label: &str, pick: &dyn Fn(f64) -> f64| {
+            Series::line(
+                label,
+                angles.iter().map(|&a| (a, pick(a.to_radians()))).collect(),
+            )
         };
-        Panel {
+        Panel::new(
             title,
-            x_label: "angle of incidence (degrees)".into(),
-            y_label: "reflectance at 550 nm".into(),
-            x_scale: Scale::Linear,
-            y_scale: Scale::Linear,
-            series: vec![
+            "angle of incidence (degrees)",
+            "reflectance at 550 nm",
+            vec![
                 curve("s", &|t| f.response(550.0, t).reflectance_s),
                 curve("p", &|t| f.response(550.0, t).reflectance_p),
                 curve("unpolarised", &|t| f.reflectance(550.0, t)),
@@ -206,7 +208,7 @@ fn angle_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
                     if r.is_nan() { r } else { r.min(1.05) }
                 }),
             ],
-        }
+        )
     };
     let panels = [
         (
@@ -225,7 +227,7 @@ fn angle_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             Legend::LowerRight,
         ),
     ];
-    ranged_chart_png(&panels, 1200, 480)
+    plot::ranged_chart(&panels)
 }
 
 fn seed_md(_: &Settings) -> Result<Vec<u8>, BoxError> {

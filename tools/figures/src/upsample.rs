@@ -5,8 +5,8 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use super::{Output, Settings, timing};
-use crate::plot::{BoxError, Panel, Scale, Series};
-use crate::plot::{Legend, ranged_chart_png};
+use crate::plot::Legend;
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::spectral::display::delta_e;
 use raylemma::spectral::upsample::*;
@@ -16,9 +16,9 @@ use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "upsample_spectra.png",
+            file: "upsample_spectra.svg",
             what: "upsampled reflectances of primaries, everyday colours and greys",
-            make: spectra_png,
+            make: spectra_svg,
         },
         Output {
             file: "upsample_roundtrip.md",
@@ -35,25 +35,23 @@ pub fn outputs() -> Vec<Output> {
 
 fn curve(label: &str, rgb: DVec3) -> Result<Series, BoxError> {
     let fit = upsample(rgb)?;
-    Ok(Series {
-        label: format!("{label} ({}, {}, {})", rgb.x, rgb.y, rgb.z),
-        points: (0..=94)
+    Ok(Series::line(
+        format!("{label} ({}, {}, {})", rgb.x, rgb.y, rgb.z),
+        (0..=94)
             .map(|i| {
                 let nm = LAMBDA_MIN + 5.0 * f64::from(i);
                 (nm, fit.reflectance.eval(nm))
             })
             .collect(),
-    })
+    ))
 }
 
-fn spectra_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
-    let corners = Panel {
-        title: "gamut corners (linear sRGB)".into(),
-        x_label: "wavelength, nm".into(),
-        y_label: "reflectance".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: vec![
+fn spectra_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    let corners = Panel::new(
+        "gamut corners (linear sRGB)",
+        "wavelength, nm",
+        "reflectance",
+        vec![
             curve("red", DVec3::new(1.0, 0.0, 0.0))?,
             curve("green", DVec3::new(0.0, 1.0, 0.0))?,
             curve("blue", DVec3::new(0.0, 0.0, 1.0))?,
@@ -61,14 +59,12 @@ fn spectra_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             curve("cyan", DVec3::new(0.0, 1.0, 1.0))?,
             curve("magenta", DVec3::new(1.0, 0.0, 1.0))?,
         ],
-    };
-    let everyday = Panel {
-        title: "everyday colours and greys (linear sRGB)".into(),
-        x_label: "wavelength, nm".into(),
-        y_label: "reflectance".into(),
-        x_scale: Scale::Linear,
-        y_scale: Scale::Linear,
-        series: vec![
+    );
+    let everyday = Panel::new(
+        "everyday colours and greys (linear sRGB)",
+        "wavelength, nm",
+        "reflectance",
+        vec![
             curve("brick", DVec3::new(0.4, 0.08, 0.05))?,
             curve("leaf", DVec3::new(0.1, 0.3, 0.05))?,
             curve("sky", DVec3::new(0.2, 0.3, 0.6))?,
@@ -76,16 +72,12 @@ fn spectra_png(_: &Settings) -> Result<Vec<u8>, BoxError> {
             curve("grey", DVec3::splat(0.18))?,
             curve("grey", DVec3::splat(0.5))?,
         ],
-    };
+    );
     let range = (LAMBDA_MIN, LAMBDA_MAX);
-    ranged_chart_png(
-        &[
-            (corners, range, (-0.02, 1.02), Legend::UpperRight),
-            (everyday, range, (-0.02, 1.02), Legend::UpperRight),
-        ],
-        1200,
-        480,
-    )
+    plot::ranged_chart(&[
+        (corners, range, (-0.02, 1.02), Legend::Below),
+        (everyday, range, (-0.02, 1.02), Legend::Below),
+    ])
 }
 
 fn grid() -> Vec<DVec3> {

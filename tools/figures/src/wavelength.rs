@@ -7,7 +7,7 @@ use std::hint::black_box;
 use glam::DVec3;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Scale, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::spectral::cie;
 use raylemma::spectral::spectrum::{Spectrum, builtin};
@@ -20,9 +20,9 @@ use raylemma::stats::ttest::Summary;
 pub fn outputs() -> Vec<Output> {
     vec![
         Output {
-            file: "wavelength_error.png",
+            file: "wavelength_error.svg",
             what: "RMS relative error of XYZ against time per wavelength strategy",
-            make: error_png,
+            make: error_svg,
         },
         Output {
             file: "wavelength_efficiency.md",
@@ -100,7 +100,7 @@ fn relative_variance(s: Strategy, spectrum: &Spectrum, exact: DVec3, n: usize) -
     sums.iter().map(Summary::variance).sum::<f64>() / 3.0
 }
 
-fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let (repeats, max_pow, reps) = if settings.quick {
         (60, 8, 3)
     } else {
@@ -130,21 +130,20 @@ fn error_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
                     (n as f64 * ns, mse.sqrt())
                 })
                 .collect();
-            series.push(Series {
-                label: s.name().into(),
-                points,
-            });
+            series.push(Series::measured(s.name(), points));
         }
-        panels.push(Panel {
-            title: format!("{name}: XYZ of the lamp"),
-            x_label: "time per estimate, ns".into(),
-            y_label: "RMS relative error".into(),
-            x_scale: Scale::Log,
-            y_scale: Scale::Log,
-            series,
-        });
+        panels.push(
+            Panel::new(
+                format!("{name}: XYZ of the lamp"),
+                "time per estimate (ns)",
+                "RMS relative error",
+                series,
+            )
+            .log_x()
+            .log_y(),
+        );
     }
-    plot::line_chart_png(&panels, 1500, 520)
+    plot::chart(&panels, 2)
 }
 
 fn efficiency_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
