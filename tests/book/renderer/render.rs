@@ -321,6 +321,63 @@ fn rays_without_an_offset_do_hit_their_own_surface() {
     );
 }
 
+/// Whether `offset` moves points by the chapter's amount: along the normal, to the side
+/// `dir` points to, by `1e-9 (1 + max |p_i|)` within a factor of ten either way, at scales
+/// from the origin to a million units (the self-hit test above cannot see a move that is
+/// too small but still escapes the rounding, or one that vanishes at the origin).
+fn offset_has_the_stated_size(offset: impl Fn(DVec3, DVec3, DVec3) -> DVec3) -> Result<(), String> {
+    let n = DVec3::new(2.0, -3.0, 6.0) / 7.0;
+    for scale in [0.0, 1e-3, 1.0, 555.0, 1e6] {
+        let p = DVec3::new(0.3, -1.0, 0.7) * scale;
+        let stated = 1e-9 * (1.0 + p.abs().max_element());
+        for (dir, side) in [(n + DVec3::X * 0.1, 1.0), (-n + DVec3::Y * 0.1, -1.0)] {
+            let moved = offset(p, n, dir.normalize()) - p;
+            let along = side * moved.dot(n);
+            let across = (moved - moved.dot(n) * n).length();
+            let ok = along >= 0.1 * stated
+                && along <= 10.0 * stated
+                && across <= 1e-3 * stated + 1e-12 * scale;
+            if !ok {
+                return Err(format!(
+                    "p = {p}, side {side}: moved {along:e} along the normal and {across:e} across it; stated {stated:e}"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn offsets_have_the_stated_size_on_the_stated_side() {
+    assert_eq!(offset_has_the_stated_size(offset_origin), Ok(()));
+}
+
+#[test]
+fn offsets_of_the_wrong_size_are_rejected() {
+    // Planted twins: divided by the scale instead of multiplied; proportional to the scale
+    // alone (nothing at the origin); always to the front.
+    let small = |p: DVec3, n: DVec3, d: DVec3| {
+        let eps = 1e-9 / (1.0 + p.abs().max_element());
+        if d.dot(n) >= 0.0 {
+            p + eps * n
+        } else {
+            p - eps * n
+        }
+    };
+    let relative_only = |p: DVec3, n: DVec3, d: DVec3| {
+        let eps = 1e-9 * p.abs().max_element();
+        if d.dot(n) >= 0.0 {
+            p + eps * n
+        } else {
+            p - eps * n
+        }
+    };
+    let front = |p: DVec3, n: DVec3, _: DVec3| p + 1e-9 * (1.0 + p.abs().max_element()) * n;
+    assert!(offset_has_the_stated_size(small).is_err());
+    assert!(offset_has_the_stated_size(relative_only).is_err());
+    assert!(offset_has_the_stated_size(front).is_err());
+}
+
 #[test]
 fn welford_matches_the_two_pass_variance() {
     let xs: Vec<f64> = (0..1000).map(|i| 1e6 + f64::from(i % 7) * 0.25).collect();
