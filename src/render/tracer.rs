@@ -236,6 +236,14 @@ impl<'a> Tracer<'a> {
         }
     }
 
+    /// How many of the scene's parallelograms take the axis-aligned form ([`AxisQuad`]), of
+    /// how many: a box's walls should all take it (the renderer's tests check that the
+    /// `cornell` box's do, since the general form gives the same hits, only slower).
+    pub fn axis_aligned_quads(&self) -> (usize, usize) {
+        let n = self.axis_quads.len();
+        (n, n + self.quads.n.len())
+    }
+
     /// The reflectance of material `m` (a Lambertian one) at the wavelengths `nm`: its
     /// spectrum's values, read from the dense form where it has one.
     #[inline]
