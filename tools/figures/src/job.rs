@@ -12,7 +12,7 @@ use raylemma::output::{self, FileSet};
 use crate::plot::BoxError;
 use crate::{
     colour, compare, coursework, dispersion, display, emission, export, external, frame, fresnel,
-    lambert, mitsuba, reflect, roulette, shadow, sampling, specular, sphere, stats, tabulated,
+    lambert, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats, tabulated,
     testing, thinfilm, upsample, wavelength,
 };
 
