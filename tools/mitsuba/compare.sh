@@ -67,7 +67,9 @@ print("`raylemma compare` of the two images (exit status "
       f"{verdict}: {'they agree' if verdict == 0 else 'they differ' if verdict == 1 else 'error'}):")
 print()
 print("```text")
-print(open(f"{work}/compare.txt").read().rstrip())
+# The difference image is copied into figures/ below: name it there, not in the work folder.
+report = open(f"{work}/compare.txt").read().rstrip()
+print(report.replace(f"{work}/diff.png", "figures/mitsuba_cornell_diff.png"))
 print("```")
 PY
 cp "$work/mitsuba_cornell.md" "$root/figures/mitsuba_cornell.md"

@@ -16,7 +16,8 @@
 //!
 //! - a **cell** is `"ROW" "COLUMN"`: the row whose first cell is `ROW` (with ` & ` between
 //!   parts, `"cornell & 256"`, the row whose first cell is `cornell` and another cell `256`),
-//!   and the column whose header is `COLUMN` (or the one header that starts with it). Cells
+//!   and the column whose header is `COLUMN` (or the one header that starts with it; `"#N"`
+//!   is the N-th column from 1, for a header that is not unique). Cells
 //!   are compared without their backticks and bold marks. `OTHER.md "ROW" "COLUMN"` reads a
 //!   cell of another file.
 //! - `text("A", "B", …)` is the number that follows `B` after the first `A` in the file's
@@ -1004,10 +1005,10 @@ impl Context<'_> {
         let (source, k) = self.table(file)?;
         let table = &source.tables[k];
         let all: Vec<String> = match axis {
-            Axis::Row => table
-                .rows
-                .iter()
-                .map(|r| r.first().cloned().unwrap_or_default())
+            // A row is visited by a name that finds it alone: its first cell, with as many
+            // of its other cells (`"a & b"`) as it takes when the first is not unique.
+            Axis::Row => (0..table.rows.len())
+                .map(|i| unique_row_name(table, i))
                 .collect(),
             Axis::Column => table.header.iter().skip(1).cloned().collect(),
         };
@@ -1272,7 +1273,32 @@ fn find_row(table: &Table, name: &str) -> Result<usize, String> {
     }
 }
 
+/// The shortest `"first & other & …"` name that [`find_row`] resolves to row `i` alone.
+fn unique_row_name(table: &Table, i: usize) -> String {
+    let cells = &table.rows[i];
+    let mut name = cells.first().cloned().unwrap_or_default();
+    for extra in cells.iter().skip(1) {
+        if find_row(table, &name) == Ok(i) {
+            break;
+        }
+        if !extra.is_empty() && !extra.contains(" & ") {
+            name = format!("{name} & {extra}");
+        }
+    }
+    name
+}
+
 fn find_column(table: &Table, name: &str) -> Result<usize, String> {
+    if let Some(n) = name.strip_prefix('#').and_then(|n| n.parse::<usize>().ok()) {
+        return if (1..=table.header.len()).contains(&n) {
+            Ok(n - 1)
+        } else {
+            Err(format!(
+                "no column #{n}: the table has {}",
+                table.header.len()
+            ))
+        };
+    }
     let want = normal(name);
     if let Some(i) = table.header.iter().position(|h| normal(h) == want) {
         return Ok(i);
@@ -1585,6 +1611,11 @@ mod tests {
             value(&mut t, "s.md \"cosine, Malley\" \"worst\"").unwrap(),
             "n/a (not a warp)"
         );
+        assert_eq!(
+            value(&mut t, "s.md \"cosine, Malley\" \"#3\"").unwrap(),
+            "n/a (not a warp)"
+        );
+        assert!(value(&mut t, "s.md \"cosine, Malley\" \"#4\"").is_err());
         // Computed values are formatted.
         assert_eq!(
             value(&mut t, "s.md \"cosine, Malley\" \"ns per sample\" / \"cosine, seed Cartesian\" \"ns per sample\" as .2").unwrap(),
@@ -1658,6 +1689,20 @@ mod tests {
         );
         assert!(claim(&mut t, "s.md no row: @ \"ns\" > 50").unwrap());
         assert!(claim(&mut t, "s.md argmax(column \"ns\") == \"cosine, Malley\"").unwrap());
+        // Rows whose first cells repeat are visited by a name that finds each alone.
+        d.write(
+            "dup.md",
+            "| scene | n | x |\n|---|---|---|\n| a | 1 | 5 |\n| a | 2 | 7 |\n| b | 1 | 9 |\n",
+        );
+        assert!(claim(&mut t, "dup.md every row: @ \"x\" >= 5").unwrap());
+        assert_eq!(
+            value(&mut t, "dup.md which row: @ \"x\" > 6").unwrap(),
+            "a & 2 and b"
+        );
+        assert_eq!(
+            value(&mut t, "dup.md (count row: @ \"x\" > 6) + 1 as int").unwrap(),
+            "3"
+        );
     }
 
     #[test]
