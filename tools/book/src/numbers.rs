@@ -325,7 +325,7 @@ pub fn leading_number(s: &str) -> Option<f64> {
             return Some(value);
         }
     }
-    let m = NUMBER.find(&s)?;
+    let m = NUMBER.find(s)?;
     m.as_str().replace(' ', "").parse().ok()
 }
 

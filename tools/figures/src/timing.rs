@@ -107,7 +107,7 @@ fn parse_size_kib(s: &str) -> Option<u64> {
 }
 
 fn show_kib(kib: u64) -> String {
-    if kib >= 1024 && kib % 1024 == 0 {
+    if kib >= 1024 && kib.is_multiple_of(1024) {
         format!("{} MiB", kib / 1024)
     } else {
         format!("{kib} KiB")
@@ -176,10 +176,10 @@ pub fn describe(cpuinfo: &str, caches: &[Cache], max_khz: Option<f64>, threads: 
         "{threads} {}",
         if threads == 1 { "thread" } else { "threads" }
     ));
-    if caches.is_empty() {
-        if let Some(kib) = field("cache size").as_deref().and_then(parse_size_kib) {
-            parts.push(format!("cache {}", show_kib(kib)));
-        }
+    if caches.is_empty()
+        && let Some(kib) = field("cache size").as_deref().and_then(parse_size_kib)
+    {
+        parts.push(format!("cache {}", show_kib(kib)));
     }
     for c in caches {
         parts.push(format!("L{}{} {}", c.level, c.kind, show_kib(c.kib)));
