@@ -85,6 +85,9 @@ def main():
     for k in range(K):
         t0, c0 = time.perf_counter(), time.process_time()
         img = mi.render(scene, spp=per_pass, seed=args.seed + stride * k)
+        # The llvm_* variants evaluate lazily: the render is done only once evaluated.
+        dr.eval(img)
+        dr.sync_thread()
         seconds += time.perf_counter() - t0
         cpu_seconds += time.process_time() - c0
         out = np.array(img, dtype=np.float64)

@@ -60,10 +60,10 @@ static DIRECTIVE: LazyLock<Regex> = LazyLock::new(|| {
 });
 /// A machine's fingerprint in a timing table's caption (`tools/figures/src/timing.rs`).
 static FINGERPRINT: LazyLock<Regex> =
-    LazyLock::new(|| Regex::new(r"fingerprint ([0-9a-f]{8})").expect("valid regex"));
+    LazyLock::new(|| Regex::new(r"fingerprint `?([0-9a-f]{8})").expect("valid regex"));
 /// Captions of timing tables, with or without a fingerprint.
 static TIMED: LazyLock<Regex> = LazyLock::new(|| {
-    Regex::new(r"single thread|worker threads?|fingerprint [0-9a-f]{8}").expect("valid regex")
+    Regex::new(r"single thread|worker threads?|fingerprint `?[0-9a-f]{8}").expect("valid regex")
 });
 static NUMBER: LazyLock<Regex> = LazyLock::new(|| {
     Regex::new(r"^[+-]?(?:\d{1,3}(?: \d{3})+(?:\.\d+)?|\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")

@@ -12,8 +12,8 @@ use raylemma::output::{self, FileSet};
 use crate::plot::BoxError;
 use crate::{
     colour, compare, coursework, dispersion, display, emission, export, external, frame, fresnel,
-    lambert, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats, tabulated,
-    testing, thinfilm, upsample, wavelength,
+    lambert, limit, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats,
+    tabulated, testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -60,6 +60,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(upsample::outputs());
     outputs.extend(compare::outputs());
     outputs.extend(export::outputs());
+    outputs.extend(limit::outputs());
     outputs.extend(mitsuba::outputs());
     outputs.extend(testing::outputs());
     outputs

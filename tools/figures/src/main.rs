@@ -24,6 +24,7 @@ mod external;
 mod frame;
 mod fresnel;
 mod lambert;
+mod limit;
 mod mitsuba;
 mod reflect;
 mod roulette;
