@@ -1255,6 +1255,22 @@ fn find_row(table: &Table, name: &str) -> Result<usize, String> {
         })
         .map(|(i, _)| i)
         .collect();
+    // Else the one row whose first cell starts with the name, as for columns.
+    let hits = if hits.is_empty() && parts.len() == 1 {
+        table
+            .rows
+            .iter()
+            .enumerate()
+            .filter(|(_, cells)| {
+                cells
+                    .first()
+                    .is_some_and(|c| normal(c).starts_with(&parts[0]))
+            })
+            .map(|(i, _)| i)
+            .collect()
+    } else {
+        hits
+    };
     match hits.as_slice() {
         [one] => Ok(*one),
         [] => Err(format!(
@@ -1466,6 +1482,25 @@ pub fn expand(tables: &mut Tables, text: &str) -> (String, Vec<Finding>) {
         }
     }
     out.push_str(&text[last..]);
+    // A directive the pattern did not take (a `}` inside it ends it early) would be left in
+    // the page as text.
+    for (i, _) in text.match_indices("{{#") {
+        let rest = &text[i + 3..];
+        let escaped = i > 0 && text.as_bytes()[i - 1] == b'\\';
+        if !escaped
+            && (rest.starts_with("value") || rest.starts_with("claim"))
+            && !directives(text).iter().any(|d| d.start == i)
+        {
+            findings.push(Finding {
+                line: text[..i].matches('\n').count() + 1,
+                message:
+                    "a {{#value}} or {{#claim}} that is not closed by `}}` before its first `}`: \
+                          no `}` may appear inside one (name a row by the start of its first cell)"
+                        .into(),
+                warning: false,
+            });
+        }
+    }
     (out, findings)
 }
 
@@ -1802,6 +1837,15 @@ mod tests {
         );
         assert_eq!(findings.len(), 1);
         assert_eq!(findings[0].line, 4);
+        let (_, open) = expand(&mut t, "a {{#value s.md \"{x}\" \"ns\"}} b\n");
+        assert!(
+            open.iter().any(|f| f.message.contains("not closed")),
+            "{open:?}"
+        );
+        assert_eq!(
+            value(&mut t, "s.md \"cosine, seed\" \"ns\"").unwrap(),
+            "40.7"
+        );
         assert!(!findings[0].warning);
         let m = &findings[0].message;
         assert!(m.contains("in the sentence: Malley costs {{#value s.md \"cosine, Malley\" \"ns\"}} ns, less than the seed's form."), "{m}");
