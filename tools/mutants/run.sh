@@ -9,8 +9,7 @@
 #     (every N-th mutant of the file, starting at the K-th), each mutant tested with the
 #     file's own chapter's tests (`cargo test --test book CHAPTER::`): what a student who
 #     changed that module would run. The full run (N = 1) is days on 2 cores.
-#   * the renderer (src/render/: integrator, camera, scene, pixel, image, compare, driver,
-#     files): every mutant, tested with the renderer's tests (`renderer::`).
+#   * the renderer: tools/mutants/render.sh (its own table, figures/mutants_render.md).
 # Mutants are made in place (cargo-mutants --in-place), so that every build after the
 # first is incremental: run it in a clean checkout of its own, never in one you are
 # editing. A timeout counts as caught (the mutant made a test loop). The summary,
@@ -59,11 +58,6 @@ sampled=(
   "src/check/reflect/mod.rs optics::reflect"
   "src/check/fresnel/mod.rs optics::fresnel"
 )
-# complete: every mutant, with the renderer's tests
-complete=(
-  src/render/integrator.rs src/render/camera.rs src/render/scene.rs src/render/pixel.rs
-  src/render/image.rs src/render/compare.rs src/render/driver.rs src/render/files.rs
-)
 mutate() { # name, test filter, cargo-mutants arguments...
   local name="$1" filter="$2"
   shift 2
@@ -77,9 +71,6 @@ for shard in "${shards[@]}"; do
     set -- $entry
     mutate "$(echo "$1" | tr '/' '_').s$shard" "$2::" -f "$1" --shard "$shard/$n"
   done
-done
-for file in "${complete[@]}"; do
-  mutate "$(echo "$file" | tr '/' '_').all" "renderer::" -f "$file"
 done
 python3 "$here/summary.py" "$out" "$n" > "$root/figures/mutants.md"
 cat "$root/figures/mutants.md"

@@ -5,9 +5,12 @@
 //! `figures/` (one rename per file), so a failed run leaves the previous figures intact.
 
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
+
 use raylemma::output::{self, FileSet};
+use raylemma::render::format::fnv1a;
 
 use crate::plot::BoxError;
 use crate::{
@@ -66,6 +69,49 @@ pub fn all() -> Vec<Output> {
     outputs
 }
 
+/// The outputs that take minutes and depend only on the code: remade only when the code
+/// changed since they were made (each ends with an HTML comment, invisible in the book,
+/// naming the [`code_version`] it was made from), or when the file is gone.
+const KEPT_WHILE_CODE_UNCHANGED: [&str; 2] =
+    ["render_compare_calibration.md", "render_test_power.md"];
+
+/// A hash of everything a kept output can depend on: every file of the library's `src/`
+/// and `data/`, the figure job's own `tools/figures/src/`, and `Cargo.lock`.
+///
+/// # Errors
+/// If a file cannot be read.
+fn code_version(root: &Path) -> Result<String, BoxError> {
+    let mut files = Vec::new();
+    let mut stack = vec![
+        root.join("src"),
+        root.join("data"),
+        root.join("tools/figures/src"),
+    ];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).map_err(|e| format!("{}: {e}", d.display()))? {
+            let p = e?.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                files.push(p);
+            }
+        }
+    }
+    files.push(root.join("Cargo.lock"));
+    files.sort();
+    let mut all = Vec::new();
+    for f in &files {
+        all.extend_from_slice(
+            f.strip_prefix(root)
+                .unwrap_or(f)
+                .to_string_lossy()
+                .as_bytes(),
+        );
+        all.extend(std::fs::read(f).map_err(|e| format!("{}: {e}", f.display()))?);
+    }
+    Ok(format!("{:016x}", fnv1a(&all)))
+}
+
 /// Writes the outputs whose file name contains `only` (all if `None`) into `dir`.
 ///
 /// # Errors
@@ -109,12 +155,41 @@ pub fn write_outputs(
             .map_err(|e| e.to_string())?
             .progress_chars("=> "),
     );
+    let say = |line: String| {
+        if bar.is_hidden() {
+            eprintln!("{line}");
+        } else {
+            bar.println(line);
+        }
+    };
+    let version = code_version(&settings.root)?;
     let mut set = FileSet::new();
     for o in outputs {
         bar.set_message(format!("{} ({})", o.file, o.what));
-        let bytes = (o.make)(settings)
+        let path = dir.join(o.file);
+        let marker = format!("<!-- made from code version {version} -->\n");
+        let kept = KEPT_WHILE_CODE_UNCHANGED.contains(&o.file) && !settings.quick;
+        if kept && std::fs::read_to_string(&path).is_ok_and(|t| t.ends_with(&marker)) {
+            say(format!(
+                "    kept    {} (the code it measures is unchanged; delete the file to remake it)",
+                o.file
+            ));
+            bar.inc(1);
+            continue;
+        }
+        let start = Instant::now();
+        let mut bytes = (o.make)(settings)
             .map_err(|e| format!("figure {} ({}) failed: {e}", o.file, o.what))?;
-        set.write(&dir.join(o.file), &bytes)?;
+        if kept {
+            bytes.extend_from_slice(b"\n");
+            bytes.extend_from_slice(marker.as_bytes());
+        }
+        set.write(&path, &bytes)?;
+        say(format!(
+            "  {:>6.1} s  {}",
+            start.elapsed().as_secs_f64(),
+            o.file
+        ));
         bar.inc(1);
     }
     bar.finish_with_message("done");

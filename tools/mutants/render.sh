@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Mutation testing of the path tracer (chapter "Tests of the tests", the renderer's row):
+# cargo-mutants' mutants of the renderer's files, a systematic sample of 1 in N of each
+# file (`--shard K/N`), each tested with the renderer's tests (`cargo test --test book
+# renderer::`). Writes figures/mutants_render.md: per file, mutants tested, caught, missed,
+# timeouts (counted as caught), unviable, the caught share with its 95 % Wilson interval,
+# and every surviving mutant.
+#
+#   tools/mutants/render.sh [N [SHARD...]]     (default N = 8, SHARD = 0)
+#
+# Files: $RENDER_FILES (default: integrator, tracer, camera, pixel, driver). N = 1 is
+# every mutant: some 300 for the default files, hours on 2 cores. Mutants are made in place
+# (--in-place) so that builds are incremental: run it in a clean checkout of its own
+# (git worktree add), never in one you are editing. Results accumulate in $OUT (default
+# ${TMPDIR:-/tmp}/raylemma-mutants-render); a file done before is not redone.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+n="${1:-8}"
+shift || true
+shards=("${@:-0}")
+out="${OUT:-${TMPDIR:-/tmp}/raylemma-mutants-render}"
+read -r -a files <<< "${RENDER_FILES:-src/render/integrator.rs src/render/tracer.rs src/render/camera.rs src/render/pixel.rs src/render/driver.rs}"
+command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
+cd "$root"
+if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
+  echo "render.sh mutates files in place: run it in a clean checkout (git worktree add ...)" >&2
+  exit 2
+fi
+mkdir -p "$out"
+for shard in "${shards[@]}"; do
+  for file in "${files[@]}"; do
+    name="$(echo "$file" | tr '/' '_').s$shard-of-$n"
+    if [ -f "$out/$name/mutants.out/outcomes.json" ]; then echo "== $name: done before"; continue; fi
+    echo "== $file, shard $shard of $n (tests: renderer::)"
+    cargo mutants --in-place --no-shuffle --baseline skip --timeout 300 --build-timeout 900 \
+      -o "$out/$name" -f "$file" --shard "$shard/$n" -C --test=book -- "renderer::" || true
+  done
+done
+python3 - "$out" "$n" "${shards[*]}" > "$root/figures/mutants_render.md" <<'PY'
+import json, math, os, sys
+from collections import defaultdict
+out, n, shards = sys.argv[1], int(sys.argv[2]), sys.argv[3].split()
+counts = defaultdict(lambda: defaultdict(int))
+missed = []
+for d in sorted(os.listdir(out)):
+    p = os.path.join(out, d, "mutants.out", "outcomes.json")
+    if not os.path.exists(p):
+        continue
+    for o in json.load(open(p))["outcomes"]:
+        sc = o.get("scenario")
+        if not isinstance(sc, dict) or "Mutant" not in sc:
+            continue
+        m = sc["Mutant"]
+        counts[m["file"]][o["summary"]] += 1
+        if o["summary"] == "MissedMutant":
+            missed.append(m.get("name") or m["file"])
+def wilson(k, t, z=1.96):
+    if t == 0:
+        return (float("nan"), float("nan"))
+    p = k / t
+    c = (p + z * z / (2 * t)) / (1 + z * z / t)
+    h = z * math.sqrt(p * (1 - p) / t + z * z / (4 * t * t)) / (1 + z * z / t)
+    return (c - h, c + h)
+print("| file | tested | caught | missed | timeouts | unviable | caught share | 95 % interval |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|")
+tot = defaultdict(int)
+for f in sorted(counts):
+    s = counts[f]
+    for k, v in s.items():
+        tot[k] += v
+rows = list(sorted(counts.items())) + [("**all**", tot)]
+for f, s in rows:
+    c, m, t, u = s["CaughtMutant"], s["MissedMutant"], s["Timeout"], s["Unviable"]
+    v = c + m + t
+    lo, hi = wilson(c + t, v)
+    name = f if f.startswith("**") else f"`{f}`"
+    print(f"| {name} | {v} | {c} | {m} | {t} | {u} | {100 * (c + t) / max(v, 1):.0f} % | {100 * lo:.0f}–{100 * hi:.0f} % |")
+print()
+print(f"*cargo-mutants on the path tracer's files: {len(shards)} of every {n} mutants of each file "
+      f"(`--shard K/{n}`, K in {', '.join(shards)}), each tested with `cargo test --test book renderer::`; "
+      f"a timeout counts as caught. Regenerate with `tools/mutants/render.sh {n} {' '.join(shards)}` in a clean checkout.*")
+if missed:
+    print()
+    print("Surviving mutants:")
+    print()
+    for m in missed:
+        print(f"- `{m}`")
+PY
+cat "$root/figures/mutants_render.md"
