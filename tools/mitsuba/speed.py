@@ -14,9 +14,9 @@ and the three channels.
 
 import argparse
 import glob
-import hashlib
 import json
 import os
+import re
 import statistics
 import sys
 
@@ -56,35 +56,10 @@ def process(path):
     return float(wall), int(kib)
 
 
-def machine():
-    """The CPU named precisely enough to tell two machines with one model string apart."""
-    info = {}
-    for line in open("/proc/cpuinfo"):
-        if ":" in line:
-            k, v = (s.strip() for s in line.split(":", 1))
-            info.setdefault(k, v)
-    caches = []
-    base = "/sys/devices/system/cpu/cpu0/cache"
-    for d in sorted(glob.glob(f"{base}/index*")):
-        try:
-            level = open(f"{d}/level").read().strip()
-            kind = open(f"{d}/type").read().strip()
-            size = open(f"{d}/size").read().strip()
-        except OSError:
-            continue
-        tag = {"Data": "d", "Instruction": "i"}.get(kind, "")
-        caches.append(f"L{level}{tag} {size}")
-    flags = set(info.get("flags", "").split())
-    vector = "avx512f" if "avx512f" in flags else "avx2" if "avx2" in flags else "sse2"
-    model = info.get("model name", "unknown CPU")
-    mhz = info.get("cpu MHz", "?")
-    cores = os.cpu_count()
-    key = "|".join([model, str(cores), ",".join(caches), vector, info.get("cpu family", ""),
-                    info.get("model", ""), info.get("stepping", ""), info.get("microcode", "")])
-    fingerprint = hashlib.sha256(key.encode()).hexdigest()[:8]
-    return (f"{model}, {cores} logical cores, {', '.join(caches) or 'caches unknown'}, "
-            f"{float(mhz):.0f} MHz as reported, {vector} (fingerprint `{fingerprint}`)"
-            if mhz != "?" else f"{model}, {cores} cores (fingerprint `{fingerprint}`)")
+def machine(work):
+    """The machine as the figure job names it (`raylemma-figures machine`, written by
+    speed.sh), so that the fingerprint is the one of every other timing caption."""
+    return open(f"{work}/machine").read().strip()
 
 
 def fmt_ratio(x):
@@ -140,8 +115,9 @@ def main():
     for v in VARIANTS:
         status = int(open(f"{w}/compare-{v}.status").read())
         text = open(f"{w}/compare-{v}.txt").read()
-        mz = next((l for l in text.splitlines() if l.startswith("RMSE")), "")
-        verdict[v] = (status, mz)
+        line = next((l for l in text.splitlines() if l.startswith("RMSE")), "")
+        m = re.match(r"RMSE (\S+); mean z\^2 (\S+)", line)
+        verdict[v] = (status, f"RMSE {m.group(1)}, mean z² {m.group(2)}" if m else line)
 
     print("| renderer | threads | render seconds, median (range) | pixel samples / s | "
           "mean variance of a pixel's mean | efficiency, 1 / (variance × s) | process wall s | "
@@ -180,7 +156,7 @@ def main():
           f"spread is its variance; its render seconds are those of `mi.render` with the "
           f"result evaluated, raylemma's those of its render, the scene's loading left out for "
           f"both (the process column has everything, Python's start-up included). Peak memory "
-          f"is the process's maximum resident set. Machine: {machine()}.*")
+          f"is the process's maximum resident set. Machine: {machine(w)}.*")
 
     if a.png:
         m = mean_images[fast]

@@ -38,8 +38,10 @@ command -v /usr/bin/time >/dev/null || {
 }
 
 echo "== building raylemma (release)"
-cargo build --release --quiet -p raylemma
+cargo build --release --quiet -p raylemma -p raylemma-figures
 bin="${CARGO_TARGET_DIR:-$root/target}/release/raylemma"
+# The machine as the figure job's timing captions name it (the same fingerprint).
+"${CARGO_TARGET_DIR:-$root/target}/release/raylemma-figures" machine > "$work/machine"
 bash "$here/setup.sh" --no-test
 py="${RAYLEMMA_MITSUBA_VENV:-/root/.cache/raylemma-mitsuba-venv}/bin/python"
 

@@ -1,7 +1,8 @@
 //! `raylemma-book --root <project root> [--out <dir>]`: builds raylemma's book to HTML with
 //! mdBook used as a library, math pre-rendered to MathML, readable with no network.
 //!
-//! Steps: preflight check of includes and images ([`preflight`]), mdBook build into a staging
+//! Steps: preflight check of includes, images, pasted code and the numbers the chapters read
+//! from generated tables ([`preflight`], [`numbers`]), mdBook build into a staging
 //! directory beside the output, copy of `<root>/figures/` into it, check that no page needs a
 //! remote script or stylesheet, then swap the staging directory into place. On any failure the
 //! staging directory is removed and the previous output is left untouched.
@@ -10,6 +11,7 @@ mod dedent;
 mod logging;
 mod markers;
 mod math;
+mod numbers;
 /// The project's one writer of files (`src/output.rs` of the library, compiled here as it
 /// is: the book tool does not link the library). The book is made in a staging folder
 /// beside `book/` and swapped in for it whole ([`output::StagedDir::replace`]).
@@ -107,7 +109,7 @@ fn build(args: &Args) -> Result<PathBuf> {
     config.update_from_env()?;
     let src_dir = root.join(&config.book.src);
 
-    eprintln!("checking includes…");
+    eprintln!("checking includes, images, code blocks and numbers…");
     let problems = preflight::check_chapters(&root, &src_dir)
         .with_context(|| format!("scanning {}", src_dir.display()))?;
     if !problems.is_empty() {
@@ -115,7 +117,7 @@ fn build(args: &Args) -> Result<PathBuf> {
             eprintln!("{p}");
         }
         bail!(
-            "{} problem(s) with includes or images in {}",
+            "{} problem(s) with includes, images, code blocks or numbers in {}",
             problems.len(),
             src_dir.strip_prefix(&root).unwrap_or(&src_dir).display()
         );
@@ -129,6 +131,7 @@ fn build(args: &Args) -> Result<PathBuf> {
     config.build.build_dir = staging.path().to_path_buf();
 
     let mut md = MDBook::load_with_config(&root, config).context("loading the book")?;
+    md.with_preprocessor(numbers::Numbers);
     md.with_preprocessor(dedent::Dedent);
     md.with_preprocessor(math::KatexMathml);
     let chapters = md

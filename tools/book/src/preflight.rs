@@ -10,7 +10,7 @@
 //!   at depth `d` below `chapters/` (`chapters/a.md`: 0, `chapters/geometry/b.md`: 1) writes
 //!   `"../" * d + "figures/x.png"`.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt;
 use std::fs;
 use std::io;
@@ -19,6 +19,8 @@ use std::sync::LazyLock;
 
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 use regex::Regex;
+
+use crate::numbers;
 
 /// Same pattern as mdBook's `links` preprocessor (mdbook-driver 0.5, `find_links`).
 static LINK: LazyLock<Regex> = LazyLock::new(|| {
@@ -101,6 +103,10 @@ pub struct Checker {
     src_dir: PathBuf,
     /// Included file contents by normalised path; `Err` holds the read error text.
     cache: HashMap<PathBuf, Result<String, String>>,
+    /// The generated tables that `{{#value}}` and `{{#claim}}` read.
+    tables: numbers::Tables,
+    /// The `.rs` files some crate of the project compiles (found on first use).
+    compiled: Option<HashSet<PathBuf>>,
 }
 
 impl Checker {
@@ -110,6 +116,8 @@ impl Checker {
             root: normalize(root),
             src_dir: normalize(src_dir),
             cache: HashMap::new(),
+            tables: numbers::Tables::new(&root.join("figures")),
+            compiled: None,
         }
     }
 
@@ -119,6 +127,8 @@ impl Checker {
         let mut problems = Vec::new();
         self.check_includes(&file, text, &mut problems);
         self.check_images(&file, text, &mut problems);
+        self.check_numbers(&file, text, &mut problems);
+        self.check_rust_blocks(&file, text, &mut problems);
         problems.sort_by_key(|p| p.line);
         problems
     }
@@ -172,6 +182,78 @@ impl Checker {
                 && let Err(e) = check_anchor(contents, anchor)
             {
                 report(format!("{e} in {}", shown.display()));
+            }
+        }
+    }
+
+    /// Every `{{#value}}` and `{{#claim}}` reads a table that exists, and every claim holds
+    /// (a claim that fails on a quick-mode table is left to the preprocessor's warning).
+    fn check_numbers(&mut self, file: &Path, text: &str, problems: &mut Vec<Problem>) {
+        let (_, findings) = numbers::expand(&mut self.tables, text);
+        for f in findings.into_iter().filter(|f| !f.warning) {
+            problems.push(Problem {
+                file: self.display_path(file),
+                line: f.line,
+                message: f.message,
+            });
+        }
+    }
+
+    /// Every `rust` code block only includes code, and only from files that a crate of the
+    /// project compiles: Rust pasted into a chapter is compiled by nothing, so it is refused.
+    fn check_rust_blocks(&mut self, file: &Path, text: &str, problems: &mut Vec<Problem>) {
+        let dir = file.parent().unwrap_or(Path::new("")).to_path_buf();
+        let mut block: Option<(usize, bool)> = None; // (line, is rust)
+        for (i, line) in text.lines().enumerate() {
+            let t = line.trim_start();
+            if let Some(info) = t.strip_prefix("```") {
+                block = match block {
+                    None => Some((i + 1, info.trim_start().starts_with("rust"))),
+                    Some(_) => None,
+                };
+                continue;
+            }
+            let Some((start, true)) = block else {
+                continue;
+            };
+            if t.trim().is_empty() {
+                continue;
+            }
+            let include = LINK.captures(t).filter(|c| {
+                c.get(0)
+                    .is_some_and(|m| m.start() == 0 && m.end() == t.trim_end().len())
+                    && c.get(1)
+                        .is_some_and(|k| matches!(k.as_str(), "include" | "rustdoc_include"))
+            });
+            let Some(cap) = include else {
+                problems.push(Problem {
+                    file: self.display_path(file),
+                    line: i + 1,
+                    message: format!(
+                        "the rust block of line {start} holds pasted code, which nothing compiles: \
+                         include it by anchor from a file of src/ or tests/"
+                    ),
+                });
+                block = Some((start, false)); // once per block
+                continue;
+            };
+            let arg = cap[2].split_whitespace().next().unwrap_or("");
+            let path = arg.split_once(':').map_or(arg, |(p, _)| p);
+            let target = normalize(&dir.join(path));
+            if target.extension().is_some_and(|e| e == "rs") {
+                let root = self.root.clone();
+                let compiled = self.compiled.get_or_insert_with(|| compiled_files(&root));
+                if !compiled.contains(&target) {
+                    problems.push(Problem {
+                        file: self.display_path(file),
+                        line: i + 1,
+                        message: format!(
+                            "{} is shown as Rust but no crate of the project compiles it (no `mod` \
+                             of a crate root reaches it)",
+                            self.display_path(&target).display()
+                        ),
+                    });
+                }
             }
         }
     }
@@ -303,6 +385,123 @@ impl Checker {
             .map(Path::to_path_buf)
             .unwrap_or_else(|_| path.to_path_buf())
     }
+}
+
+/// The `.rs` files reached by `mod` declarations from the crate roots of the project under
+/// `root`: the library and binaries (`src/lib.rs`, `src/main.rs`, `src/bin/`), the test,
+/// bench and example targets, and the tools' crates (`tools/*/src/`). `#[path]` attributes
+/// and inline modules (`mod a { mod b; }`) are followed; a module behind `cfg` counts.
+fn compiled_files(root: &Path) -> HashSet<PathBuf> {
+    let mut roots: Vec<PathBuf> = ["src/lib.rs", "src/main.rs"]
+        .iter()
+        .map(|r| root.join(r))
+        .collect();
+    let list = |dir: PathBuf| -> Vec<PathBuf> {
+        fs::read_dir(dir)
+            .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+            .unwrap_or_default()
+    };
+    for dir in ["src/bin", "tests", "benches", "examples"] {
+        for p in list(root.join(dir)) {
+            if p.extension().is_some_and(|e| e == "rs") {
+                roots.push(p);
+            } else if p.join("main.rs").is_file() {
+                roots.push(p.join("main.rs"));
+            }
+        }
+    }
+    for tool in list(root.join("tools")) {
+        for r in ["src/main.rs", "src/lib.rs"] {
+            roots.push(tool.join(r));
+        }
+    }
+    let mut seen = HashSet::new();
+    let mut stack: Vec<(PathBuf, bool)> = roots
+        .into_iter()
+        .filter(|r| r.is_file())
+        .map(|r| (normalize(&r), true))
+        .collect();
+    while let Some((file, owns_dir)) = stack.pop() {
+        if !seen.insert(file.clone()) {
+            continue;
+        }
+        let Ok(text) = fs::read_to_string(&file) else {
+            continue;
+        };
+        let dir = file.parent().unwrap_or(Path::new("")).to_path_buf();
+        // The directory of this file's child modules: its own for a root or mod.rs, else
+        // the folder named after it.
+        let children = if owns_dir || file.file_name().is_some_and(|n| n == "mod.rs") {
+            dir.clone()
+        } else {
+            dir.join(file.file_stem().unwrap_or_default())
+        };
+        for (path, inline_dirs, name) in module_declarations(&text) {
+            let target = match path {
+                Some(p) if inline_dirs.is_empty() => dir.join(p),
+                Some(p) => children.join(inline_dirs.join("/")).join(p),
+                None => {
+                    let base = children.join(inline_dirs.join("/"));
+                    let flat = base.join(format!("{name}.rs"));
+                    if flat.is_file() {
+                        flat
+                    } else {
+                        base.join(&name).join("mod.rs")
+                    }
+                }
+            };
+            let owns = target.file_name().is_some_and(|n| n == "mod.rs");
+            stack.push((normalize(&target), owns));
+        }
+    }
+    seen
+}
+
+/// The out-of-line `mod name;` declarations of a Rust file: each with its `#[path]`, the
+/// inline modules it sits in, and its name. Comments are skipped; strings are not parsed,
+/// so a brace inside one could mislead it (none of the project's files has one that does).
+fn module_declarations(text: &str) -> Vec<(Option<String>, Vec<String>, String)> {
+    static MOD: LazyLock<Regex> = LazyLock::new(|| {
+        Regex::new(r"^\s*(?:pub(?:\([^)]*\))?\s+)?mod\s+([A-Za-z_][A-Za-z0-9_]*)\s*([;{])")
+            .expect("valid regex")
+    });
+    static PATH_ATTR: LazyLock<Regex> =
+        LazyLock::new(|| Regex::new(r#"#\[path\s*=\s*"([^"]+)"\s*\]"#).expect("valid regex"));
+    let mut out = Vec::new();
+    let mut inline: Vec<(String, i64)> = Vec::new(); // (name, depth at which it opened)
+    let mut depth: i64 = 0;
+    let mut path: Option<String> = None;
+    for raw in text.lines() {
+        let line = raw.split("//").next().unwrap_or("");
+        if let Some(c) = PATH_ATTR.captures(line) {
+            path = Some(c[1].to_string());
+        }
+        if let Some(c) = MOD.captures(line) {
+            let name = c[1].to_string();
+            if &c[2] == ";" {
+                let dirs = inline.iter().map(|(n, _)| n.clone()).collect();
+                out.push((path.take(), dirs, name));
+            } else {
+                inline.push((name, depth));
+                path = None;
+            }
+        } else if !line.trim().is_empty() && !line.trim_start().starts_with("#[") {
+            path = None;
+        }
+        for ch in line.chars() {
+            match ch {
+                '{' => depth += 1,
+                '}' => {
+                    depth -= 1;
+                    if inline.last().is_some_and(|(_, d)| *d == depth) {
+                        inline.pop();
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    out
 }
 
 /// The anchor named by an include selector, or `None` for a line range (`10`, `3:7`, `:5`, ``).
@@ -459,6 +658,7 @@ mod tests {
     #[test]
     fn valid_includes_and_images_pass() {
         let t = Tree::new("valid");
+        t.write("src/lib.rs", "mod x;\n");
         t.write("src/x.rs", CODE);
         t.write("figures/plot.png", "png");
         t.write("chapters/local.png", "png");
@@ -559,6 +759,62 @@ mod tests {
                 "chapters/geometry/sphere.md:9: playground ../../examples/missing.rs: \
                  file not found: examples/missing.rs",
             ]
+        );
+    }
+
+    #[test]
+    fn pasted_or_uncompiled_rust_is_refused() {
+        let t = Tree::new("rust");
+        t.write(
+            "src/lib.rs",
+            "pub mod a;\n#[cfg(test)]\nmod inline {\n    mod b;\n}\n",
+        );
+        t.write("src/a/mod.rs", "#[path = \"odd_name.rs\"]\nmod c;\n");
+        t.write("src/a/odd_name.rs", CODE);
+        t.write("src/inline/b.rs", CODE);
+        t.write("src/orphan.rs", CODE);
+        t.write("tests/book/main.rs", "mod part;\n");
+        t.write("tests/book/part/mod.rs", "mod t;\n");
+        t.write("tests/book/part/t.rs", CODE);
+        t.write(
+            "chapters/a.md",
+            "```rust\n{{#include ../src/a/odd_name.rs:foo}}\n```\n\
+             ```rust,ignore\n{{#include ../src/inline/b.rs:foo}}\n\n{{#include ../tests/book/part/t.rs}}\n```\n\
+             ```rust\n{{#include ../src/orphan.rs:foo}}\n```\n\
+             ```rust\nfn pasted() {}\nfn more() {}\n```\n\
+             ```text\nfn not_rust() {}\n```\n",
+        );
+        assert_eq!(
+            t.check(),
+            vec![
+                "chapters/a.md:10: src/orphan.rs is shown as Rust but no crate of the project \
+                 compiles it (no `mod` of a crate root reaches it)",
+                "chapters/a.md:13: the rust block of line 12 holds pasted code, which nothing \
+                 compiles: include it by anchor from a file of src/ or tests/",
+            ]
+        );
+    }
+
+    #[test]
+    fn numbers_are_checked_against_their_tables() {
+        let t = Tree::new("numbers");
+        t.write("figures/t.md", "| a | b |\n|---|---|\n| x | 1 |\n");
+        t.write(
+            "chapters/a.md",
+            "x is {{#value t.md \"x\" \"b\"}}.\n\nIt is above 2{{#claim t.md \"x\" \"b\" > 2}}.\n\n\
+             {{#value t.md \"y\" \"b\"}}\n",
+        );
+        let problems = t.check();
+        assert_eq!(problems.len(), 2, "{problems:?}");
+        assert!(
+            problems[0].starts_with("chapters/a.md:3: claim does not hold"),
+            "{problems:?}"
+        );
+        assert!(
+            problems[1].starts_with(
+                "chapters/a.md:5: {{#value t.md \"y\" \"b\"}}: figures/t.md: no row \"y\""
+            ),
+            "{problems:?}"
         );
     }
 

@@ -12,7 +12,7 @@ use raylemma::exercise::card::{self, Status};
 use raylemma::exercise::{self, edition, marker, registry, stub};
 use raylemma::optics::fresnel::schlick_seed;
 use raylemma::sampling::cosine::{cosine_malley, cosine_pdf};
-use raylemma::sampling::disc::{disc_pdf, disc_polar_invert};
+use raylemma::sampling::disc::{disc_pdf, disc_polar, disc_polar_invert};
 use raylemma::spectral::display::gamma_encode;
 use raylemma::transport::roulette::roulette_seed;
 
@@ -38,6 +38,11 @@ pub fn outputs() -> Vec<Output> {
             file: "coursework_disc_rows.txt",
             what: "rows of the disc's cells",
             make: disc_rows_txt,
+        },
+        Output {
+            file: "coursework_seeds.md",
+            what: "p-values of a correct disc and a cos^1.1 lobe over seeds",
+            make: seeds_md,
         },
         Output {
             file: "coursework_verdict_cosine.txt",
@@ -97,6 +102,54 @@ fn cosine_verdict() -> Verdict {
         warp::planted::cosine_pdf_without_1_over_pi,
     );
     warp::check(&w, &warp_options())
+}
+
+/// The chapter's *Statistical verdicts*: what a correct sampler's chi-squared p-value looks
+/// like over seeds 1 to 12 at the tests' settings, against a small real bug (the `cos^1.1`
+/// lobe claimed as a cosine lobe), whose Jacobian check fails too.
+fn seeds_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    use std::fmt::Write as _;
+    let correct = SquareWarp::new("disc, polar", Domain::Disc, disc_polar, disc_pdf);
+    let lobe = SquareWarp::new(
+        "cosine^1.1 lobe claimed as cosine",
+        Domain::Sphere,
+        warp::planted::cosine_power_lobe,
+        cosine_pdf,
+    );
+    let p = |w: &dyn warp::Warp, o: &Options| -> Result<f64, BoxError> {
+        Ok(warp::chi_squared(w, o)
+            .map_err(|e| -> BoxError { e.into() })?
+            .0
+            .p_value)
+    };
+    let show = |p: f64| {
+        if p >= 1e-3 {
+            format!("{p:.3}")
+        } else {
+            format!("{p:.1e}")
+        }
+    };
+    let mut md = String::from(
+        "| seed | correct polar disc: p | cos^1.1 lobe as cosine: p | the lobe's Jacobian check |\n|---:|---:|---:|---|\n",
+    );
+    for seed in 1..=12u64 {
+        let o = warp_options().seed(seed);
+        let jacobian = warp::check(&lobe, &o).finding("jacobian").passed();
+        writeln!(
+            md,
+            "| {seed} | {} | {} | {} |",
+            show(p(&correct, &o)?),
+            show(p(&lobe, &o)?),
+            if jacobian { "passes" } else { "fails" }
+        )?;
+    }
+    writeln!(
+        md,
+        "\n*`check::warp` at the tests' settings ({} samples), seeds 1 to 12; the level is {:.3e}.*",
+        warp::TEST_SAMPLES,
+        raylemma::stats::test_alpha()
+    )?;
+    Ok(md.into_bytes())
 }
 
 /// `text` with this machine's target folder written as `target` (the failure images'

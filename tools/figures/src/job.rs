@@ -113,6 +113,19 @@ fn code_version(root: &Path) -> Result<String, BoxError> {
     Ok(format!("{:016x}", fnv1a(&all)))
 }
 
+/// A generated table of a `--quick` run says so, in a comment the book does not show: the
+/// book's `{{#claim}}`s over it then warn instead of failing (`tools/book/src/numbers.rs`),
+/// since its numbers are too noisy to quote.
+const QUICK_MARK: &[u8] = b"\n<!-- made in quick mode: noisy, not for quoting -->\n";
+
+/// Appends [`QUICK_MARK`] to a markdown output that does not already say "quick mode".
+fn mark_quick(file: &str, bytes: &mut Vec<u8>) {
+    let says = bytes.windows(10).any(|w| w == b"quick mode");
+    if file.ends_with(".md") && !says {
+        bytes.extend_from_slice(QUICK_MARK);
+    }
+}
+
 /// Writes the outputs whose file name contains `only` (all if `None`) into `dir`.
 ///
 /// # Errors
@@ -185,6 +198,9 @@ pub fn write_outputs(
             bytes.extend_from_slice(b"\n");
             bytes.extend_from_slice(marker.as_bytes());
         }
+        if settings.quick {
+            mark_quick(o.file, &mut bytes);
+        }
         set.write(&path, &bytes)?;
         say(format!(
             "  {:>6.1} s  {}",
@@ -202,6 +218,19 @@ mod tests {
     use std::fs;
 
     use super::*;
+
+    #[test]
+    fn quick_tables_say_so_and_others_are_untouched() {
+        let mut md = b"| a |\n|---|\n| 1 |\n".to_vec();
+        mark_quick("t.md", &mut md);
+        assert!(md.ends_with(QUICK_MARK));
+        let mut noted = b"x (quick mode: noisy)".to_vec();
+        mark_quick("t.md", &mut noted);
+        assert_eq!(noted, b"x (quick mode: noisy)");
+        let mut txt = b"verdict".to_vec();
+        mark_quick("v.txt", &mut txt);
+        assert_eq!(txt, b"verdict");
+    }
 
     fn settings() -> Settings {
         Settings {
@@ -267,7 +296,12 @@ mod tests {
             make: good,
         }];
         write_outputs(&dir, &ok, &settings()).unwrap();
-        assert_eq!(fs::read_to_string(dir.join("a.md")).unwrap(), "new");
+        // (The test's settings are quick, so the table says so.)
+        let quick_mark = String::from_utf8_lossy(QUICK_MARK);
+        assert_eq!(
+            fs::read_to_string(dir.join("a.md")).unwrap(),
+            format!("new{quick_mark}")
+        );
         let names: Vec<_> = fs::read_dir(&dir)
             .unwrap()
             .filter_map(Result::ok)

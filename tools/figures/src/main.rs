@@ -80,6 +80,10 @@ enum Cmd {
         #[arg(long, conflicts_with = "force")]
         check: bool,
     },
+    /// Print the machine as every timing caption names it, with its fingerprint (for tools
+    /// outside the figure job, such as tools/mitsuba/speed.sh, whose tables the book then
+    /// compares with the figure job's).
+    Machine,
 }
 
 fn main() -> ExitCode {
@@ -92,8 +96,13 @@ fn main() -> ExitCode {
         quick: cli.quick,
         root,
     };
+
     let dir = settings.root.join("figures");
     let result = match &cli.command {
+        Cmd::Machine => {
+            println!("{}", timing::machine_name());
+            return ExitCode::SUCCESS;
+        }
         Cmd::Figures { only } => {
             eprintln!("raylemma: regenerating figures into {}", dir.display());
             job::write_all(&dir, &settings, only.as_deref())

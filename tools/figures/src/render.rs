@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use super::timing::{machine, quick_note};
+use super::timing::{machine_name, quick_note};
 use super::{Output, Settings};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::render::references::CANONICAL;
@@ -186,7 +186,7 @@ fn references_md(rendered: &[Rendered], settings: &Settings) -> String {
     let _ = write!(
         md,
         "\n*Rendered by `cargo run --release` on {} ({} worker threads){}.*\n",
-        machine().replace(", single thread", ""),
+        machine_name(),
         rayon::current_num_threads(),
         quick_note(settings.quick)
     );
@@ -211,7 +211,7 @@ fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered, settings: &Setting
         "\n*`cornell`, 256x256, against the reference of {} spp (another seed; its own variance subtracted); {} worker threads on {}{}.*\n",
         reference.sidecar.spp,
         rayon::current_num_threads(),
-        machine().replace(", single thread", ""),
+        machine_name(),
         quick_note(settings.quick)
     );
     md
