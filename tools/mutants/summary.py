@@ -49,8 +49,8 @@ for g in sorted(groups, key=lambda g: order.index(g) if g in order else len(orde
 print()
 shards = sorted({d.rsplit(".s", 1)[1] for d in os.listdir(out) if ".s" in d and not d.endswith(".all")}, key=int) or ["0"]
 print(f"*cargo-mutants. The derivations and checkers: {len(shards)} of every {n} mutants of each file "
-      f"(`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's tests; the "
-      "renderer: every mutant, tested with the renderer's tests. A timeout counts as caught (the "
+      f"(`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's tests (the "
+      "renderer's sample is tools/mutants/render.sh's own table). A timeout counts as caught (the "
       f"mutant made a test loop). Regenerate with `tools/mutants/run.sh {n} {' '.join(shards)}` "
       "in a clean checkout.*")
 for g in sorted(missed, key=lambda g: order.index(g) if g in order else len(order)):
