@@ -12,7 +12,7 @@
 //! graze a parallelogram's edge to within rounding): `tests/book/renderer/render.rs`
 //! compares the two on many rays.
 
-use std::cell::Cell;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 use glam::DVec3;
 
@@ -156,16 +156,17 @@ impl Lookup {
     }
 }
 
-thread_local! {
-    /// The rays this thread has traced ([`rays_traced`]).
-    static RAYS: Cell<u64> = const { Cell::new(0) };
-}
+/// Whether rays are being counted ([`count_rays`]); off unless the figure job asks.
+static COUNTING: AtomicBool = AtomicBool::new(false);
+/// The rays traced while counting.
+static RAYS: AtomicU64 = AtomicU64::new(0);
 
-/// The number of rays (closest-hit and shadow) the calling thread has traced through any
-/// [`Tracer`] so far: the figure job's estimate of the renderer's limit divides by it. One
-/// thread-local addition per ray, against the some two thousand instructions of a sample.
-pub fn rays_traced() -> u64 {
-    RAYS.with(Cell::get)
+/// Starts counting the rays (closest-hit and shadow) traced through any [`Tracer`], from
+/// zero, and returns the count of the previous period: the figure job's estimate of the
+/// renderer's limit divides by it. A load and a predictable branch per ray while off.
+pub fn count_rays(on: bool) -> u64 {
+    COUNTING.store(on, Ordering::Relaxed);
+    RAYS.swap(0, Ordering::Relaxed)
 }
 
 /// A scene's surfaces for tracing, and the scene.
@@ -269,7 +270,9 @@ impl<'a> Tracer<'a> {
     /// the same answer).
     #[inline]
     pub fn intersect_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<Hit> {
-        RAYS.with(|r| r.set(r.get() + 1));
+        if COUNTING.load(Ordering::Relaxed) {
+            RAYS.fetch_add(1, Ordering::Relaxed);
+        }
         let inv_d = DVec3::ONE / d;
         let mut nearest = t_max;
         let mut hit = None;

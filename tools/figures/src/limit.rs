@@ -2,7 +2,7 @@
 //! section *Speed against error*): how fast could `cornell` render if tracing its rays
 //! were the only work, and what fraction of that the renderer reaches.
 //!
-//! The renderer's rays are counted ([`raylemma::render::tracer::rays_traced`]) while it
+//! The renderer's rays are counted ([`raylemma::render::tracer::count_rays`]) while it
 //! renders on one thread. The hot loop is the tracer's intersection of one ray with the
 //! scene's surfaces, timed alone on a set of rays like the renderer's: camera rays, then
 //! at every diffuse hit a shadow ray towards a point on the light and a cosine-weighted
@@ -23,7 +23,7 @@ use crate::timing::{machine, quick_note};
 use raylemma::render::camera::Camera;
 use raylemma::render::integrator::offset_origin;
 use raylemma::render::scene::Surface;
-use raylemma::render::tracer::{Tracer, rays_traced};
+use raylemma::render::tracer::{Tracer, count_rays};
 use raylemma::render::{self, Progress};
 use raylemma::rng::seeded;
 use raylemma::sampling::cosine::cosine_malley;
@@ -104,12 +104,12 @@ fn limit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     scene.camera.height = side;
     scene.settings.roulette_depth = 5;
     let samples = f64::from(side * side * spp);
-    // One worker thread, so that the rays are counted on the thread that reads the count.
+    // One worker thread: the renderer alone, as the hot loop below.
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
     let (render_s, rays) = pool.install(|| {
-        let before = rays_traced();
+        count_rays(true);
         black_box(render::render(&scene, spp, Progress::Silent));
-        let rays = rays_traced() - before;
+        let rays = count_rays(false);
         let s = median_seconds(reps, || {
             render::render(&scene, spp, Progress::Silent).width.into()
         });
