@@ -80,13 +80,12 @@ struct AxisQuad {
 }
 
 impl AxisQuad {
-    /// The axis-aligned form of `q`, if it has one.
+    /// The axis-aligned form of `q`, if it has one: its normal and both edges along axes.
+    /// Those are three different axes, since a [`Parallelogram`] is never degenerate (its
+    /// edges are not parallel, and its normal is their cross product's direction).
     fn of(q: &Parallelogram, surface: Surface) -> Option<Self> {
         let [e1, e2] = q.edges();
-        let (k, a, b) = (Axis::of(q.normal())?, Axis::of(e1)?, Axis::of(e2)?);
-        if a == b || a == k || b == k {
-            return None;
-        }
+        let (k, _, _) = (Axis::of(q.normal())?, Axis::of(e1)?, Axis::of(e2)?);
         let (c, far) = (q.corner(), q.corner() + e1 + e2);
         let unbounded = |v: DVec3, inf: f64| match k {
             Axis::X => DVec3::new(inf, v.y, v.z),
