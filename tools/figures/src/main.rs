@@ -88,6 +88,8 @@ enum Cmd {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // Every figure draws text with the embedded font, whichever figures this run makes.
+    plot::register_embedded_font();
     let root = cli
         .root
         .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../.."));

@@ -55,12 +55,15 @@ pub const TITLE_PX: f64 = 16.5;
 /// line height, the SVG's an em).
 const SIZE_PER_PX: f64 = 1.24;
 
-/// Registers the embedded font under [`FAMILY`] (once per process).
+/// Registers the embedded font under [`FAMILY`], and under `sans-serif` for the PNG
+/// pictures that name that family (once per process).
 pub fn register_embedded_font() {
     REGISTER.call_once(|| {
         // The font is a fixed, known-good file; failure here is a build defect.
-        register_font(FAMILY, FontStyle::Normal, FONT)
-            .unwrap_or_else(|_| panic!("embedded DejaVuSans.ttf failed to load"));
+        for family in [FAMILY, "sans-serif"] {
+            register_font(family, FontStyle::Normal, FONT)
+                .unwrap_or_else(|_| panic!("embedded DejaVuSans.ttf failed to load"));
+        }
     });
 }
 
