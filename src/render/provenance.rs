@@ -304,7 +304,13 @@ pub fn code_version(root: &Path) -> Result<(String, usize), String> {
     let mut all = Vec::new();
     for f in &files {
         let path = root.join(f);
-        all.extend_from_slice(relative(Path::new(""), f).as_bytes());
+        // The path as the closure gives it (relative to the root, `/` between parts), so that
+        // the version is the same wherever the project is cloned.
+        let name: Vec<_> = f
+            .components()
+            .map(|c| c.as_os_str().to_string_lossy())
+            .collect();
+        all.extend_from_slice(name.join("/").as_bytes());
         all.push(0);
         if f.extension().is_some_and(|e| e == "rs") {
             let text = std::fs::read_to_string(&path)

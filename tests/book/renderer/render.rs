@@ -719,6 +719,26 @@ fn the_renderer_source_closure_holds_what_makes_pixels_and_nothing_of_the_checks
 }
 
 #[test]
+fn the_code_version_is_the_same_wherever_the_project_lies() {
+    // A fresh clone elsewhere must find the committed references current: the version
+    // hashes the closure's files by their paths relative to the root, never absolute ones
+    // (the test runs in the project folder either way; the version reads no other path).
+    use raylemma::render::provenance::{code_version, source_closure};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let here = code_version(root).unwrap_or_else(|e| panic!("{e}"));
+    let elsewhere = std::env::temp_dir().join(format!("raylemma-clone-{}", std::process::id()));
+    for f in source_closure(root).unwrap_or_else(|e| panic!("{e}")) {
+        let to = elsewhere.join(&f);
+        std::fs::create_dir_all(to.parent().expect("a file has a folder"))
+            .unwrap_or_else(|e| panic!("{e}"));
+        std::fs::copy(root.join(&f), &to).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+    }
+    let there = code_version(&elsewhere).unwrap_or_else(|e| panic!("{e}"));
+    let _ = std::fs::remove_dir_all(&elsewhere);
+    assert_eq!(here, there);
+}
+
+#[test]
 fn a_reference_record_names_what_changed() {
     use raylemma::render::provenance::{MadeFrom, code_text, code_version};
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
