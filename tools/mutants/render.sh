@@ -37,40 +37,25 @@ for shard in "${shards[@]}"; do
       -o "$out/$name" -f "$file" --shard "$shard/$n" -C --test=book -- "renderer::" || true
   done
 done
-python3 - "$out" "$n" "${shards[*]}" > "$root/figures/mutants_render.md" <<'PY'
-import json, math, os, sys
+python3 - "$here" "$out" "$n" "${shards[*]}" > "$root/figures/mutants_render.md" <<'PY'
+import sys
 from collections import defaultdict
-out, n, shards = sys.argv[1], int(sys.argv[2]), sys.argv[3].split()
+sys.path.insert(0, sys.argv[1])
+from summary import outcomes, wilson  # the derivations' table's own reading and interval
+out, n, shards = sys.argv[2], int(sys.argv[3]), sys.argv[4].split()
 counts = defaultdict(lambda: defaultdict(int))
 missed = []
-for d in sorted(os.listdir(out)):
-    p = os.path.join(out, d, "mutants.out", "outcomes.json")
-    if not os.path.exists(p):
-        continue
-    for o in json.load(open(p))["outcomes"]:
-        sc = o.get("scenario")
-        if not isinstance(sc, dict) or "Mutant" not in sc:
-            continue
-        m = sc["Mutant"]
-        counts[m["file"]][o["summary"]] += 1
-        if o["summary"] == "MissedMutant":
-            missed.append(m.get("name") or m["file"])
-def wilson(k, t, z=1.96):
-    if t == 0:
-        return (float("nan"), float("nan"))
-    p = k / t
-    c = (p + z * z / (2 * t)) / (1 + z * z / t)
-    h = z * math.sqrt(p * (1 - p) / t + z * z / (4 * t * t)) / (1 + z * z / t)
-    return (c - h, c + h)
+for _, file, summary, name in outcomes(out):
+    counts[file][summary] += 1
+    if summary == "MissedMutant":
+        missed.append(name)
 print("| file | tested | caught | missed | timeouts | unviable | caught share | 95 % interval |")
 print("|---|---:|---:|---:|---:|---:|---:|---:|")
 tot = defaultdict(int)
-for f in sorted(counts):
-    s = counts[f]
+for s in counts.values():
     for k, v in s.items():
         tot[k] += v
-rows = list(sorted(counts.items())) + [("**all**", tot)]
-for f, s in rows:
+for f, s in list(sorted(counts.items())) + [("**all**", tot)]:
     c, m, t, u = s["CaughtMutant"], s["MissedMutant"], s["Timeout"], s["Unviable"]
     v = c + m + t
     lo, hi = wilson(c + t, v)

@@ -1,29 +1,28 @@
-"""Summarises cargo-mutants outcomes per group of modules (figures/mutants.md)."""
+"""Summarises cargo-mutants outcomes per group of modules (figures/mutants.md).
+
+    summary.py OUT N
+
+`outcomes` and `wilson` are shared with tools/mutants/render.sh's table.
+"""
 import json, math, os, sys
 from collections import defaultdict
 
-out, n = sys.argv[1], int(sys.argv[2])
-groups = defaultdict(lambda: defaultdict(int))
-complete = set()
-missed = defaultdict(list)
-for d in sorted(os.listdir(out)):
-    path = os.path.join(out, d, "mutants.out", "outcomes.json")
-    if not os.path.exists(path):
-        continue
-    for o in json.load(open(path))["outcomes"]:
-        scenario = o.get("scenario")
-        if not isinstance(scenario, dict) or "Mutant" not in scenario:
-            continue  # the baseline
-        m = scenario["Mutant"]
-        file = m["file"]
-        group = "/".join(file.split("/")[:2])
-        if d.endswith(".all"):
-            complete.add(group)
-        summary = o["summary"]
-        groups[group][summary] += 1
-        if summary == "MissedMutant":
+
+def outcomes(out):
+    """Every mutant's outcome under OUT: (folder, file, summary, its name), in folder order."""
+    for d in sorted(os.listdir(out)):
+        path = os.path.join(out, d, "mutants.out", "outcomes.json")
+        if not os.path.exists(path):
+            continue
+        for o in json.load(open(path))["outcomes"]:
+            scenario = o.get("scenario")
+            if not isinstance(scenario, dict) or "Mutant" not in scenario:
+                continue  # the baseline
+            m = scenario["Mutant"]
             line = m.get("span", {}).get("start", {}).get("line", "?")
-            missed[group].append(m.get("name") or f"{file}:{line}: {m.get('replacement', '')}")
+            name = m.get("name") or f"{m['file']}:{line}: {m.get('replacement', '')}"
+            yield d, m["file"], o["summary"], name
+
 
 def wilson(k, t, z=1.96):
     if t == 0:
@@ -40,22 +39,38 @@ def row(name, s, which):
     share = 100 * (caught + to) / max(viable, 1)
     return f"| {name} | {which} | {viable} | {caught} | {miss} | {to} | {s['Unviable']} | {share:.0f} % | {100*lo:.0f}–{100*hi:.0f} % |"
 
-print("| modules | mutants | tested | caught | missed | timeouts | unviable | caught share | 95 % interval |")
-print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
-order = ["src/sampling", "src/optics", "src/spectral", "src/transport", "src/check", "src/render"]
-for g in sorted(groups, key=lambda g: order.index(g) if g in order else len(order)):
-    which = "every one" if g in complete else f"a sample, 1 in {n}" if n > 1 else "every one"
-    print(row(f"`{g}/`", groups[g], which))
-print()
-shards = sorted({d.rsplit(".s", 1)[1] for d in os.listdir(out) if ".s" in d and not d.endswith(".all")}, key=int) or ["0"]
-print(f"*cargo-mutants. The derivations and checkers: {len(shards)} of every {n} mutants of each file "
-      f"(`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's tests (the "
-      "renderer's sample is tools/mutants/render.sh's own table). A timeout counts as caught (the "
-      f"mutant made a test loop). Regenerate with `tools/mutants/run.sh {n} {' '.join(shards)}` "
-      "in a clean checkout.*")
-for g in sorted(missed, key=lambda g: order.index(g) if g in order else len(order)):
+def main():
+    out, n = sys.argv[1], int(sys.argv[2])
+    groups = defaultdict(lambda: defaultdict(int))
+    complete = set()
+    missed = defaultdict(list)
+    for d, file, summary, name in outcomes(out):
+        group = "/".join(file.split("/")[:2])
+        if d.endswith(".all"):
+            complete.add(group)
+        groups[group][summary] += 1
+        if summary == "MissedMutant":
+            missed[group].append(name)
+    print("| modules | mutants | tested | caught | missed | timeouts | unviable | caught share | 95 % interval |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+    order = ["src/sampling", "src/optics", "src/spectral", "src/transport", "src/check", "src/render"]
+    for g in sorted(groups, key=lambda g: order.index(g) if g in order else len(order)):
+        which = "every one" if g in complete else f"a sample, 1 in {n}" if n > 1 else "every one"
+        print(row(f"`{g}/`", groups[g], which))
     print()
-    print(f"Surviving mutants of `{g}/`:")
-    print()
-    for m in missed[g]:
-        print(f"- `{m}`")
+    shards = sorted({d.rsplit(".s", 1)[1] for d in os.listdir(out) if ".s" in d and not d.endswith(".all")}, key=int) or ["0"]
+    print(f"*cargo-mutants. The derivations and checkers: {len(shards)} of every {n} mutants of each file "
+          f"(`--shard K/{n}` for K in {', '.join(shards)}), each tested with its chapter's tests (the "
+          "renderer's sample is tools/mutants/render.sh's own table). A timeout counts as caught (the "
+          f"mutant made a test loop). Regenerate with `tools/mutants/run.sh {n} {' '.join(shards)}` "
+          "in a clean checkout.*")
+    for g in sorted(missed, key=lambda g: order.index(g) if g in order else len(order)):
+        print()
+        print(f"Surviving mutants of `{g}/`:")
+        print()
+        for m in missed[g]:
+            print(f"- `{m}`")
+
+
+if __name__ == "__main__":
+    main()

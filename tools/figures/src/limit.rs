@@ -12,14 +12,13 @@
 
 use std::fmt::Write as _;
 use std::hint::black_box;
-use std::time::Instant;
 
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 
 use super::{Output, Settings};
 use crate::plot::BoxError;
-use crate::timing::{machine, quick_note};
+use crate::timing::{machine, median_ns_per_item, quick_note};
 use raylemma::render::camera::Camera;
 use raylemma::render::integrator::offset_origin;
 use raylemma::render::scene::Surface;
@@ -79,20 +78,6 @@ fn ray_set(tracer: &Tracer, camera: &Camera, paths: usize, depth: u32) -> Vec<Ti
     rays
 }
 
-/// Median seconds of `reps` calls of `f`, after one untimed call.
-fn median_seconds(reps: usize, mut f: impl FnMut() -> u64) -> f64 {
-    black_box(f());
-    let mut t: Vec<f64> = (0..reps)
-        .map(|_| {
-            let start = Instant::now();
-            black_box(f());
-            start.elapsed().as_secs_f64()
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
-
 fn limit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let (side, spp, reps) = if settings.quick {
         (32, 4, 3)
@@ -106,29 +91,28 @@ fn limit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     let samples = f64::from(side * side * spp);
     // One worker thread: the renderer alone, as the hot loop below.
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
-    let (render_s, rays) = pool.install(|| {
+    let (ns_per_sample, rays) = pool.install(|| {
         count_rays(true);
         black_box(render::render(&scene, spp, Progress::Silent));
         let rays = count_rays(false);
-        let s = median_seconds(reps, || {
+        let ns = median_ns_per_item(samples as usize, reps, || {
             render::render(&scene, spp, Progress::Silent).width.into()
         });
-        (s, rays as f64)
+        (ns, rays as f64)
     });
     let rays_per_sample = rays / samples;
     let tracer = Tracer::new(&scene);
     let camera = Camera::new(&scene.camera);
     let set = ray_set(&tracer, &camera, (samples / 4.0) as usize, 12);
-    let loop_s = median_seconds(reps, || {
+    let ns_per_ray = median_ns_per_item(set.len(), reps, || {
         let mut hits = 0u64;
         for &(o, d, t) in &set {
             hits += u64::from(tracer.intersect_before(o, d, t).is_some());
         }
         hits
     });
-    let ns_per_ray = loop_s * 1e9 / set.len() as f64;
     let limit_per_s = 1e9 / (rays_per_sample * ns_per_ray);
-    let ours_per_s = samples / render_s;
+    let ours_per_s = 1e9 / ns_per_sample;
     let mut md = String::from("| quantity | value |\n|---|---:|\n");
     let _ = writeln!(
         md,
