@@ -160,8 +160,10 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                                 _ => 1.0,
                             };
                             let le = emissions.get(k, || emission(tracer, k, wl));
+                            // f cos w / p, with f = rho / pi: the scalar part once.
+                            let g = FRAC_1_PI * cos * w / pl;
                             for j in 0..N {
-                                l[j] += beta[j] * rho[j] * FRAC_1_PI * le[j] * cos * w / pl;
+                                l[j] += beta[j] * rho[j] * le[j] * g;
                             }
                         }
                     }

@@ -45,11 +45,13 @@ pub fn sample_xyz(l: &Lanes, wl: &Wavelengths) -> DVec3 {
 pub type WavelengthSampler<'a> = &'a (dyn Fn(f64) -> Wavelengths + Sync);
 
 /// Renders pixel `(x, y)` with `spp` samples: the mean and variance of its linear sRGB.
+/// `sampler` draws each path's wavelengths (generic, so that the scene's own strategy is
+/// compiled into the pixel loop; a [`WavelengthSampler`] works too).
 #[inline(always)]
-pub fn render_pixel(
+pub fn render_pixel<S: Fn(f64) -> Wavelengths + ?Sized>(
     tracer: &Tracer,
     camera: &Camera,
-    sampler: WavelengthSampler,
+    sampler: &S,
     (x, y): (u32, u32),
     spp: u32,
 ) -> Welford {

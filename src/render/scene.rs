@@ -79,6 +79,7 @@ pub enum Wavelength {
 
 impl Wavelength {
     /// The wavelengths of one path for `u` in `[0, 1)`.
+    #[inline]
     pub fn sample(&self, u: f64) -> Wavelengths {
         match self {
             Wavelength::Strategy(s) => s.sample(u),

@@ -101,6 +101,7 @@ impl Wavelengths {
 }
 
 /// The fractional part, in `[0, 1)`: the wrap "mod 1" of sample space.
+#[inline]
 pub fn wrap01(x: f64) -> f64 {
     let f = x - x.floor();
     // x - floor(x) rounds up to 1.0 for tiny negative x.
@@ -167,15 +168,20 @@ pub fn visible_cdf(nm: f64) -> f64 {
 
 /// The inverse CDF and the density there, for `u` in `[0, 1)`: with
 /// `t = t₀ + u (t₁ − t₀) = tanh(a (λ − c))`, `λ = c + atanh(t) / a`, and since
-/// `1 / cosh² = 1 − tanh²`, `p(λ) = a (1 − t²) / (t₁ − t₀)`: one `atanh`, no `cosh`.
+/// `1 / cosh² = 1 − tanh²`, `p(λ) = a (1 − t²) / (t₁ − t₀)`: no `cosh`, and one logarithm,
+/// since `atanh t = ½ ln((1 + t) / (1 − t))` (`|t| < 1` here: `t₀ ≈ −0.86`, `t₁ ≈ 0.97`).
+/// Near `t = 0` this form loses relative accuracy, but not absolute: `λ` agrees with
+/// `c + atanh(t) / a` to `1e-9` nm (a test checks it), and `ln` is cheaper than the
+/// `log1p` that `f64::atanh` calls (the renderer draws four of these per path).
 /// `λ` is clamped to the range against rounding (u = 0 gives 360 nm, u → 1 gives 830 nm).
+#[inline]
 pub fn sample_visible_pdf(u: f64) -> (f64, f64) {
     let (t0, t1) = visible_ends();
     let t = t0 + u * (t1 - t0);
-    let l = VISIBLE_C + t.atanh() / VISIBLE_A;
+    let l = VISIBLE_C + ((1.0 + t) / (1.0 - t)).ln() * (0.5 / VISIBLE_A);
     (
         l.clamp(LAMBDA_MIN, LAMBDA_MAX),
-        VISIBLE_A * (1.0 - t * t) / (t1 - t0),
+        (1.0 - t * t) * (VISIBLE_A / (t1 - t0)),
     )
 }
 
@@ -207,6 +213,7 @@ pub fn hero_uniform(u: f64) -> Wavelengths {
 /// Hero wavelengths rotated in *sample space*: `u_j = (u + j/N) mod 1`, `λ_j = P⁻¹(u_j)`
 /// through the visible pdf's inverse CDF. Each `u_j` is uniform, so each `λ_j` alone has
 /// density `p`: every lane is weighted by its own `p(λ_j)`.
+#[inline]
 pub fn hero_visible(u: f64) -> Wavelengths {
     let lanes: [(f64, f64); N] =
         std::array::from_fn(|j| sample_visible_pdf(wrap01(u + j as f64 / N as f64)));
@@ -334,6 +341,7 @@ impl Strategy {
     }
 
     /// The wavelengths of one path for the uniform number `u` in `[0, 1)`.
+    #[inline]
     pub fn sample(self, u: f64) -> Wavelengths {
         match self {
             Strategy::Uniform => Wavelengths::single(sample_uniform(u), 1.0 / RANGE),

@@ -137,6 +137,31 @@ fn visible_pdf_integrates_to_one_and_inverts() {
     }
 }
 
+/// The inverse CDF's `½ ln((1 + t) / (1 − t))` is `atanh t` to within `1e-9` nm of `λ`,
+/// on a fine grid of `u` that includes `u = 0`, `u → 1` and the `u` where `t = 0` (there
+/// the logarithm's form loses relative accuracy); the reference is `f64::atanh`, a
+/// different formula (`½ log1p(2t / (1 − t))`).
+#[test]
+fn inverse_cdf_by_logarithm_agrees_with_atanh() {
+    let (t0, t1) = (
+        (VISIBLE_A * (LAMBDA_MIN - VISIBLE_C)).tanh(),
+        (VISIBLE_A * (LAMBDA_MAX - VISIBLE_C)).tanh(),
+    );
+    let zero = -t0 / (t1 - t0);
+    let near_zero = (-50..=50).map(|i| zero + f64::from(i) * 1e-12);
+    let grid = (0..=100_000).map(|i| f64::from(i) / 100_000.0 * (1.0 - f64::EPSILON));
+    let mut worst = 0.0_f64;
+    for u in grid.chain(near_zero) {
+        let t = t0 + u * (t1 - t0);
+        let by_atanh = (VISIBLE_C + t.atanh() / VISIBLE_A).clamp(LAMBDA_MIN, LAMBDA_MAX);
+        let (l, _) = sample_visible_pdf(u);
+        let err = (l - by_atanh).abs();
+        assert!(err <= 1e-9, "u = {u}: {l} nm against atanh's {by_atanh} nm");
+        worst = worst.max(err);
+    }
+    eprintln!("largest difference: {worst:.1e} nm");
+}
+
 /// The warp checker on the interval: chi-squared (statistical test 1) and the Jacobian
 /// `p(P⁻¹(u)) dP⁻¹/du = 1`. Planted bug: the same formula normalised over 380–780 nm (the
 /// constants copied for another range), claimed with our pdf: rejected by both checks.
