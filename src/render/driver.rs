@@ -17,8 +17,8 @@ use super::format;
 use super::image::{Image, Welford};
 use super::pixel::{WavelengthSampler, render_pixel};
 use super::scene::Scene;
-use crate::spectral::wavelength::Wavelengths;
 use super::tracer::Tracer;
+use crate::spectral::wavelength::Wavelengths;
 
 /// The side of the square tiles the image is split into for the worker threads.
 pub const TILE: u32 = 16;
@@ -38,7 +38,9 @@ pub enum Progress {
 /// depend on the number of threads.
 pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
     let wavelengths = &scene.settings.wavelengths;
-    render_window(scene, spp, Window::of(scene), progress, &|u| wavelengths.sample(u))
+    render_window(scene, spp, Window::of(scene), progress, &|u| {
+        wavelengths.sample(u)
+    })
 }
 // ANCHOR_END: render
 
@@ -156,7 +158,10 @@ struct TileJob<'a, S: ?Sized> {
 /// The pixels of the tile whose top-left corner is `(x0, y0)` (in the window), each with
 /// its index in the window's image.
 #[inline(always)]
-fn render_tile<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(job: &TileJob<S>, (x0, y0): (u32, u32)) -> Vec<(usize, Welford)> {
+fn render_tile<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
+    job: &TileJob<S>,
+    (x0, y0): (u32, u32),
+) -> Vec<(usize, Welford)> {
     let (w, h) = (job.window.width, job.window.height);
     let mut out = Vec::with_capacity((TILE * TILE) as usize);
     for y in y0..(y0 + TILE).min(h) {
@@ -189,12 +194,18 @@ fn wide_vectors() -> bool {
 /// same bits on every machine, a little faster where the CPU has them.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn render_tile_wide_avx2<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(job: &TileJob<S>, corner: (u32, u32)) -> Vec<(usize, Welford)> {
+fn render_tile_wide_avx2<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
+    job: &TileJob<S>,
+    corner: (u32, u32),
+) -> Vec<(usize, Welford)> {
     render_tile(job, corner)
 }
 
 /// [`render_tile_wide_avx2`] when the CPU has AVX2 ([`wide_vectors`] said so).
-fn render_tile_wide<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(job: &TileJob<S>, corner: (u32, u32)) -> Vec<(usize, Welford)> {
+fn render_tile_wide<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
+    job: &TileJob<S>,
+    corner: (u32, u32),
+) -> Vec<(usize, Welford)> {
     #[cfg(target_arch = "x86_64")]
     {
         // SAFETY: called only when `wide_vectors()` found AVX2 on this CPU.
