@@ -21,20 +21,11 @@ shift || true
 shards=("${@:-0}")
 out="${OUT:-${TMPDIR:-/tmp}/raylemma-mutants-render}"
 read -r -a files <<< "${RENDER_FILES:-src/render/integrator.rs src/render/tracer.rs src/render/camera.rs src/render/pixel.rs src/render/driver.rs}"
-command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
 cd "$root"
-if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
-  echo "render.sh mutates files in place: run it in a clean checkout (git worktree add ...)" >&2
-  exit 2
-fi
-mkdir -p "$out"
+source "$here/common.sh"
 for shard in "${shards[@]}"; do
   for file in "${files[@]}"; do
-    name="$(echo "$file" | tr '/' '_').s$shard-of-$n"
-    if [ -f "$out/$name/mutants.out/outcomes.json" ]; then echo "== $name: done before"; continue; fi
-    echo "== $file, shard $shard of $n (tests: renderer::)"
-    cargo mutants --in-place --no-shuffle --baseline skip --timeout 300 --build-timeout 900 \
-      -o "$out/$name" -f "$file" --shard "$shard/$n" -C --test=book -- "renderer::" || true
+    mutate "$(echo "$file" | tr '/' '_').s$shard-of-$n" "renderer::" -f "$file" --shard "$shard/$n"
   done
 done
 python3 - "$here" "$out" "$n" "${shards[*]}" > "$root/figures/mutants_render.md" <<'PY'

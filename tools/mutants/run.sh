@@ -23,13 +23,8 @@ shift || true
 shards=("${@:-0}")
 [ "${#shards[@]}" -gt 0 ] || shards=(0)
 out="${OUT:-/tmp/raylemma-mutants}"
-command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
 cd "$root"
-if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
-  echo "run.sh mutates files in place: run it in a clean checkout (git worktree add ...)" >&2
-  exit 2
-fi
-mkdir -p "$out"
+source "$here/common.sh"
 # sampled: source file -> its chapter's test module in tests/book/
 sampled=(
   "src/sampling/sphere.rs sampling::sphere"
@@ -58,14 +53,6 @@ sampled=(
   "src/check/reflect/mod.rs optics::reflect"
   "src/check/fresnel/mod.rs optics::fresnel"
 )
-mutate() { # name, test filter, cargo-mutants arguments...
-  local name="$1" filter="$2"
-  shift 2
-  [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $name: done before"; return; }
-  echo "== $name (tests: $filter)"
-  cargo mutants --in-place --no-shuffle --baseline skip --timeout 300 --build-timeout 900 \
-    -o "$out/$name" "$@" -C --test=book -- "$filter" || true
-}
 for shard in "${shards[@]}"; do
   for entry in "${sampled[@]}"; do
     set -- $entry

@@ -1,0 +1,19 @@
+# What the mutation scripts share (sourced by run.sh and render.sh, after they set `out`):
+# cargo-mutants at the version the tables were made with, the refusal to mutate a checkout
+# with changes in it, and `mutate`, one cargo-mutants run whose results are kept in
+# $out/NAME (a run done before is not redone).
+command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
+if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
+  echo "$(basename "$0") mutates files in place: run it in a clean checkout (git worktree add ...)" >&2
+  exit 2
+fi
+mkdir -p "$out"
+
+mutate() { # name, test filter, cargo-mutants arguments...
+  local name="$1" filter="$2"
+  shift 2
+  [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $name: done before"; return; }
+  echo "== $name (tests: $filter)"
+  cargo mutants --in-place --no-shuffle --baseline skip --timeout 300 --build-timeout 900 \
+    -o "$out/$name" "$@" -C --test=book -- "$filter" || true
+}
