@@ -15,7 +15,7 @@ use super::camera::Camera;
 use super::files::Sidecar;
 use super::format;
 use super::image::{Image, Welford};
-use super::pixel::{WavelengthSampler, render_pixel};
+use super::pixel::render_pixel;
 use super::scene::Scene;
 use super::tracer::Tracer;
 use crate::spectral::wavelength::Wavelengths;
@@ -38,19 +38,18 @@ pub enum Progress {
 /// depend on the number of threads.
 pub fn render(scene: &Scene, spp: u32, progress: Progress) -> Image {
     let wavelengths = &scene.settings.wavelengths;
-    render_window(scene, spp, Window::of(scene), progress, &|u| {
-        wavelengths.sample(u)
-    })
+    render_with(scene, spp, progress, &|u| wavelengths.sample(u))
 }
 // ANCHOR_END: render
 
 /// [`render`] with the wavelengths of every path drawn by `sampler` instead of the scene's
-/// strategy (the tests plant wrong samplers through it).
-pub fn render_with(
+/// strategy (the tests plant wrong samplers through it, as a
+/// [`super::pixel::WavelengthSampler`]).
+pub fn render_with<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
     scene: &Scene,
     spp: u32,
     progress: Progress,
-    sampler: WavelengthSampler,
+    sampler: &S,
 ) -> Image {
     let whole = Window::of(scene);
     render_window(scene, spp, whole, progress, sampler)

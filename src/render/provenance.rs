@@ -73,7 +73,11 @@ fn hex(h: u64) -> String {
 fn relative(root: &Path, path: &Path) -> String {
     let root = std::fs::canonicalize(root).unwrap_or_else(|_| root.to_path_buf());
     let path = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
-    let p = path.strip_prefix(&root).unwrap_or(&path);
+    slashed(path.strip_prefix(&root).unwrap_or(&path))
+}
+
+/// `p`'s parts joined by `/`, whatever the platform's separator.
+fn slashed(p: &Path) -> String {
     p.components()
         .map(|c| c.as_os_str().to_string_lossy().into_owned())
         .collect::<Vec<_>>()
@@ -306,11 +310,7 @@ pub fn code_version(root: &Path) -> Result<(String, usize), String> {
         let path = root.join(f);
         // The path as the closure gives it (relative to the root, `/` between parts), so that
         // the version is the same wherever the project is cloned.
-        let name: Vec<_> = f
-            .components()
-            .map(|c| c.as_os_str().to_string_lossy())
-            .collect();
-        all.extend_from_slice(name.join("/").as_bytes());
+        all.extend_from_slice(slashed(f).as_bytes());
         all.push(0);
         if f.extension().is_some_and(|e| e == "rs") {
             let text = std::fs::read_to_string(&path)

@@ -10,7 +10,7 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Legend, Mark, Panel, Series};
+use crate::plot::{self, BoxError, Legend, Panel, Series};
 use raylemma::check::Options;
 use raylemma::check::warp::{self, Domain, RngWarp, SquareWarp, Warp, WarpOptions, planted};
 use raylemma::rng::{self, Rng};
@@ -315,12 +315,11 @@ fn calibration_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     for p in &all {
         counts[((p * bins as f64) as usize).min(bins - 1)] += 1;
     }
-    let density = |k: usize| counts[k] as f64 / all.len() as f64 * bins as f64;
-    let mut steps = Vec::new();
-    for k in 0..bins {
-        steps.push((k as f64 / bins as f64, density(k)));
-        steps.push(((k + 1) as f64 / bins as f64, density(k)));
-    }
+    let density: Vec<f64> = counts
+        .iter()
+        .map(|&c| c as f64 / all.len() as f64 * bins as f64)
+        .collect();
+    let edges: Vec<f64> = (0..=bins).map(|k| k as f64 / bins as f64).collect();
     let panels = [Panel::new(
         format!(
             "chi-squared p-values of the correct samplers ({} runs)",
@@ -329,11 +328,7 @@ fn calibration_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         "p-value",
         "density",
         vec![
-            Series {
-                label: "observed".into(),
-                points: steps,
-                mark: Mark::Bars,
-            },
+            Series::bars("observed", &edges, &density),
             Series::line("uniform (ideal)", vec![(0.0, 1.0), (1.0, 1.0)]),
         ],
     )
@@ -492,46 +487,42 @@ fn histograms_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
             let z = sample(&mut rng);
             counts[((z * bins as f64) as usize).min(bins - 1)] += 1;
         }
-        let mut steps = Vec::new();
-        for (k, &c) in counts.iter().enumerate() {
-            let density = c as f64 / n as f64 * bins as f64;
-            steps.push((k as f64 / bins as f64, density));
-            steps.push(((k + 1) as f64 / bins as f64, density));
-        }
-        steps
+        counts
+            .iter()
+            .map(|&c| c as f64 / n as f64 * bins as f64)
+            .collect::<Vec<_>>()
     };
+    let edges: Vec<f64> = (0..=bins).map(|k| k as f64 / bins as f64).collect();
     let cosine = histogram(&|r| cosine_malley(warp::square_point(r)).z);
     let uniform =
         histogram(&|r| hemisphere_flip(sphere_inverse_cdf(warp::square_point(r)), DVec3::Z).z);
-    let bars = |label: &str, points| Series {
-        label: label.into(),
-        points,
-        mark: Mark::Bars,
+    let panel = |what: &str, method: &str, density: &[f64], pdf: Series| {
+        Panel::new(
+            format!("cos θ of {n} {what} samples"),
+            "cos θ",
+            "density",
+            vec![
+                Series::bars(format!("histogram ({method})"), &edges, density),
+                pdf,
+            ],
+        )
+        .x_range((0.0, 1.0))
+        .legend(Legend::UpperLeft)
     };
     let panels = [
-        Panel::new(
-            format!("cos θ of {n} cosine-weighted samples"),
-            "cos θ",
-            "density",
-            vec![
-                bars("histogram (Malley)", cosine),
-                Series::line("pdf 2 cos θ", vec![(0.0, 0.0), (1.0, 2.0)]),
-            ],
+        panel(
+            "cosine-weighted",
+            "Malley",
+            &cosine,
+            Series::line("pdf 2 cos θ", vec![(0.0, 0.0), (1.0, 2.0)]),
+        ),
+        panel(
+            "uniform hemisphere",
+            "flipped inverse CDF",
+            &uniform,
+            Series::line("pdf 1", vec![(0.0, 1.0), (1.0, 1.0)]),
         )
-        .x_range((0.0, 1.0))
-        .legend(Legend::UpperLeft),
-        Panel::new(
-            format!("cos θ of {n} uniform hemisphere samples"),
-            "cos θ",
-            "density",
-            vec![
-                bars("histogram (flipped inverse CDF)", uniform),
-                Series::line("pdf 1", vec![(0.0, 1.0), (1.0, 1.0)]),
-            ],
-        )
-        .x_range((0.0, 1.0))
-        .y_range((0.0, 1.5))
-        .legend(Legend::UpperLeft),
+        .y_range((0.0, 1.5)),
     ];
     plot::chart(&panels, 2)
 }

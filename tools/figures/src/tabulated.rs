@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use rand::RngExt;
 
 use super::{Output, Settings, timing};
-use crate::plot::{self, BoxError, Mark, Panel, Series};
+use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::sampling::tabulated::{
     ONE_MINUS_EPSILON, Piecewise1D, emission_table, emission_values, segment_cdf, segment_inverse,
@@ -55,19 +55,17 @@ fn histogram_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         .map(|(&c, e)| c as f64 / (n as f64 * (e[1] - e[0])))
         .collect();
     let pdf: Vec<f64> = (0..table.bins()).map(|i| table.pdf(edges[i])).collect();
-    let steps = |v: &[f64], floor: f64| -> Vec<(f64, f64)> {
-        plot::steps(edges, &v.iter().map(|y| y.max(floor)).collect::<Vec<_>>())
-    };
+    let floored = |v: &[f64], floor: f64| v.iter().map(|y| y.max(floor)).collect::<Vec<_>>();
     let ymax = pdf.iter().copied().fold(0.0, f64::max) * 1.1;
     let floor = 1e-5;
     let series = |floor: f64| {
         vec![
-            Series {
-                label: format!("histogram of {n} samples"),
-                points: steps(&estimate, floor),
-                mark: Mark::Bars,
-            },
-            Series::line("the pdf", steps(&pdf, floor)),
+            Series::bars(
+                format!("histogram of {n} samples"),
+                edges,
+                &floored(&estimate, floor),
+            ),
+            Series::line("the pdf", plot::steps(edges, &floored(&pdf, floor))),
         ]
     };
     let panels = [
