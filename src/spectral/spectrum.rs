@@ -198,6 +198,8 @@ pub fn planck_normalised(nm: f64, kelvin: f64) -> f64 {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dense {
     lo: f64,
+    /// `lo` as an integer, for [`Dense::eval_whole`].
+    lo_whole: i64,
     values: Vec<f64>,
 }
 
@@ -211,7 +213,11 @@ impl Dense {
         let values = (0..=(hi - lo) as usize)
             .map(|i| t.eval(lo + i as f64))
             .collect();
-        Some(Dense { lo, values })
+        Some(Dense {
+            lo,
+            lo_whole: lo as i64,
+            values,
+        })
     }
 
     /// The value at `nm`: linear between the whole nanometres, zero outside.
@@ -230,8 +236,67 @@ impl Dense {
             None => self.values[i],
         }
     }
+
+    /// [`Dense::eval`] at `w.nm`, from its split into whole nanometres and the fraction
+    /// beyond: the same value, bit for bit (a test checks it), with the wavelength's
+    /// rounding down and its conversion to an index done once for every table it is
+    /// read in. With `k = whole - lo`, the knot below is `k` and the weight of the one
+    /// above is `frac`; `k = n - 1` (the last knot) counts only with `frac = 0`, where
+    /// [`Dense::eval`] weights the last interval's upper end by `t = 1`.
+    #[inline]
+    pub fn eval_whole(&self, w: WholeNm) -> f64 {
+        let last = self.values.len() as i64 - 1;
+        let k = w.whole.saturating_sub(self.lo_whole);
+        if k < 0 || k > last || (k == last && w.frac > 0.0) {
+            return 0.0;
+        }
+        // A table has two knots or more, so `last >= 1` and `0 <= i < last`. `k - i` is 1
+        // only at the last knot (where `frac = 0`): `t` as `eval` has it.
+        let i = k.min(last - 1);
+        let t = (k - i) as f64 + w.frac;
+        let i = i as usize;
+        (1.0 - t) * self.values[i] + t * self.values[i + 1]
+    }
 }
 // ANCHOR_END: dense
+
+/// A wavelength, nm, with its split `nm = whole + frac` into whole nanometres and the
+/// fraction beyond (`0 <= frac < 1`), both exact in `f64`: what reading a table on whole
+/// nanometres by index needs ([`Dense::eval_whole`]), worked out once per wavelength
+/// instead of once per table. A NaN or a wavelength
+/// beyond `±2^31` nm gets a `whole` below every table (`i64::MIN`), so reads there are 0
+/// as [`Dense::eval`]'s are.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WholeNm {
+    /// The wavelength itself.
+    pub nm: f64,
+    /// `floor(nm)`.
+    pub whole: i64,
+    /// `nm - floor(nm)`.
+    pub frac: f64,
+}
+
+impl WholeNm {
+    /// The split of `nm`.
+    #[inline]
+    pub fn of(nm: f64) -> Self {
+        const LIMIT: f64 = 2_147_483_648.0; // 2^31
+        // NaN is not below the limit either.
+        if nm.is_nan() || nm.abs() >= LIMIT {
+            return WholeNm {
+                nm,
+                whole: i64::MIN,
+                frac: 0.0,
+            };
+        }
+        let floor = nm.floor();
+        WholeNm {
+            nm,
+            whole: floor as i64,
+            frac: nm - floor,
+        }
+    }
+}
 
 /// A spectrum of a scene.
 #[derive(Clone, Debug, PartialEq)]

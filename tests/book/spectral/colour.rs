@@ -886,7 +886,7 @@ fn evenly_spaced_tables_find_their_segment_as_the_binary_search_does() {
 fn a_dense_table_is_the_same_function_read_by_index() {
     // Tables with whole-nanometre knots (the built-in ones, the Cornell box's): the dense
     // form agrees with the table to rounding everywhere, and is zero outside.
-    use raylemma::spectral::spectrum::Dense;
+    use raylemma::spectral::spectrum::{Dense, WholeNm};
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut tables: Vec<Table> = raylemma::spectral::spectrum::BUILTIN
         .iter()
@@ -914,11 +914,36 @@ fn a_dense_table_is_the_same_function_read_by_index() {
             (lo + hi) / 2.0,
             f64::NAN,
         ]);
+        // Every knot, the points on either side of it, and far away.
+        for &k in t.wavelengths() {
+            xs.extend([k, k.next_down(), k.next_up(), k + 0.5]);
+        }
+        xs.extend([
+            -0.0,
+            -1.0,
+            -1e300,
+            1e300,
+            3e9,
+            f64::INFINITY,
+            -f64::INFINITY,
+        ]);
         for x in xs {
             let (a, b) = (d.eval(x), t.eval(x));
+            // Rounding: the dense knots are the table's values at whole nanometres (each
+            // a rounded interpolation), interpolated again.
             assert!(
-                (a - b).abs() <= 4.0 * f64::EPSILON * b.abs().max(1.0),
+                (a - b).abs() <= 8.0 * f64::EPSILON * b.abs().max(1.0),
                 "at {x} nm: dense {a}, table {b}"
+            );
+            // The renderer's read, from the wavelength's split into whole nanometres: the
+            // same bits (NaN-safe: to_bits of 0.0 and of a value).
+            let w = WholeNm::of(x);
+            assert!(x.is_nan() || w.nm - w.frac == w.whole as f64 || w.whole == i64::MIN);
+            assert_eq!(
+                d.eval_whole(w).to_bits(),
+                a.to_bits(),
+                "at {x} nm: eval_whole {} against eval {a}",
+                d.eval_whole(w)
             );
         }
     }
