@@ -25,6 +25,7 @@ use crate::optics::thinfilm::Film;
 use crate::rng::Rng;
 use crate::sampling::cosine::cosine_malley;
 use crate::sampling::frame::Frame;
+use crate::spectral::spectrum::WholeNm;
 use crate::spectral::wavelength::{N, Wavelengths};
 use crate::transport::roulette::roulette;
 
@@ -53,10 +54,11 @@ pub fn offset_origin(p: DVec3, n: DVec3, dir: DVec3) -> DVec3 {
 }
 // ANCHOR_END: offset
 
-/// The emission of light `k` at the path's wavelengths.
-fn emission(tracer: &Tracer, k: usize, wl: &Wavelengths) -> Lanes {
-    tracer.emission(k, &wl.lambda)
-}
+/// The relative margin by which a shadow ray stops short of the point it was sent to: a
+/// surface nearer than `(1 - SHADOW_MARGIN) r` blocks it. The light's own hit lies at `r`
+/// to within rounding (`1e-16 r`), so the margin leaves it out whatever its orientation,
+/// while anything a pixel could resolve in front of the light still blocks.
+pub const SHADOW_MARGIN: f64 = 1e-9;
 
 /// Spectra evaluated at the path's wavelengths once per path: a path's wavelengths never
 /// change (a dispersive refraction only ends the secondary lanes), so the reflectance of
@@ -94,6 +96,8 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
     let mut bsdf_pdf: Option<f64> = None;
     let light_choice = 1.0 / scene.lights.len().max(1) as f64;
     let (mut reflectances, mut emissions) = (PerPath::<8>::new(), PerPath::<4>::new());
+    // The wavelengths split into whole nanometres once, for every table read by index.
+    let nm = wl.lambda.map(WholeNm::of);
     for depth in 0..=s.max_depth {
         let Some(hit) = tracer.intersect(o, d) else {
             if let Some(env) = &scene.environment {
@@ -117,7 +121,7 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                             h.weight(pb, pl)
                         }
                     };
-                    let le = emissions.get(k, || emission(tracer, k, wl));
+                    let le = emissions.get(k, || tracer.emission(k, &nm));
                     for j in 0..N {
                         l[j] += w * beta[j] * le[j];
                     }
@@ -134,13 +138,18 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                 // Shade on the side the ray arrived from (two-sided).
                 let n = if n.dot(d) < 0.0 { n } else { -n };
                 let material = scene.shapes[i].material;
-                let rho = reflectances.get(material, || tracer.reflectance(material, &wl.lambda));
+                let rho = reflectances.get(material, || tracer.reflectance(material, &nm));
                 let po = offset_origin(p, n, n);
                 let (u_pick, u_light, u_bsdf) = (
                     rng.random::<f64>(),
                     DVec2::new(rng.random(), rng.random()),
                     DVec2::new(rng.random(), rng.random()),
                 );
+                // The next direction, cosine-weighted (f cos / p = rho), drawn first: it
+                // does not depend on the light, so the processor can work on it while the
+                // light's sample and shadow ray wait on their square roots and divisions.
+                let local = cosine_malley(u_bsdf);
+                let next = Frame::from_normal(n).to_world(local).normalize();
                 // Next-event estimation: one light, chosen uniformly, one point on it.
                 if s.direct != DirectLight::Bsdf && !scene.lights.is_empty() {
                     let k =
@@ -148,18 +157,18 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                     let light = &scene.lights[k];
                     if let Some(ls) = light.light().sample(po, u_light) {
                         let cos = n.dot(ls.dir);
+                        // The light's point is seen if nothing lies before it (the
+                        // margin keeps the light itself, at `ls.dist` to rounding, out).
                         if cos > 0.0
                             && ls.cos_light < 0.0
-                            && tracer
-                                .intersect_before(po, ls.dir, ls.dist * (1.0 + 1e-9))
-                                .is_some_and(|h| h.surface == Surface::Light(k))
+                            && !tracer.occluded(po, ls.dir, ls.dist * (1.0 - SHADOW_MARGIN))
                         {
                             let pl = light_choice * ls.pdf;
                             let w = match s.direct {
                                 DirectLight::Mis(h) => h.weight(pl, cos * FRAC_1_PI),
                                 _ => 1.0,
                             };
-                            let le = emissions.get(k, || emission(tracer, k, wl));
+                            let le = emissions.get(k, || tracer.emission(k, &nm));
                             // f cos w / p, with f = rho / pi: the scalar part once.
                             let g = FRAC_1_PI * cos * w / pl;
                             for j in 0..N {
@@ -168,9 +177,7 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                         }
                     }
                 }
-                // The next direction, cosine-weighted: f cos / p = rho.
-                let local = cosine_malley(u_bsdf);
-                d = Frame::from_normal(n).to_world(local).normalize();
+                d = next;
                 bsdf_pdf = Some(local.z * FRAC_1_PI);
                 o = po;
                 for j in 0..N {

@@ -20,7 +20,7 @@ use super::scene::{Geometry, Hit, LightShape, Material, Scene, Surface};
 use crate::geometry::Ray;
 use crate::geometry::parallelogram::Parallelogram;
 use crate::geometry::sphere::{Sphere, intersect_stable};
-use crate::spectral::spectrum::{Dense, Spectrum};
+use crate::spectral::spectrum::{Dense, Spectrum, WholeNm};
 
 /// The parallelograms of a scene, one array per number: plane `n . p = plane`, corner
 /// `c`, dual basis `a`, `b` ([`crate::geometry::parallelogram::Parallelogram`]).
@@ -32,6 +32,22 @@ struct Quads {
     dual_a: Vec<DVec3>,
     dual_b: Vec<DVec3>,
     surface: Vec<Surface>,
+}
+
+impl Quads {
+    /// The hit of the ray from `o` along `d` with parallelogram `i`, if nearer than
+    /// `nearest` ([`Parallelogram::hit_before`]'s test on the arrays' numbers).
+    #[inline]
+    fn hit(&self, i: usize, o: DVec3, d: DVec3, nearest: f64) -> Option<f64> {
+        let n = self.n[i];
+        let t = (self.plane[i] - n.dot(o)) / n.dot(d);
+        if !(t > 0.0 && t < nearest && t.is_finite()) {
+            return None;
+        }
+        let p = o + t * d - self.corner[i];
+        let (a, b) = (p.dot(self.dual_a[i]), p.dot(self.dual_b[i]));
+        ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)).then_some(t)
+    }
 }
 
 // ANCHOR: axis_quad
@@ -135,19 +151,20 @@ impl Lookup {
         }
     }
 
-    /// The values at every wavelength of `nm` (one match for all of them).
+    /// The values at every wavelength of `nm` (one match for all of them; a dense table
+    /// read from each wavelength's whole-nanometre split).
     #[inline]
-    fn eval_all<const K: usize>(&self, nm: &[f64; K]) -> [f64; K] {
+    fn eval_all<const K: usize>(&self, nm: &[WholeNm; K]) -> [f64; K] {
         let mut out = [0.0; K];
         match self {
             Lookup::Dense(d) => {
-                for (o, &l) in out.iter_mut().zip(nm) {
-                    *o = d.eval(l);
+                for (o, &w) in out.iter_mut().zip(nm) {
+                    *o = d.eval_whole(w);
                 }
             }
             Lookup::As(s) => {
-                for (o, &l) in out.iter_mut().zip(nm) {
-                    *o = s.eval(l);
+                for (o, w) in out.iter_mut().zip(nm) {
+                    *o = s.eval(w.nm);
                 }
             }
         }
@@ -244,10 +261,11 @@ impl<'a> Tracer<'a> {
         (n, n + self.quads.n.len())
     }
 
-    /// The reflectance of material `m` (a Lambertian one) at the wavelengths `nm`: its
-    /// spectrum's values, read from the dense form where it has one.
+    /// The reflectance of material `m` (a Lambertian one) at the wavelengths `nm` (each
+    /// with its [`WholeNm`] split): its spectrum's values, read from the dense form where
+    /// it has one.
     #[inline]
-    pub fn reflectance<const K: usize>(&self, m: usize, nm: &[f64; K]) -> [f64; K] {
+    pub fn reflectance<const K: usize>(&self, m: usize, nm: &[WholeNm; K]) -> [f64; K] {
         match &self.reflectance[m] {
             Some(r) => r.eval_all(nm),
             None => [0.0; K],
@@ -256,7 +274,7 @@ impl<'a> Tracer<'a> {
 
     /// The emission of light `k` at the wavelengths `nm`, likewise.
     #[inline]
-    pub fn emission<const K: usize>(&self, k: usize, nm: &[f64; K]) -> [f64; K] {
+    pub fn emission<const K: usize>(&self, k: usize, nm: &[WholeNm; K]) -> [f64; K] {
         self.emission[k].eval_all(nm)
     }
 
@@ -269,9 +287,7 @@ impl<'a> Tracer<'a> {
     /// the same answer).
     #[inline]
     pub fn intersect_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<Hit> {
-        if COUNTING.load(Ordering::Relaxed) {
-            RAYS.fetch_add(1, Ordering::Relaxed);
-        }
+        count_ray();
         let inv_d = DVec3::ONE / d;
         let mut nearest = t_max;
         let mut hit = None;
@@ -287,15 +303,9 @@ impl<'a> Tracer<'a> {
         let q = &self.quads;
         let mut best = usize::MAX;
         for i in 0..q.n.len() {
-            let n = q.n[i];
-            let t = (q.plane[i] - n.dot(o)) / n.dot(d);
-            if t > 0.0 && t < nearest && t.is_finite() {
-                let p = o + t * d - q.corner[i];
-                let (a, b) = (p.dot(q.dual_a[i]), p.dot(q.dual_b[i]));
-                if (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) {
-                    nearest = t;
-                    best = i;
-                }
+            if let Some(t) = q.hit(i, o, d, nearest) {
+                nearest = t;
+                best = i;
             }
         }
         if best != usize::MAX {
@@ -316,5 +326,42 @@ impl<'a> Tracer<'a> {
             }
         }
         hit
+    }
+
+    // ANCHOR: occluded
+    /// Whether any surface lies along the ray nearer than `t_max`: the shadow ray's
+    /// question, `self.intersect_before(o, d, t_max).is_some()` (the same answer, a test
+    /// checks it), answered at the first surface found instead of the nearest one. The
+    /// spheres go first, since in a box they are what blocks a shadow ray, and a ray that
+    /// nothing blocks is tested against every surface, as before.
+    #[inline]
+    pub fn occluded(&self, o: DVec3, d: DVec3, t_max: f64) -> bool {
+        count_ray();
+        let ray = Ray::new(o, d);
+        let before = |t: f64| t > 0.0 && t < t_max;
+        if self
+            .spheres
+            .iter()
+            .any(|(sphere, _)| intersect_stable(&ray, sphere, 0.0).is_some_and(before))
+        {
+            return true;
+        }
+        let q = &self.quads;
+        if (0..q.n.len()).any(|i| q.hit(i, o, d, t_max).is_some()) {
+            return true;
+        }
+        let inv_d = DVec3::ONE / d;
+        self.axis_quads
+            .iter()
+            .any(|a| a.hit(o, d, inv_d, t_max).is_some())
+    }
+    // ANCHOR_END: occluded
+}
+
+/// Counts one ray if [`count_rays`] is on.
+#[inline]
+fn count_ray() {
+    if COUNTING.load(Ordering::Relaxed) {
+        RAYS.fetch_add(1, Ordering::Relaxed);
     }
 }

@@ -773,7 +773,8 @@ fn a_reference_record_names_what_changed() {
 fn the_tracer_finds_the_first_surface_the_book_loop_finds() {
     // The tracer (flat arrays, the axis-aligned form of a box's walls) against the book's
     // loop over the shapes and lights, on rays from random points in every canonical
-    // scene's bounds towards random directions, and from the camera.
+    // scene's bounds towards random directions, and from the camera; and its any-hit test
+    // for shadow rays against the same loop's answer.
     use raylemma::render::tracer::Tracer;
     let mut rng = rng::seeded(0x7ace);
     for name in [
@@ -806,6 +807,21 @@ fn the_tracer_finds_the_first_surface_the_book_loop_finds() {
                 (o, raylemma::sampling::sphere::sphere_uniform(&mut rng))
             };
             let (book, fast) = (s.intersect(o, d), tracer.intersect(o, d));
+            // The shadow ray's question, any surface before t_max, from the first-hit
+            // loop: before, at and just past the nearest hit, and with nothing near.
+            let near = book.map_or(1e3, |b| b.t);
+            for t_max in [
+                near * 0.5,
+                near * (1.0 - 1e-9),
+                near * (1.0 + 1e-9),
+                2.0 * near,
+            ] {
+                assert_eq!(
+                    tracer.occluded(o, d, t_max),
+                    s.intersect_before(o, d, t_max).is_some(),
+                    "{name}: ray {o} {d}, t_max {t_max}: occluded disagrees with the book's loop"
+                );
+            }
             match (book, fast) {
                 (Some(b), Some(f))
                     if b.surface == f.surface && (b.t - f.t).abs() <= 4.0 * f64::EPSILON * b.t =>
