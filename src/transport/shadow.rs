@@ -148,6 +148,8 @@ pub trait Light: Sync {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct QuadLight {
     shape: Parallelogram,
+    /// The area density of a uniform point, `1 / area`.
+    pdf_area: f64,
 }
 
 impl From<Degenerate> for LightError {
@@ -163,7 +165,10 @@ impl From<Degenerate> for LightError {
 impl From<Parallelogram> for QuadLight {
     /// The parallelogram as a light, emitting on the side of its normal.
     fn from(shape: Parallelogram) -> Self {
-        Self { shape }
+        Self {
+            pdf_area: 1.0 / shape.area(),
+            shape,
+        }
     }
 }
 
@@ -229,7 +234,7 @@ impl Light for QuadLight {
     /// Uniform in area (`p_A = 1 / area`), converted to solid angle.
     fn sample(&self, p: DVec3, u: DVec2) -> Option<LightSample> {
         let point = self.shape.point(u.x, u.y);
-        LightSample::seen_from(p, point, self.normal(), 1.0 / self.area())
+        LightSample::seen_from(p, point, self.normal(), self.pdf_area)
     }
     // ANCHOR_END: quad_sample
 
@@ -245,7 +250,7 @@ impl Light for QuadLight {
 
     fn pdf(&self, p: DVec3, w: DVec3) -> f64 {
         self.hit(p, w).map_or(0.0, |h| {
-            area_to_solid_angle(1.0 / self.area(), h.dist, h.cos_light)
+            area_to_solid_angle(self.pdf_area, h.dist, h.cos_light)
         })
     }
     // ANCHOR_END: quad_hit
