@@ -38,7 +38,7 @@ pub fn disc_concentric(u: V2) -> V3 {
     if a == V2::ZERO {
         return V3::ZERO;
     }
-    if a.x.abs() > a.y.abs() {
+    if a.y.abs() < a.x.abs() {
         let (sin, cos) = sin_cos_quarter(consts::FRAC_PI_4 * (a.y / a.x));
         V3::new(a.x * cos, a.x * sin, 0.0)
     } else {
