@@ -197,16 +197,19 @@ pub fn planck_normalised(nm: f64, kelvin: f64) -> f64 {
 /// two agree to rounding.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dense {
-    lo: f64,
-    /// `lo` as an integer, for [`Dense::eval_whole`].
-    lo_whole: i64,
+    /// The first knot, a whole number of nanometres.
+    lo: i64,
     values: Vec<f64>,
 }
 
 impl Dense {
-    /// The dense form of `t` if its knots are whole nanometres (else `None`).
+    /// The dense form of `t` if its knots are whole nanometres below [`WholeNm::LIMIT`]
+    /// (else `None`).
     pub fn of_table(t: &Table) -> Option<Dense> {
-        if t.nm.iter().any(|x| x.fract() != 0.0) {
+        if t.nm
+            .iter()
+            .any(|x| x.fract() != 0.0 || x.abs() >= WholeNm::LIMIT)
+        {
             return None;
         }
         let (lo, hi) = (t.nm[0], t.nm[t.nm.len() - 1]);
@@ -214,8 +217,7 @@ impl Dense {
             .map(|i| t.eval(lo + i as f64))
             .collect();
         Some(Dense {
-            lo,
-            lo_whole: lo as i64,
+            lo: lo as i64,
             values,
         })
     }
@@ -223,7 +225,8 @@ impl Dense {
     /// The value at `nm`: linear between the whole nanometres, zero outside.
     #[inline]
     pub fn eval(&self, nm: f64) -> f64 {
-        let s = nm - self.lo;
+        // `lo` is a whole number below 2^31: converted exactly.
+        let s = nm - self.lo as f64;
         let last = self.values.len() - 1;
         // NaN fails the comparison, as any wavelength outside.
         if !(s >= 0.0 && s <= last as f64) {
@@ -246,7 +249,7 @@ impl Dense {
     #[inline]
     pub fn eval_whole(&self, w: WholeNm) -> f64 {
         let last = self.values.len() as i64 - 1;
-        let k = w.whole.saturating_sub(self.lo_whole);
+        let k = w.whole.saturating_sub(self.lo);
         if k < 0 || k > last || (k == last && w.frac > 0.0) {
             return 0.0;
         }
@@ -277,12 +280,14 @@ pub struct WholeNm {
 }
 
 impl WholeNm {
+    /// `2^31` nm: wavelengths split exactly (and dense tables' knots) lie below it.
+    pub const LIMIT: f64 = 2_147_483_648.0;
+
     /// The split of `nm`.
     #[inline]
     pub fn of(nm: f64) -> Self {
-        const LIMIT: f64 = 2_147_483_648.0; // 2^31
         // NaN is not below the limit either.
-        if nm.is_nan() || nm.abs() >= LIMIT {
+        if nm.is_nan() || nm.abs() >= Self::LIMIT {
             return WholeNm {
                 nm,
                 whole: i64::MIN,
