@@ -22,6 +22,7 @@ mod numbers;
 #[path = "../../../src/output.rs"]
 mod output;
 mod preflight;
+mod values;
 
 use std::ffi::OsString;
 use std::fs;
@@ -48,6 +49,26 @@ struct Args {
 }
 
 fn main() -> ExitCode {
+    // MIGRATION (removed with numbers.rs): `RAYLEMMA_MIGRATE_CHECK=MAP.tsv raylemma-book --root R`.
+    if let Some(map) = std::env::var_os("RAYLEMMA_MIGRATE_CHECK") {
+        let root = std::env::args_os()
+            .nth(2)
+            .map_or_else(|| PathBuf::from("."), PathBuf::from);
+        return match numbers::migrate_check(&root, Path::new(&map)) {
+            Ok(0) => {
+                eprintln!("every mapping agrees");
+                ExitCode::SUCCESS
+            }
+            Ok(n) => {
+                eprintln!("{n} mapping(s) disagree");
+                ExitCode::FAILURE
+            }
+            Err(e) => {
+                eprintln!("error: {e:#}");
+                ExitCode::from(2)
+            }
+        };
+    }
     let args = match parse_args(std::env::args_os().skip(1)) {
         Ok(Some(args)) => args,
         Ok(None) => {
@@ -131,7 +152,7 @@ fn build(args: &Args) -> Result<PathBuf> {
     config.build.build_dir = staging.path().to_path_buf();
 
     let mut md = MDBook::load_with_config(&root, config).context("loading the book")?;
-    md.with_preprocessor(numbers::Numbers);
+    md.with_preprocessor(values::Numbers);
     md.with_preprocessor(dedent::Dedent);
     md.with_preprocessor(math::KatexMathml);
     let chapters = md

@@ -49,14 +49,15 @@ use std::path::{Path, PathBuf};
 use std::rc::Rc;
 use std::sync::LazyLock;
 
-use anyhow::{Result, bail};
-use mdbook_driver::book::{Book, BookItem};
-use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
+use anyhow::Result;
 use regex::Regex;
 
 /// The directives of this module, as mdBook finds its own (`{{#name args}}`, `\{{` escaped).
 static DIRECTIVE: LazyLock<Regex> = LazyLock::new(|| {
-    Regex::new(r"(?x)\\\{\{\#.*\}\}|\{\{\s*\#(value|claim)\s+([^}]+)\}\}").expect("valid regex")
+    Regex::new(
+        r"(?x)\\\{\{\#.*\}\}|\{\{\s*\#(value|claim)\s+([^}\s]+\.(?:md|txt)(?:\#\d+)?\s[^}]+)\}\}",
+    )
+    .expect("valid regex")
 });
 /// A machine's fingerprint in a timing table's caption (`tools/figures/src/timing.rs`).
 static FINGERPRINT: LazyLock<Regex> =
@@ -1487,7 +1488,12 @@ pub fn expand(tables: &mut Tables, text: &str) -> (String, Vec<Finding>) {
     for (i, _) in text.match_indices("{{#") {
         let rest = &text[i + 3..];
         let escaped = i > 0 && text.as_bytes()[i - 1] == b'\\';
+        let named = rest
+            .split_whitespace()
+            .nth(1)
+            .is_some_and(|t| !t.contains(".md") && !t.contains(".txt"));
         if !escaped
+            && !named
             && (rest.starts_with("value") || rest.starts_with("claim"))
             && !directives(text).iter().any(|d| d.start == i)
         {
@@ -1533,53 +1539,59 @@ fn sentence_of(text: &str, start: usize, end: usize) -> String {
     }
 }
 
-/// mdBook preprocessor replacing `{{#value}}` and failing on `{{#claim}}`s that do not hold.
-/// It runs before mdBook's `links`, on the chapters' own text, so lines are the files' own.
-pub struct Numbers;
-
-impl Preprocessor for Numbers {
-    fn name(&self) -> &str {
-        "numbers"
-    }
-
-    fn run(&self, ctx: &PreprocessorContext, mut book: Book) -> Result<Book> {
-        let mut tables = Tables::new(&ctx.root.join("figures"));
-        let src = ctx.config.book.src.clone();
-        let mut errors = Vec::new();
-        book.for_each_mut(|item| {
-            let BookItem::Chapter(chapter) = item else {
-                return;
-            };
-            let (content, findings) = expand(&mut tables, &chapter.content);
-            chapter.content = content;
-            let file = chapter
-                .source_path
-                .as_ref()
-                .or(chapter.path.as_ref())
-                .map(|p| src.join(p).display().to_string())
-                .unwrap_or_else(|| chapter.name.clone());
-            for f in findings {
-                let text = format!("{file}:{}: {}", f.line, f.message);
-                if f.warning {
-                    eprintln!("warning: {text}");
-                } else {
-                    errors.push(text);
-                }
-            }
-        });
-        if !errors.is_empty() {
-            bail!(
-                "{} number(s) or claim(s) of the chapters do not match their tables:\n{}",
-                errors.len(),
-                errors.join("\n")
+/// MIGRATION (removed with this module): checks a mapping of old table directives to named
+/// values, one `CHAPTER<TAB>OLD<TAB>NEW` per line: each old `{{#value}}` must show the same
+/// text as its new one, each old `{{#claim}}` must hold exactly when its new one does.
+/// Prints every mismatch; returns how many there were.
+pub fn migrate_check(root: &Path, mapping: &Path) -> Result<usize> {
+    let text = fs::read_to_string(mapping)?;
+    let mut tables = Tables::new(&root.join("figures"));
+    let values = crate::values::read(root).map_err(|e| anyhow::anyhow!(e))?;
+    let mut bad = 0;
+    for (i, line) in text.lines().enumerate() {
+        if line.trim().is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let parts: Vec<&str> = line.split('\t').collect();
+        if parts.len() != 3 {
+            eprintln!(
+                "{}:{}: expected CHAPTER<TAB>OLD<TAB>NEW",
+                mapping.display(),
+                i + 1
+            );
+            bad += 1;
+            continue;
+        }
+        let (old, new) = (parts[1], parts[2]);
+        let (old_out, old_f) = expand(&mut tables, old);
+        let (new_out, new_f) = crate::values::expand(&values, new);
+        let old_err: Vec<_> = old_f
+            .iter()
+            .filter(|f| !f.warning)
+            .map(|f| f.message.clone())
+            .collect();
+        let new_err: Vec<_> = new_f
+            .iter()
+            .filter(|f| !f.warning)
+            .map(|f| f.message.clone())
+            .collect();
+        let is_claim = old.contains("{{#claim");
+        let same = if is_claim {
+            old_err.is_empty() == new_err.is_empty()
+        } else {
+            old_out == new_out && new_err.is_empty()
+        };
+        if !same || !new_err.is_empty() {
+            bad += 1;
+            eprintln!(
+                "{}:{} ({}):\n  old {old}\n   -> {old_out:?} {old_err:?}\n  new {new}\n   -> {new_out:?} {new_err:?}",
+                mapping.display(),
+                i + 1,
+                parts[0]
             );
         }
-        Ok(book)
     }
-
-    fn supports_renderer(&self, _renderer: &str) -> Result<bool> {
-        Ok(true)
-    }
+    Ok(bad)
 }
 
 #[cfg(test)]

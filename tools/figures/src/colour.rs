@@ -7,7 +7,7 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 use plotters::prelude::*;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, PALETTE, Panel, Series};
 use raylemma::spectral::cie::{
     self, chromaticity, cmf, cmf_fit, krystek, xyz, xyz_to_linear_srgb, xyz_with,
@@ -85,7 +85,7 @@ fn planck_xy(kelvin: f64) -> DVec2 {
     xy_of(xyz(|nm| planck(nm, kelvin)))
 }
 
-fn chromaticity_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn chromaticity_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let small = || plot::font(plot::TICK_PX);
     plot::svg(plot::WIDTH, 800, |root, _| {
         let rest = plot::draw_title(
@@ -178,7 +178,7 @@ fn chromaticity_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     })
 }
 
-fn illuminants_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn illuminants_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -222,7 +222,7 @@ fn illuminants_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn fit_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn fit_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let nms: Vec<f64> = (0..=94).map(|i| 360.0 + 5.0 * f64::from(i)).collect();
     // The error oscillates with a period of about 10 nm: 5 nm steps would alias it.
     let fine: Vec<f64> = (0..=470).map(|i| 360.0 + f64::from(i)).collect();
@@ -290,7 +290,7 @@ pub fn fit_errors() -> [(f64, f64, f64); 3] {
     out
 }
 
-fn fit_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn fit_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let errors = fit_errors();
     let mut peak = DVec3::ZERO;
     for i in 0..cie::CMF_ROWS {
@@ -319,7 +319,7 @@ fn fit_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 41 };
     // Wavelengths as a renderer draws them: uniform over the range, not on the knots.
     let mut r = raylemma::rng::seeded(0xC0);
@@ -374,7 +374,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn planck_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn planck_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,

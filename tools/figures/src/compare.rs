@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 
 use rayon::prelude::*;
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use crate::timing::quick_note;
 use raylemma::render::compare::{Estimate, compare};
@@ -139,7 +139,7 @@ fn calibrate(settings: &Settings, name: &str, trials: u64) -> Result<[Counts; 4]
     Ok(counts)
 }
 
-fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let trials: u64 = if settings.quick { 2 } else { 100 };
     let n = u32::try_from(trials)?;
     let rate = |k: u32| {

@@ -4,7 +4,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::check::warp::{self, Domain, SquareWarp};
 use raylemma::check::{self, Options, Verdict};
@@ -32,7 +32,7 @@ pub fn outputs() -> Vec<Output> {
         Output {
             file: "coursework_verdict_disc.txt",
             what: "verdict: disc with r = u1",
-            make: |s| verdict_txt(s, disc_verdict()),
+            make: |s, _| verdict_txt(s, disc_verdict()),
         },
         Output {
             file: "coursework_disc_rows.txt",
@@ -47,12 +47,12 @@ pub fn outputs() -> Vec<Output> {
         Output {
             file: "coursework_verdict_cosine.txt",
             what: "verdict: cosine pdf without 1/pi",
-            make: |s| verdict_txt(s, cosine_verdict()),
+            make: |s, _| verdict_txt(s, cosine_verdict()),
         },
         Output {
             file: "coursework_verdict_schlick.txt",
             what: "verdict: the seed's Schlick",
-            make: |s| {
+            make: |s, _| {
                 verdict_txt(
                     s,
                     check::fresnel::reflectance(&schlick_seed, &Options::default()),
@@ -62,7 +62,7 @@ pub fn outputs() -> Vec<Output> {
         Output {
             file: "coursework_verdict_sphere.txt",
             what: "verdict: the far root",
-            make: |s| {
+            make: |s, _| {
                 let f = check::sphere::planted::always_far_root;
                 verdict_txt(s, check::sphere::intersection(&f, &Options::default()))
             },
@@ -70,7 +70,7 @@ pub fn outputs() -> Vec<Output> {
         Output {
             file: "coursework_verdict_refract.txt",
             what: "verdict: refraction without the square root",
-            make: |s| {
+            make: |s, _| {
                 let f = check::reflect::planted::refract_without_sqrt;
                 verdict_txt(s, check::reflect::refraction(&f, &Options::default()))
             },
@@ -107,7 +107,7 @@ fn cosine_verdict() -> Verdict {
 /// The chapter's *Statistical verdicts*: what a correct sampler's chi-squared p-value looks
 /// like over seeds 1 to 12 at the tests' settings, against a small real bug (the `cos^1.1`
 /// lobe claimed as a cosine lobe), whose Jacobian check fails too.
-fn seeds_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn seeds_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     use std::fmt::Write as _;
     let correct = SquareWarp::new("disc, polar", Domain::Disc, disc_polar, disc_pdf);
     let lobe = SquareWarp::new(
@@ -166,7 +166,7 @@ fn verdict_txt(settings: &Settings, verdict: Verdict) -> Result<Vec<u8>, BoxErro
 
 /// The marked region of `disc_polar` in the hand-out: `src/sampling/disc.rs` through the
 /// stub writer.
-fn stub_txt(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn stub_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let root = &settings.root;
     let summary = std::fs::read_to_string(root.join("chapters/SUMMARY.md"))?;
     let file = "src/sampling/disc.rs";
@@ -191,7 +191,7 @@ fn stub_txt(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 /// The report card of a student who wrote four exercises right, made a seed's mistake in
 /// five, and has not started the others: each mistake judged by its exercise's checkers,
 /// each exercise not started by a stub's panic, as the hand-out would have them.
-fn card_txt(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn card_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let markers = edition::markers_under(&settings.root)?;
     let o = Options::default();
     let card = card::run_with(&markers, |m| {
@@ -230,7 +230,7 @@ fn card_txt(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 }
 
 /// What the chapter's `where_is_my_disc_wrong` prints for the disc with `r = u1`.
-fn disc_rows_txt(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn disc_rows_txt(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let text = tests_mine::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
     Ok(text.into_bytes())
 }

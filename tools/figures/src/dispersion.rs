@@ -2,7 +2,7 @@
 
 use std::fmt::Write as _;
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::optics::dispersion::{
     self as disp, FUSED_SILICA, LINE_C_NM, LINE_D_NM, LINE_F_NM, N_BK7, PrismPath, RENDER_RANGE_NM,
@@ -68,7 +68,7 @@ fn wavelengths(step: usize) -> Vec<f64> {
     (lo..=hi).step_by(step).map(|l| l as f64).collect()
 }
 
-fn index_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn index_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let ls = wavelengths(5);
     let series = MATERIALS
         .iter()
@@ -111,7 +111,7 @@ fn index_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::ranged_chart(&panels)
 }
 
-fn catalogue_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn catalogue_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let bk7 = disp::material(N_BK7);
     let fs = disp::material(FUSED_SILICA);
     let water = disp::material(WATER);
@@ -223,7 +223,7 @@ fn catalogue_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
 
 const APEX_DEG: f64 = 60.0;
 
-fn prism_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn prism_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let apex = APEX_DEG.to_radians();
     let ls = wavelengths(5);
     let mut by_wavelength = Vec::new();
@@ -285,7 +285,7 @@ fn prism_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn prism_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn prism_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let apex = APEX_DEG.to_radians();
     let mut md = String::new();
     writeln!(
@@ -320,7 +320,7 @@ fn prism_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn rainbow_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn rainbow_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let water = disp::material(WATER);
     let ls = wavelengths(5);
     let bow = vec![Series::line(
@@ -369,7 +369,7 @@ fn rainbow_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn rainbow_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn rainbow_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let water = disp::material(WATER);
     let mut md = String::new();
     writeln!(

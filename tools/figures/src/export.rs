@@ -2,7 +2,7 @@
 //! `scenes/furnace-grey.toml`, written by the library's exporter exactly as the command
 //! writes them (the chapter includes their first lines).
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::render::export::{SceneFile, json, mitsuba};
 
@@ -30,10 +30,10 @@ fn example(settings: &Settings) -> Result<SceneFile, BoxError> {
     Ok(file)
 }
 
-fn json_example(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn json_example(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     Ok(json::to_json(&example(settings)?).into_bytes())
 }
 
-fn xml_example(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn xml_example(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     Ok(mitsuba::to_xml(&example(settings)?)?.into_bytes())
 }

@@ -7,7 +7,7 @@
 use std::fmt::Write as _;
 use std::process::{Command, Stdio};
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::check::Options;
 use raylemma::check::external::{self, Density, Function, Program, Sampler, Target};
@@ -58,7 +58,7 @@ fn block(md: &mut String, command: &str, verdict: &str) -> std::fmt::Result {
     writeln!(md, "```text\n$ {command}\n{verdict}```\n")
 }
 
-fn sampler_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn sampler_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }
@@ -89,7 +89,7 @@ fn sampler_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn fresnel_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn fresnel_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }

@@ -7,7 +7,7 @@ use std::hint::black_box;
 
 use glam::{DVec3, Vec3};
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::sampling::frame::{Construction, Frame, cross_product_frame, duff, frisvad};
@@ -64,7 +64,7 @@ pub fn worst64(normals: &[DVec3], f: Construction) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let azimuths = if settings.quick { 64 } else { 1024 };
     // 1 + z from 1 down to 1e-7 (f32) and 1e-15 (f64), four points per decade.
     let deltas = |decades: i32| -> Vec<f64> {
@@ -125,7 +125,7 @@ fn error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn errors_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn errors_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 10_000 } else { 100_000 };
     let mut r = rng::seeded(1);
     let random: Vec<DVec3> = (0..n).map(|_| sphere_uniform(&mut r)).collect();
@@ -179,7 +179,7 @@ fn time_frames<V: Copy>(normals: &[V], reps: usize, f: impl Fn(V) -> f64) -> f64
     })
 }
 
-fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 201 };
     let n64 = timing_normals(4096);
     let n32: Vec<Vec3> = n64.iter().map(|n| n.as_vec3()).collect();

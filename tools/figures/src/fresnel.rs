@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 use std::hint::black_box;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::Options;
 use raylemma::check::fresnel::{self as check, planted};
@@ -114,15 +114,15 @@ fn reflectance_panels(inside: bool) -> Vec<Panel> {
         .collect()
 }
 
-fn outside_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn outside_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::chart(&reflectance_panels(false), 2)
 }
 
-fn inside_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn inside_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::chart(&reflectance_panels(true), 2)
 }
 
-fn error_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let panels: Vec<Panel> = FIGURE_IORS
         .iter()
         .map(|&n| {
@@ -175,7 +175,17 @@ pub fn error_row(n1: f64, n2: f64) -> ErrorRow {
     }
 }
 
-fn errors_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+/// A table label as a value name: `1.128 (glass in water)` -> `glass_in_water`.
+fn ior_name(label: &str) -> &'static str {
+    match label {
+        "1.33 (water)" => "water",
+        "1.5 (glass)" => "glass",
+        "2.4 (diamond)" => "diamond",
+        _ => "glass_in_water",
+    }
+}
+
+fn errors_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -183,9 +193,32 @@ fn errors_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     )?;
     writeln!(md, "|---|---|---:|---:|---:|---:|---:|")?;
     let at = |e: f64, d: f64| format!("{e:.4} ({d:.2}°)");
+    let mut seed_inside = Vec::new();
     for (n, name) in TABLE_IORS {
         for (side, n1, n2) in [("outside", 1.0, n), ("inside", n, 1.0)] {
             let row = error_row(n1, n2);
+            let key = format!("{}.{side}", ior_name(name));
+            r.number(
+                &format!("{key}.schlick_worst_rel"),
+                row.schlick.worst_rel,
+                ".4",
+            );
+            r.number(
+                &format!("{key}.schlick_worst_rel_percent"),
+                100.0 * row.schlick.worst_rel,
+                "int",
+            );
+            r.number(&format!("{key}.seed_worst_abs"), row.seed.worst_abs, ".4");
+            if side == "inside" {
+                seed_inside.push(row.seed.worst_abs);
+            }
+            if key == "glass_in_water.outside" {
+                r.claim(
+                    "schlick_above_one_percent_glass_in_water",
+                    row.schlick.worst_rel > 0.01,
+                    format!("Schlick's worst relative error, glass in water, from outside: {:.4} > 0.01", row.schlick.worst_rel),
+                );
+            }
             writeln!(
                 md,
                 "| {name} | {side} | {} | {} | {} | {:.2e} ({:.2}°) | {:.2e} |",
@@ -198,6 +231,13 @@ fn errors_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
             )?;
         }
     }
+    let (lo, hi) = seed_inside
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &e| {
+            (lo.min(e), hi.max(e))
+        });
+    r.number("seed_inside_worst_abs.min", lo, "s3");
+    r.number("seed_inside_worst_abs.max", hi, "s3");
     writeln!(
         md,
         "\n*θi is the angle of incidence in the medium the light arrives from; {SWEEP_ANGLES} angles from 0° to 90°. \
@@ -207,7 +247,7 @@ fn errors_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn verdicts_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn verdicts_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     type Reflectance = fn(f64, f64, f64) -> f64;
     let fit: Reflectance = |c, n1, n2| FresnelFit::new(n1, n2).eval(c);
     let routines: [(&str, Reflectance); 7] = [
@@ -294,7 +334,13 @@ fn worst_error(f: &dyn Fn(f64, f64) -> Box<dyn Fn(f64) -> f64>) -> (f64, f64) {
     worst
 }
 
-fn timed(settings: &Settings) -> Vec<Timed> {
+/// The methods timed once per run: the table and the chart show the same measurement.
+fn timed(settings: &Settings) -> &'static [Timed] {
+    static TIMED: std::sync::OnceLock<Vec<Timed>> = std::sync::OnceLock::new();
+    TIMED.get_or_init(|| measure(settings))
+}
+
+fn measure(settings: &Settings) -> Vec<Timed> {
     let cosines = timing_cosines(4096);
     let reps = if settings.quick { 5 } else { 201 };
     let (fit_out, fit_in) = (FresnelFit::new(1.0, 1.5), FresnelFit::new(1.5, 1.0));
@@ -356,7 +402,7 @@ fn fit_construction_ns(settings: &Settings) -> f64 {
     })
 }
 
-fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let rows = timed(settings);
     let cosines = timing_cosines(4096);
     let tir_share = cosines
@@ -370,13 +416,39 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
         "| method | ns per evaluation, entering glass (1 → 1.5) | ns per evaluation, leaving glass (1.5 → 1) | worst abs. error, outside | worst abs. error, inside |"
     )?;
     writeln!(md, "|---|---:|---:|---:|---:|")?;
-    for row in &rows {
+    for row in rows {
+        let key = match row.name {
+            "exact" => "exact",
+            "Schlick" => "schlick",
+            "Chebyshev-8" => "fit",
+            _ => "seed",
+        };
         writeln!(
             md,
-            "| {} | {:.2} | {:.2} | {:.1e} | {:.1e} |",
-            row.name, row.ns.0, row.ns.1, row.error.0, row.error.1
+            "| {} | {} | {} | {} | {} |",
+            row.name,
+            r.number(&format!("{key}.entering_ns"), row.ns.0, ".2"),
+            r.number(&format!("{key}.leaving_ns"), row.ns.1, ".2"),
+            r.text(
+                &format!("{key}.error_outside"),
+                format!("{:.1e}", row.error.0)
+            ),
+            r.text(
+                &format!("{key}.error_inside"),
+                format!("{:.1e}", row.error.1)
+            ),
         )?;
     }
+    let (exact, schlick, seed) = (&rows[0], &rows[1], &rows[3]);
+    r.number("schlick_saves_entering_ns", exact.ns.0 - schlick.ns.0, ".1");
+    r.claim(
+        "seed_inside_error_above_0_9",
+        seed.error.1 > 0.9,
+        format!(
+            "the seed's Schlick, worst error inside: {:.2} > 0.9",
+            seed.error.1
+        ),
+    );
     let reps = if settings.quick { 5 } else { 201 };
     writeln!(
         md,
@@ -392,7 +464,7 @@ fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let rows = timed(settings);
     let panel = |title: &str, pick: fn(&Timed) -> (f64, f64)| {
         Panel::new(

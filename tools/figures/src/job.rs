@@ -11,6 +11,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use raylemma::output::{self, FileSet};
 use raylemma::render::format::fnv1a;
+pub use raylemma_values::Record;
+use raylemma_values::{Entry, Values};
 
 use crate::plot::BoxError;
 use crate::{
@@ -34,8 +36,8 @@ pub struct Output {
     pub file: &'static str,
     /// What it shows, for progress and error messages.
     pub what: &'static str,
-    /// Produces the file's bytes.
-    pub make: fn(&Settings) -> Result<Vec<u8>, BoxError>,
+    /// Produces the file's bytes, recording the values the book quotes from it.
+    pub make: fn(&Settings, &mut Record<'_>) -> Result<Vec<u8>, BoxError>,
 }
 
 /// Every output of every chapter, in book order.
@@ -151,9 +153,60 @@ pub fn write_all(
     write_outputs(dir, &outputs, settings)
 }
 
+/// The key of an output's record in `figures/values.json`: its file name without the
+/// extension (`fresnel_speed.md` -> `fresnel_speed`).
+pub fn stem(file: &str) -> &str {
+    file.rsplit_once('.').map_or(file, |(stem, _)| stem)
+}
+
+/// The values file of `dir` with `made` (each output's file and its new record) put in,
+/// staged in `set`: an output that recorded nothing loses its entry, and entries of outputs
+/// whose file is gone from `dir` are dropped. Records of outputs not made now (kept ones,
+/// those of `--only`'s other outputs, the references' and the external tools') stay.
+///
+/// # Errors
+/// If the values file cannot be read, or two outputs of one name both record values.
+pub fn stage_values(
+    dir: &Path,
+    mut values: Values,
+    made: Vec<(&str, Entry)>,
+    set: &mut FileSet,
+) -> Result<(), BoxError> {
+    for (file, entry) in made {
+        let key = stem(file).to_string();
+        if entry.values.is_empty() && entry.claims.is_empty() {
+            if values.get(&key).is_some_and(|e| e.file == file) {
+                values.remove(&key);
+            }
+            continue;
+        }
+        if let Some(old) = values.get(&key)
+            && old.file != file
+            && dir.join(&old.file).exists()
+        {
+            return Err(format!(
+                "{file} and {} both record values under the name {key}: rename one",
+                old.file
+            )
+            .into());
+        }
+        values.insert(key, entry);
+    }
+    let staged: Vec<PathBuf> = set.paths().map(Path::to_path_buf).collect();
+    values.retain(|_, e| {
+        let path = dir.join(&e.file);
+        path.exists() || staged.contains(&path)
+    });
+    set.write(
+        &dir.join(raylemma_values::FILE),
+        raylemma_values::to_json(&values).as_bytes(),
+    )?;
+    Ok(())
+}
+
 /// Produces `outputs` and writes them into `dir` as one set of files
-/// ([`raylemma::output::FileSet`]): each is staged beside its destination, and they are
-/// renamed into place only when all succeeded.
+/// ([`raylemma::output::FileSet`]), with their records in `figures/values.json`: each is
+/// staged beside its destination, and they are renamed into place only when all succeeded.
 ///
 /// # Errors
 /// Names the first output that failed; `dir` is then left exactly as it was.
@@ -177,13 +230,20 @@ pub fn write_outputs(
         }
     };
     let version = code_version(&settings.root)?;
+    let before = raylemma_values::read(dir)?;
+    // What this run records, seen by later outputs (Record::earlier) over the last run's.
+    let mut values = before.clone();
+    let mut made = Vec::new();
     let mut set = FileSet::new();
     for o in outputs {
         bar.set_message(format!("{} ({})", o.file, o.what));
         let path = dir.join(o.file);
         let marker = format!("<!-- made from code version {version} -->\n");
         let kept = KEPT_WHILE_CODE_UNCHANGED.contains(&o.file) && !settings.quick;
-        if kept && std::fs::read_to_string(&path).is_ok_and(|t| t.ends_with(&marker)) {
+        if kept
+            && before.contains_key(stem(o.file))
+            && std::fs::read_to_string(&path).is_ok_and(|t| t.ends_with(&marker))
+        {
             say(format!(
                 "    kept    {} (the code it measures is unchanged; delete the file to remake it)",
                 o.file
@@ -192,7 +252,8 @@ pub fn write_outputs(
             continue;
         }
         let start = Instant::now();
-        let mut bytes = (o.make)(settings)
+        let mut record = Record::new(o.file, &values);
+        let mut bytes = (o.make)(settings, &mut record)
             .map_err(|e| format!("figure {} ({}) failed: {e}", o.file, o.what))?;
         if kept {
             bytes.extend_from_slice(b"\n");
@@ -201,6 +262,14 @@ pub fn write_outputs(
         if settings.quick {
             mark_quick(o.file, &mut bytes);
         }
+        let entry = record.finish(&bytes, settings.quick).map_err(|e| {
+            format!(
+                "figure {} ({}) recorded its values wrongly: {e}",
+                o.file, o.what
+            )
+        })?;
+        values.insert(stem(o.file).to_string(), entry.clone());
+        made.push((o.file, entry));
         set.write(&path, &bytes)?;
         say(format!(
             "  {:>6.1} s  {}",
@@ -209,6 +278,7 @@ pub fn write_outputs(
         ));
         bar.inc(1);
     }
+    stage_values(dir, before, made, &mut set)?;
     bar.finish_with_message("done");
     Ok(set.commit()?)
 }
@@ -253,11 +323,11 @@ mod tests {
         assert!(!dir.exists(), "nothing is written for an unknown name");
     }
 
-    fn good(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    fn good(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         Ok(b"new".to_vec())
     }
 
-    fn bad(_: &Settings) -> Result<Vec<u8>, BoxError> {
+    fn bad(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         Err("planted failure".into())
     }
 

@@ -5,7 +5,7 @@ use std::hint::black_box;
 
 use glam::{DVec2, DVec3};
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::stats::ttest::{self, Summary};
@@ -41,7 +41,7 @@ fn square_point(r: &mut rng::Rng) -> DVec2 {
 type Estimator = fn(f64, fn(DVec3) -> f64, DVec2) -> f64;
 type Bounce = fn(f64, DVec2) -> f64;
 
-fn estimators_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn estimators_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let reps = if settings.quick { 5 } else { 51 };
     let mut md = String::new();
@@ -91,7 +91,7 @@ fn estimators_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn furnace_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn furnace_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -130,7 +130,7 @@ fn furnace_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn sky_variance_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn sky_variance_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 20_000 } else { 200_000 };
     let ks: Vec<i32> = (0..=10).collect();
     let mut series = vec![

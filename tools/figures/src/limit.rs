@@ -16,7 +16,7 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use crate::timing::{machine, median_ns_per_item, quick_note};
 use raylemma::render::camera::Camera;
@@ -78,7 +78,7 @@ fn ray_set(tracer: &Tracer, camera: &Camera, paths: usize, depth: u32) -> Vec<Ti
     rays
 }
 
-fn limit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn limit_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let (side, spp, reps) = if settings.quick {
         (32, 4, 3)
     } else {

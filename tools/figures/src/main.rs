@@ -44,7 +44,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use job::{Output, Settings};
+use job::{Output, Record, Settings};
 
 /// Draw raylemma's figures and tables, and render its reference images.
 #[derive(Parser, Debug)]

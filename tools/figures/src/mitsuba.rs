@@ -17,7 +17,7 @@ use std::fmt::Write as _;
 
 use glam::{DMat3, DVec3};
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::render;
 use raylemma::render::scene::Environment;
@@ -77,7 +77,7 @@ fn mitsuba_rgb(s: &Spectrum) -> DVec3 {
     m * (sum * MITSUBA_Y_NORMALIZATION)
 }
 
-fn colour_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn colour_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let scenes = [
         "cornell",
         "lamps/amber-led",

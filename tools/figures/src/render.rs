@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::timing::{machine_name, quick_note};
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
@@ -227,7 +227,7 @@ pub fn outputs() -> Vec<Output> {
     }]
 }
 
-fn error_time_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_time_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let path = settings.root.join("figures").join("render_speed.md");
     let md = std::fs::read_to_string(&path)
         .map_err(|e| format!("{}: {e} (`references` writes it)", path.display()))?;

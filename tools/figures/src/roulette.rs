@@ -2,7 +2,7 @@
 
 use std::fmt::Write as _;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::stats::ttest::{self, Summary};
@@ -34,7 +34,7 @@ const FURNACE: Furnace = Furnace {
     albedo: 0.5,
 };
 
-fn single_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn single_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -132,7 +132,7 @@ fn efficiency(m: &Measured) -> f64 {
     1.0 / (m.summary.variance() * m.ns_per_path)
 }
 
-fn efficiency_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn efficiency_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let s = study(settings);
     let fine: Vec<f64> = (1..200)
         .map(|i| 0.34 + (0.995 - 0.34) * f64::from(i) / 200.0)
@@ -176,7 +176,7 @@ fn efficiency_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 1)
 }
 
-fn efficiency_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn efficiency_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let s = study(settings);
     let mut md = String::new();
     writeln!(

@@ -9,7 +9,7 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Legend, Panel, Series};
 use raylemma::check::Options;
 use raylemma::check::warp::{self, Domain, RngWarp, SquareWarp, Warp, WarpOptions, planted};
@@ -144,7 +144,7 @@ fn chi2_p(w: &dyn Warp, samples: usize, seed: u64) -> f64 {
     warp::chi_squared(w, &options).map_or(f64::NAN, |(c, _, _)| c.p_value)
 }
 
-fn methods_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn methods_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -250,7 +250,7 @@ fn seeds(settings: &Settings) -> u64 {
     if settings.quick { 40 } else { 400 }
 }
 
-fn power_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let runs = if settings.quick { 10 } else { 50 };
     let sizes = [10_000, 100_000, 1_000_000];
     let alpha = stats::test_alpha();
@@ -305,7 +305,7 @@ fn calibration_p_values(settings: &Settings) -> Vec<(String, Vec<f64>)> {
         .collect()
 }
 
-fn calibration_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn calibration_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let all: Vec<f64> = calibration_p_values(settings)
         .into_iter()
         .flat_map(|(_, ps)| ps)
@@ -336,7 +336,7 @@ fn calibration_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 1)
 }
 
-fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let alpha = stats::test_alpha();
     let mut md = String::new();
     writeln!(
@@ -365,7 +365,7 @@ fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn distortion_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn distortion_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let grid: Vec<DVec2> = (0..200)
         .flat_map(|i| {
             (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))
@@ -390,7 +390,7 @@ fn distortion_md(_: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn warped_grids_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn warped_grids_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
     plot::svg(plot::WIDTH, 420, |root, _| {
         type Map = fn(DVec2) -> DVec3;
@@ -429,7 +429,7 @@ fn phi_z(w: DVec3) -> (f64, f64) {
     (if phi < 0.0 { phi + TAU } else { phi }, w.z)
 }
 
-fn scatter_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn scatter_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut rng = rng::seeded(0x5CA7);
     let n = 2500;
     let sphere_icdf: Vec<_> = (0..n)
@@ -477,7 +477,7 @@ fn scatter_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn histograms_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn histograms_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let bins = 40;
     let histogram = |sample: &dyn Fn(&mut Rng) -> f64| {

@@ -5,7 +5,7 @@ use std::hint::black_box;
 
 use glam::{DVec2, DVec3};
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::warp::square_point;
 use raylemma::rng;
@@ -86,7 +86,7 @@ fn measure(light: &QuadLight, settings: &Settings) -> Vec<(&'static str, f64, f6
 
 const SIDES: [(&str, f64); 2] = [("small (0.1 × 0.1)", 0.1), ("large (6 × 6)", 6.0)];
 
-fn strategies_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn strategies_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -115,7 +115,7 @@ fn strategies_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn convergence_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn convergence_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut panels = Vec::new();
     for (label, side) in SIDES {
         let rows = measure(&square_light(side)?, settings);
@@ -148,7 +148,7 @@ fn convergence_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn sphere_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn sphere_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 20_000 } else { 400_000 };
     let mut md = String::new();
     writeln!(

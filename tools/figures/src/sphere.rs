@@ -5,7 +5,7 @@ use std::hint::black_box;
 
 use glam::DVec3;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
 use raylemma::check::{Options, Real};
@@ -68,7 +68,7 @@ fn far_options(settings: &Settings) -> Options {
     }
 }
 
-fn far_error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn far_error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let options = far_options(settings);
     let forms: [(&str, &dyn Fn(f64) -> FarRow); 2] = [
         ("textbook (seed)", &|d| {
@@ -114,7 +114,7 @@ fn far_error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn far_table_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn far_table_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let options = far_options(settings);
     let grid = check::far_grid(&options);
     let mut md = String::new();
@@ -145,7 +145,7 @@ fn far_table_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
 /// Hit maps: each pixel is one ray of a parallel bundle aimed at a unit sphere `distance`
 /// radii away. Light grey: correct hit; dark grey: correct miss; orange: wrong answer.
 /// Rays within the silhouette band ([`check::SILHOUETTE_BAND`]) accept either answer.
-fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn silhouette_png(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
     let n: u32 = if settings.quick { 100 } else { 200 };
     let distances = [1e3, 3e3, 1e4];
@@ -210,7 +210,7 @@ fn silhouette_png(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::encode_png(width, height, buffer)
 }
 
-fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn self_hit_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let rays = if settings.quick { 20_000 } else { 200_000 };
     let options = Options::default().cases(rays); // seed: check::SELF_HIT_SEED
     let mut md = String::new();
@@ -247,7 +247,7 @@ fn self_hit_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn verdicts_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn verdicts_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let options = if settings.quick {
         Options::default().cases(2_000)
     } else {
@@ -287,7 +287,7 @@ fn time_form<R: Real>(f: fn(&R::Ray, &R::Sphere, R) -> Option<R>, quick: bool) -
     (ns, hits as f64 / rays.len() as f64)
 }
 
-fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let q = settings.quick;
     let rows = [
         ("textbook", "f32", time_form::<f32>(textbook32, q)),

@@ -9,7 +9,7 @@
 use std::fmt::Write as _;
 use std::sync::OnceLock;
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::stats::null::{NULL_CASES, NullCase};
 use raylemma::stats::{ks, test_alpha};
@@ -56,7 +56,7 @@ fn calibration(settings: &Settings) -> Result<&'static Calibration, BoxError> {
 
 const BINS: usize = 20;
 
-fn pvalues_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn pvalues_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let cal = calibration(settings)?;
     // Under the null each bin holds Binomial(runs, 1/BINS) p-values: density 1 ± 2 sd.
     let share = 1.0 / BINS as f64;
@@ -113,7 +113,7 @@ fn percent(rejected: usize, runs: u64) -> String {
     )
 }
 
-fn calibration_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let cal = calibration(settings)?;
     let alpha = test_alpha();
     let mut md = String::new();

@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 
 use rayon::prelude::*;
 
-use super::{Output, Settings};
+use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::check::Options;
 use raylemma::check::render::pool::pool_blocks;
@@ -98,7 +98,7 @@ fn percent(b: Option<f64>) -> String {
     b.map_or_else(|| "> 50 %".into(), |b| format!("{} %", 100.0 * b))
 }
 
-fn power_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let seeds: u64 = if settings.quick { 2 } else { 10 };
     let root = settings.root.clone();
     let options = |s: u64| Options::default().seed(0xB1A5 + s);

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use glam::DVec3;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::Legend;
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
@@ -46,7 +46,7 @@ fn curve(label: &str, rgb: DVec3) -> Result<Series, BoxError> {
     ))
 }
 
-fn spectra_svg(_: &Settings) -> Result<Vec<u8>, BoxError> {
+fn spectra_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let corners = Panel::new(
         "gamut corners (linear sRGB)",
         "wavelength, nm",
@@ -151,7 +151,7 @@ fn row(
     Ok(())
 }
 
-fn roundtrip_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn roundtrip_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -205,7 +205,7 @@ fn roundtrip_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let colours = if settings.quick { random(100) } else { grid() };
     let reps = if settings.quick { 3 } else { 11 };
     let d65 = Fitter::d65();

@@ -6,7 +6,7 @@ use std::hint::black_box;
 
 use glam::DVec3;
 
-use super::{Output, Settings, timing};
+use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
 use raylemma::spectral::cie;
@@ -100,7 +100,7 @@ fn relative_variance(s: Strategy, spectrum: &Spectrum, exact: DVec3, n: usize) -
     sums.iter().map(Summary::variance).sum::<f64>() / 3.0
 }
 
-fn error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let (repeats, max_pow, reps) = if settings.quick {
         (60, 8, 3)
     } else {
@@ -146,7 +146,7 @@ fn error_svg(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn efficiency_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn efficiency_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let (n, reps) = if settings.quick {
         (20_000, 3)
     } else {
@@ -233,7 +233,7 @@ pub fn seed_readings() -> Vec<(&'static str, SeedBand)> {
     ]
 }
 
-fn seed_bias_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn seed_bias_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let spectra = spectra();
     let readings = seed_readings();
     let mut md = String::new();
@@ -301,7 +301,7 @@ fn seed_bias_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
     let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();
