@@ -150,8 +150,12 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                 // light's sample and shadow ray wait on their square roots and divisions.
                 let local = cosine_malley(u_bsdf);
                 let next = Frame::from_normal(n).to_world(local).normalize();
-                // Next-event estimation: one light, chosen uniformly, one point on it.
-                if s.direct != DirectLight::Bsdf && !scene.lights.is_empty() {
+                // Next-event estimation: one light, chosen uniformly, one point on it;
+                // not at the last vertex, where the BSDF half of the same paths (one
+                // bounce longer) is never traced: a path of at most `max_depth` bounces
+                // has the same expectation whichever strategy found its light.
+                if depth < s.max_depth && s.direct != DirectLight::Bsdf && !scene.lights.is_empty()
+                {
                     let k =
                         ((u_pick * scene.lights.len() as f64) as usize).min(scene.lights.len() - 1);
                     let light = &scene.lights[k];

@@ -295,6 +295,50 @@ pub fn render_agreement(renderer: Renderer, options: &Options) -> Vec<Rendered> 
         .collect()
 }
 
+/// The maximum depths at which [`render_depths`] compares the estimators: direct light
+/// only, one indirect bounce, two.
+pub const DEPTHS: [u32; 3] = [1, 2, 3];
+
+/// The scene of everything ([`scenes::everything`], 32 x 32 pixels, `options.cases`
+/// samples per pixel, default 64) at each maximum depth of [`DEPTHS`], rendered by
+/// `renderer` with MIS (power heuristic) and with each other direct-lighting strategy of
+/// [`DIRECT_VARIANTS`] (each with its own seed), each compared with the MIS render of its
+/// depth: a path of at most `max_depth` bounces has one expectation whichever strategy
+/// found its light, so a strategy that counts a light the others cannot reach at that depth
+/// (next-event estimation at the last vertex) differs.
+pub fn render_depths(renderer: Renderer, options: &Options) -> Vec<Rendered> {
+    let spp = options.cases_or(64) as u32;
+    let seed = options.seed_or(SEED) + 100;
+    let mut out = Vec::new();
+    for (d, &depth) in DEPTHS.iter().enumerate() {
+        let mut base = scenes::everything(32, spp);
+        base.settings.max_depth = depth;
+        base.settings.seed = seed + 10 * d as u64;
+        let expected = Expected::render(&renderer(&base), |_, _| true);
+        for (k, &(name, direct)) in DIRECT_VARIANTS[1..].iter().enumerate() {
+            let mut s = base.clone();
+            s.settings.direct = direct;
+            s.settings.seed = base.settings.seed + 1 + k as u64;
+            out.push(Rendered {
+                name: format!("{name}, max_depth {depth}"),
+                image: renderer(&s),
+                expected: expected.clone(),
+                block: pool::BLOCK,
+            });
+        }
+    }
+    out
+}
+
+/// Every estimator agrees at every maximum depth: [`render_depths`], judged.
+pub fn depths(renderer: Renderer, options: &Options) -> Verdict {
+    judge(
+        "renderer: every estimator agrees at every maximum depth",
+        &render_depths(renderer, options),
+        options.level(),
+    )
+}
+
 /// Every estimator of one scene agrees: [`render_agreement`], judged.
 pub fn agreement(renderer: Renderer, options: &Options) -> Verdict {
     judge(

@@ -10,7 +10,7 @@ use glam::DVec3;
 
 use super::Renderer;
 use crate::render::image::Image;
-use crate::render::scene::Scene;
+use crate::render::scene::{DirectLight, Scene};
 
 /// Every pixel of `image` `1 + bias` times brighter.
 pub fn brighten(image: &mut Image, bias: f64) {
@@ -51,6 +51,24 @@ pub fn local(
         let mut image = renderer(scene);
         brighten_square(&mut image, bias, (x, y), side);
         image
+    }
+}
+
+/// `renderer` with light sampling one vertex too deep: a scene estimated by light sampling
+/// alone (`DirectLight::Light`) is rendered with one bounce more than its `max_depth`,
+/// which is what next-event estimation at the path's last vertex adds (the mistake of
+/// sampling a light from a vertex whose BSDF half is never traced).
+pub fn light_sampling_one_vertex_deeper(
+    renderer: Renderer<'_>,
+) -> impl Fn(&Scene) -> Image + Sync + '_ {
+    move |scene| {
+        if scene.settings.direct == DirectLight::Light {
+            let mut deeper = scene.clone();
+            deeper.settings.max_depth += 1;
+            renderer(&deeper)
+        } else {
+            renderer(scene)
+        }
     }
 }
 

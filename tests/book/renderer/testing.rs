@@ -117,6 +117,38 @@ fn agreement_rejects_an_estimator_ten_percent_off() {
     }
 }
 
+fn depth_images() -> &'static [Rendered] {
+    static IMAGES: OnceLock<Vec<Rendered>> = OnceLock::new();
+    IMAGES.get_or_init(|| render::render_depths(&ours, &Options::default()))
+}
+
+#[test]
+fn every_estimator_agrees_at_every_maximum_depth() {
+    let v = judge(
+        "renderer: every estimator agrees at every maximum depth",
+        depth_images(),
+        test_alpha(),
+    );
+    println!("{v}");
+    v.assert_pass();
+}
+
+#[test]
+fn depth_agreement_rejects_light_sampling_at_the_last_vertex() {
+    let planted = planted::light_sampling_one_vertex_deeper(&ours);
+    let v = render::depths(&planted, &Options::default());
+    for depth in render::DEPTHS {
+        let name = format!("light sampling only, max_depth {depth}: global");
+        assert!(v.failed(&name), "{name} passed:\n{v}");
+    }
+    for r in depth_images() {
+        if !r.name.starts_with("light sampling only") {
+            let name = format!("{}: global", r.name);
+            assert!(!v.failed(&name), "{name} failed:\n{v}");
+        }
+    }
+}
+
 #[test]
 fn every_canonical_scene_matches_its_reference() {
     let v = judge(
