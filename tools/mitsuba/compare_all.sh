@@ -143,6 +143,10 @@ import numpy as np
 import mitsuba as mi
 mi.set_variant("scalar_rgb")
 work, root, spp, passes, variant = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
+sys.path.insert(0, os.path.join(root, "tools", "values"))
+from values import Record, slug
+record = Record("mitsuba_compare.md")
+compared = []  # (scene, verdict, mean z², RMSE, bright verdict, control verdict, control z², control RMSE)
 cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "unknown CPU")
 
 def channels(path):
@@ -188,7 +192,14 @@ for scene, name, verdict in rows:
         bright = f"{bw.replace('**', '')} (z {-max(bz, key=abs):+.1f})"
         cw, cz2, crmse, _ = summary(f"{work}/{name}.control.txt")
         control = f"{cw}, {cz2:.3f}, {crmse:.3e}"
+        compared.append((scene, word, z2, rmse, bw.replace("**", ""), cw, cz2, crmse))
+        key = slug(scene)
+        record.number(f"{key}.mean_z2", z2, ".3")
+        record.number(f"{key}.control_mean_z2", cz2, ".3")
+        record.number(f"{key}.rmse_over_control", rmse / crmse, "int")
     ratio = ref["pixel_samples_per_second"] / mit["pixel_samples_per_second"]
+    if name.endswith("-hdrfilm"):
+        record.claim("hdrfilm_differs", word == "**differ**", f"furnace-grey with Mitsuba's hdrfilm: {word}")
     print(f"| {label} | {word} | {z2:.3f} | {rmse:.3e} | {rel} | {bright} | {control} "
           f"| {ref['spp']} spp, {ref['seconds']:.1f} s ({ref['threads']} threads) "
           f"| {mit['seconds']:.1f} s, {mit['cpu_seconds']:.1f} s of CPU ({mit['threads']} threads) | {ratio:.2f} |")
@@ -207,6 +218,29 @@ print(f"*`tools/mitsuba/compare_all.sh {spp} {passes} {variant}` on {cpu}, {os.c
       "`hdrfilm` row renders the same file with Mitsuba's own film in place of the exported `specfilm`. "
       "raylemma's time is its reference's render, from its JSON sidecar; the throughputs were measured at "
       "different times under different loads, so their ratio is indicative only.*")
+def listed(f):
+    return "; ".join(f"{c[0]}: {f(c)}" for c in compared)
+record.claim(
+    "every_expressible_scene_agrees_brighter_differs_control_close",
+    all(c[1] == "agree" and c[4] == "differ" and c[5] == "agree" and abs(c[2] - c[6]) < 0.1
+        for c in compared),
+    "verdict, 3 % brighter, control, mean z² against the control's (within 0.1): "
+    + listed(lambda c: f"{c[1]}, {c[4]}, {c[5]}, {c[2]:.3f} vs {c[6]:.3f}"))
+record.number("not_exported", len(refused), "int")
+record.claim("three_not_exported", len(refused) == 3,
+             "not exported: " + ", ".join(s for s, _ in refused))
+record.claim("cornell_mean_z2_above_one_in_both",
+             any(c[0] == "cornell" for c in compared)
+             and all(c[2] > 1 and c[6] > 1 for c in compared if c[0] == "cornell"),
+             "cornell: " + "; ".join(f"{c[2]:.3f} and control {c[6]:.3f}" for c in compared if c[0] == "cornell"))
+record.claim("others_mean_z2_below_one",
+             all(c[2] < 1 for c in compared if c[0] != "cornell"),
+             "mean z² of every scene but cornell below 1: " + listed(lambda c: f"{c[2]:.3f}"))
+lps = [c for c in compared if c[0] == "lamps/low-pressure-sodium"]
+record.claim("low_pressure_sodium_rmse_many_times_the_control",
+             bool(lps) and lps[0][3] > 4 * lps[0][7],
+             "low-pressure sodium: " + (f"RMSE {lps[0][3]:.3e} > 4 x control {lps[0][7]:.3e}" if lps else "not compared"))
+record.write(root, "")
 if refused:
     print()
     print("Not exported (the exporter's message):")

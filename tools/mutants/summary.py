@@ -2,10 +2,18 @@
 
     summary.py OUT N
 
-`outcomes` and `wilson` are shared with tools/mutants/render.sh's table.
+`outcomes` and `wilson` are shared with tools/mutants/render.sh's table. The numbers the book
+quotes are recorded in figures/values.json (tools/values/values.py) as `mutants.*`.
 """
 import json, math, os, sys
 from collections import defaultdict
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools", "values"))
+from values import Record  # noqa: E402
+
+# The derivation modules, whose sample the chapter *Tests of the tests* scales up.
+DERIVATIONS = ["src/sampling", "src/optics", "src/spectral", "src/transport"]
 
 
 def outcomes(out):
@@ -70,6 +78,13 @@ def main():
         print()
         for m in missed[g]:
             print(f"- `{m}`")
+    record = Record("mutants.md")
+    sample = sum(sum(groups[g].values()) for g in DERIVATIONS)
+    factor = n / len(shards)
+    record.number("derivations.sample", sample, "int")
+    record.number("derivations.sample_factor", factor, "int")
+    record.number("derivations.estimated_total", sample * factor, "s2")
+    record.write(ROOT, "")
 
 
 if __name__ == "__main__":

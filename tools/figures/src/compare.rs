@@ -111,6 +111,118 @@ fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, String
     Ok(out)
 }
 
+/// The comparisons the renderer chapter states about the calibration table, each as strong
+/// as its sentence.
+fn calibration_claims(r: &mut Record<'_>, all: &[(&str, usize, Counts)], n: u32) {
+    let get = |scene: &str, set: usize| {
+        all.iter()
+            .find(|(s, k, _)| *s == scene && *k == set)
+            .map(|(_, _, c)| *c)
+            .unwrap_or_default()
+    };
+    let list = |f: &dyn Fn(&Counts) -> String| {
+        all.iter()
+            .map(|(s, k, c)| format!("{s} {}: {}", set_name(*k), f(c)))
+            .collect::<Vec<_>>()
+            .join("; ")
+    };
+    let worst = all
+        .iter()
+        .map(|(_, _, c)| c.false_alarms)
+        .max()
+        .unwrap_or(0);
+    r.number("max_false_alarms", f64::from(worst), "int");
+    let contains = |k: u32| {
+        let (lo, hi) = wilson(k, n);
+        lo <= ALPHA && ALPHA <= hi
+    };
+    r.claim(
+        "every_interval_contains_the_level",
+        all.iter().all(|(_, _, c)| contains(c.false_alarms)),
+        format!(
+            "false alarms of {n} trials, each row's 95 % Wilson interval must contain {ALPHA}: {}",
+            list(&|c| {
+                let (lo, hi) = wilson(c.false_alarms, n);
+                format!("{} ({lo:.3}-{hi:.3})", c.false_alarms)
+            })
+        ),
+    );
+    let few = [
+        ("cornell-diffuse", 2),
+        ("cornell-diffuse", 4),
+        ("cornell", 2),
+        ("cornell", 4),
+    ];
+    r.claim(
+        "normal_values_alarm_in_most_trials_with_few_images",
+        few.iter()
+            .all(|&(s, k)| 2 * get(s, k).normal_false_alarms > n),
+        format!(
+            "with normal critical values, more than half of {n}: {}",
+            list(&|c| c.normal_false_alarms.to_string())
+        ),
+    );
+    let sixteen = get("cornell-diffuse", 16).normal_false_alarms;
+    r.claim(
+        "normal_values_alarm_too_often_with_sixteen",
+        wilson(sixteen, n).0 > ALPHA,
+        format!(
+            "cornell-diffuse, 16 images, normal critical values: {sixteen} of {n}, 95 % interval from {:.3}, above {ALPHA}",
+            wilson(sixteen, n).0
+        ),
+    );
+    r.claim(
+        "one_image_columns_equal",
+        SCENES.iter().all(|s| {
+            let c = get(s, 0);
+            c.false_alarms == c.normal_false_alarms
+        }),
+        format!(
+            "one image with its variance channels: false alarms and with normal values: {}",
+            list(&|c| format!("{} and {}", c.false_alarms, c.normal_false_alarms))
+        ),
+    );
+    r.claim(
+        "mean_z2_falls_below_one_with_fewer_images",
+        SCENES.iter().all(|s| {
+            let z = |k| get(s, k).mean_z2;
+            z(2) < z(4) && z(4) < z(16) && z(16) < 1.0
+        }),
+        format!(
+            "mean z² of 2 < 4 < 16 images < 1: {}",
+            list(&|c| format!("{:.3}", c.mean_z2))
+        ),
+    );
+    r.claim(
+        "diffuse_three_percent_noticed_by_every_set",
+        SETS.iter()
+            .all(|&k| get("cornell-diffuse", k).detected[1] == n),
+        format!(
+            "cornell-diffuse, 3 % brighter, detected in all {n}: {}",
+            list(&|c| c.detected[1].to_string())
+        ),
+    );
+    r.claim(
+        "diffuse_one_percent_noticed_by_sixteen_and_one_image",
+        [0, 16].iter().all(|&k| 10 * get("cornell-diffuse", k).detected[0] >= 9 * n),
+        format!("cornell-diffuse, 1 % brighter, detected in at least 90 % of {n} by 16 images and by one image: {}", list(&|c| c.detected[0].to_string())),
+    );
+    r.claim(
+        "cornell_three_percent_only_sixteen_and_one_image",
+        [0, 16].iter().all(|&k| 2 * get("cornell", k).detected[1] > n)
+            && [2, 4].iter().all(|&k| 10 * get("cornell", k).detected[1] < n),
+        format!("cornell, 3 % brighter: 16 images and one image in more than half of {n}, 2 and 4 images in under a tenth: {}", list(&|c| c.detected[1].to_string())),
+    );
+    r.claim(
+        "cornell_one_percent_noticed_by_none",
+        SETS.iter().all(|&k| get("cornell", k).detected[0] <= 5),
+        format!(
+            "cornell, 1 % brighter, at most 5 of {n} in every row: {}",
+            list(&|c| c.detected[0].to_string())
+        ),
+    );
+}
+
 /// The scenes calibrated: `cornell-diffuse` (every surface diffuse: next-event estimation
 /// does the work, pixels are nearly normal) and `cornell` (caustics through the glass and
 /// the mirror: heavy-tailed pixels).
@@ -139,7 +251,16 @@ fn calibrate(settings: &Settings, name: &str, trials: u64) -> Result<[Counts; 4]
     Ok(counts)
 }
 
-fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// A candidate set as a value name: `one_image`, `plain2`, `plain4`, `plain16`.
+fn set_name(set: usize) -> String {
+    if set == 0 {
+        "one_image".into()
+    } else {
+        format!("plain{set}")
+    }
+}
+
+fn calibration_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let trials: u64 = if settings.quick { 2 } else { 100 };
     let n = u32::try_from(trials)?;
     let rate = |k: u32| {
@@ -157,6 +278,7 @@ fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
         "| scene | candidate | degrees of freedom of a pixel | false alarms (nominal 1 %; 95 % interval) | with normal critical values | 1 % brighter detected | 3 % brighter detected | mean z² |"
     )?;
     writeln!(md, "|---|---|---:|---:|---:|---:|---:|---:|")?;
+    let mut all = Vec::new();
     for name in SCENES {
         let counts = calibrate(settings, name, trials)?;
         for (&set, c) in SETS.iter().zip(&counts) {
@@ -174,17 +296,25 @@ fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
                     set as u32 - 1,
                 )
             };
+            let key = format!("{}.{}", name.replace('-', "_"), set_name(set));
+            let count = |r: &mut Record<'_>, what: &str, k: u32| {
+                r.number(&format!("{key}.{what}"), f64::from(k), "int")
+            };
+            count(r, "false_alarms", c.false_alarms);
+            count(r, "normal_false_alarms", c.normal_false_alarms);
             writeln!(
                 md,
-                "| `{name}` | {what} | {dof} | {} | {} | {} of {n} | {} of {n} | {:.3} |",
+                "| `{name}` | {what} | {dof} | {} | {} | {} of {n} | {} of {n} | {} |",
                 rate(c.false_alarms),
                 rate(c.normal_false_alarms),
-                c.detected[0],
-                c.detected[1],
-                c.mean_z2
+                count(r, "detected_1pc", c.detected[0]),
+                count(r, "detected_3pc", c.detected[1]),
+                r.number(&format!("{key}.mean_z2"), c.mean_z2, ".3"),
             )?;
+            all.push((name, set, *c));
         }
     }
+    calibration_claims(r, &all, n);
     writeln!(
         md,
         "\n*Each scene at {SIDE}x{SIDE} pixels, {trials} trials, each with its own reference of {REFERENCE_SPP} spp and its own candidates (independent seeds), compared at `--alpha {ALPHA}`. \"Normal critical values\": the same comparisons with both sides' degrees of freedom taken as infinite. The brighter scenes are the candidates with every pixel {} % higher: the images of the same seeds under a light that much brighter.{}*",

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::timing::{machine_name, quick_note};
-use super::{Output, Record, Settings};
+use super::{Output, Record, Settings, job};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
@@ -193,7 +193,12 @@ fn references_md(rendered: &[Rendered], settings: &Settings) -> String {
     md
 }
 
-fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered, settings: &Settings) -> String {
+fn speed_md(
+    series: &[(u32, f64, f64)],
+    reference: &Rendered,
+    settings: &Settings,
+    r: &mut Record<'_>,
+) -> String {
     let pixels = f64::from(reference.image.width) * f64::from(reference.image.height);
     let mut md = String::from(
         "| spp | seconds | pixel samples / s | RMSE | RMSE² × seconds |\n|---:|---:|---:|---:|---:|\n",
@@ -206,6 +211,15 @@ fn speed_md(series: &[(u32, f64, f64)], reference: &Rendered, settings: &Setting
             e * e * s
         );
     }
+    let work: Vec<f64> = series.iter().map(|&(_, s, e)| e * e * s).collect();
+    r.number(
+        "work.min",
+        work.iter().copied().fold(f64::INFINITY, f64::min),
+        "s2",
+    );
+    r.number("work.max", work.iter().copied().fold(0.0, f64::max), "s2");
+    let spp = |f: fn(u32, u32) -> u32| series.iter().map(|x| x.0).reduce(f).unwrap_or(1);
+    r.number("spp_range", f64::from(spp(u32::max) / spp(u32::min)), "int");
     let _ = write!(
         md,
         "\n*`cornell`, 256x256, against the reference of {} spp (another seed; its own variance subtracted); {} worker threads on {}{}.*\n",
@@ -354,20 +368,27 @@ pub fn write_references(
     for r in rendered.iter().filter(|r| fresh.contains(&r.name)) {
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
+    let values = raylemma_values::read(figures)?;
+    let mut record = Record::new("render_speed.md", &values);
+    let speed = speed_md(&series, &rendered[0], settings, &mut record).into_bytes();
     let flat: [(&str, Vec<u8>); 3] = [
         (
             "render_references.md",
             references_md(&rendered, settings).into_bytes(),
         ),
-        (
-            "render_speed.md",
-            speed_md(&series, &rendered[0], settings).into_bytes(),
-        ),
         ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
+        ("render_speed.md", speed),
     ];
-    for (name, bytes) in flat {
-        files.write(&figures.join(name), &bytes)?;
+    for (name, bytes) in &flat {
+        files.write(&figures.join(name), bytes)?;
     }
+    let entry = record.finish(&flat[2].1, settings.quick)?;
+    job::stage_values(
+        figures,
+        values,
+        vec![("render_speed.md", entry)],
+        &mut files,
+    )?;
     Ok(files.commit()?)
 }
 

@@ -18,6 +18,7 @@ use raylemma::check::render::{
     Rendered, ours, planted, references, render_agreement, render_exact,
 };
 use raylemma::stats::{sidak, test_alpha};
+use raylemma_values::slug;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -98,7 +99,62 @@ fn percent(b: Option<f64>) -> String {
     b.map_or_else(|| "> 50 %".into(), |b| format!("{} %", 100.0 * b))
 }
 
-fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// The comparisons the chapter *Testing the renderer* states about the power table.
+fn power_claims(rec: &mut Record<'_>, rows: &[Row]) {
+    let smooth = [
+        "floor under a quad light",
+        "floor under a sphere light",
+        "glass sphere in a sky",
+        "mirror sphere in a sky",
+        "thin film in a sky",
+    ];
+    let global = |check: &str, name: &str| {
+        rows.iter()
+            .find(|r| r.check == check && r.name == name)
+            .and_then(|r| r.global)
+            .unwrap_or(f64::INFINITY)
+    };
+    let read = |names: &[&str], check: &str| {
+        names
+            .iter()
+            .map(|n| format!("{n}: {}", percent(Some(global(check, n)))))
+            .collect::<Vec<_>>()
+            .join("; ")
+    };
+    rec.claim(
+        "exact_smooth_below_one_percent",
+        smooth.iter().all(|n| global("exact", n) < 0.01),
+        format!("smallest global bias below 1 %: {}", read(&smooth, "exact")),
+    );
+    rec.claim(
+        "exact_smooth_at_most_half_a_percent",
+        smooth.iter().all(|n| global("exact", n) <= 0.005),
+        format!(
+            "smallest global bias at most 0.5 %: {}",
+            read(&smooth, "exact")
+        ),
+    );
+    let agreement: Vec<&str> = rows
+        .iter()
+        .filter(|r| r.check == "agreement")
+        .map(|r| r.name.as_str())
+        .collect();
+    let worst = agreement
+        .iter()
+        .map(|n| global("agreement", n))
+        .fold(0.0, f64::max);
+    rec.number("agreement_worst_smallest_global", 100.0 * worst, "s2");
+    rec.claim(
+        "agreement_worst_above_ten_percent",
+        worst > 0.10,
+        format!(
+            "the agreement check's largest threshold above 10 %: {}",
+            read(&agreement, "agreement")
+        ),
+    );
+}
+
+fn power_md(settings: &Settings, rec: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let seeds: u64 = if settings.quick { 2 } else { 10 };
     let root = settings.root.clone();
     let options = |s: u64| Options::default().seed(0xB1A5 + s);
@@ -124,6 +180,10 @@ fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     )?;
     writeln!(md, "|---|---|---:|---:|---:|---:|---:|")?;
     for r in &rows {
+        let key = format!("{}.{}", r.check, slug(&r.name));
+        if let Some(g) = r.global {
+            rec.number(&format!("{key}.smallest_global"), 100.0 * g, "s2");
+        }
         writeln!(
             md,
             "| {} | {} | {} | {b} x {b} | {} | {} | {} |",
@@ -136,6 +196,7 @@ fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
             b = r.block
         )?;
     }
+    power_claims(rec, &rows);
     writeln!(
         md,
         "\n*Each check's images rendered with {seeds} seeds at the settings of `cargo test` \

@@ -76,6 +76,24 @@ pub fn valid_name(name: &str) -> bool {
         })
 }
 
+/// A label as one word of a value name: lowercase, every run of other characters one `_`
+/// (`"floor under a quad light"` -> `floor_under_a_quad_light`, `"cornell-diffuse"` ->
+/// `cornell_diffuse`).
+pub fn slug(label: &str) -> String {
+    let mut out = String::new();
+    for c in label.chars() {
+        if c.is_ascii_alphanumeric() {
+            out.push(c.to_ascii_lowercase());
+        } else if !out.is_empty() && !out.ends_with('_') {
+            out.push('_');
+        }
+    }
+    while out.ends_with('_') {
+        out.pop();
+    }
+    out
+}
+
 /// The values of one output as its figure code makes it.
 pub struct Record<'a> {
     entry: Entry,
@@ -303,6 +321,15 @@ mod tests {
         assert_eq!(format_number(3.0, "x1").unwrap(), "3.0");
         assert_eq!(format_number(f64::NAN, ".2").unwrap(), "NaN");
         assert!(format_number(1.0, "q").is_err());
+    }
+
+    #[test]
+    fn labels_become_name_words() {
+        assert_eq!(slug("floor under a quad light"), "floor_under_a_quad_light");
+        assert_eq!(slug("cornell-diffuse"), "cornell_diffuse");
+        assert_eq!(slug("MIS, balance heuristic"), "mis_balance_heuristic");
+        assert_eq!(slug("`lamps/amber-led` (2x)"), "lamps_amber_led_2x");
+        assert!(valid_name(&slug("Ünïcode ok?")));
     }
 
     #[test]
