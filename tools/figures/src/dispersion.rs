@@ -285,7 +285,7 @@ fn prism_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn prism_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn prism_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let apex = APEX_DEG.to_radians();
     let mut md = String::new();
     writeln!(
@@ -293,14 +293,23 @@ fn prism_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         "| material | line | n | incidence at minimum (numerical) | D_min numerical | D_min closed form | n recovered from D_min | limiting incidence |"
     )?;
     writeln!(md, "|---|---|---:|---:|---:|---:|---:|---:|")?;
+    // Per material: the spread of the visible spectrum, D_min(F) − D_min(C) in degrees
+    // (from the numerical minima), and the Abbe number.
+    let mut spreads = Vec::new();
     for name in [N_BK7, FUSED_SILICA] {
         let g = disp::material(name);
+        let (mut at_f, mut at_c) = (f64::NAN, f64::NAN);
         for (line, l) in [("F", LINE_F_NM), ("d", LINE_D_NM), ("C", LINE_C_NM)] {
             let n = g.index(l);
             let (i, dn) = disp::minimum_deviation_numeric(n, apex).ok_or("no ray through")?;
             let de = disp::minimum_deviation_analytic(n, apex).ok_or("no ray through")?;
             let back = disp::index_from_minimum_deviation(apex, de);
             let lim = disp::prism_limiting_incidence(n, apex).ok_or("no ray through")?;
+            match line {
+                "F" => at_f = dn.to_degrees(),
+                "C" => at_c = dn.to_degrees(),
+                _ => {}
+            }
             writeln!(
                 md,
                 "| {name} | {line} | {n:.5} | {:.4}° | {:.6}° | {:.6}° | {back:.5} | {:.2}° |",
@@ -310,7 +319,22 @@ fn prism_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
                 lim.to_degrees()
             )?;
         }
+        let key = if name == N_BK7 {
+            "n_bk7"
+        } else {
+            "fused_silica"
+        };
+        r.number(&format!("{key}.spread_deg"), at_f - at_c, ".3");
+        spreads.push((at_f - at_c, g.abbe()));
     }
+    let ((bk7, bk7_abbe), (silica, silica_abbe)) = (spreads[0], spreads[1]);
+    r.claim(
+        "fused_silica_larger_abbe_spreads_less",
+        silica_abbe > bk7_abbe && silica < bk7,
+        format!(
+            "fused silica's Abbe number {silica_abbe:.2} > N-BK7's {bk7_abbe:.2}, and its F−C spread of D_min {silica:.4}° < N-BK7's {bk7:.4}°"
+        ),
+    );
     writeln!(
         md,
         "\n*Apex angle {APEX_DEG:.0}°. Numerical: golden-section search of the traced deviation over the \

@@ -64,48 +64,65 @@ pub fn worst64(normals: &[DVec3], f: Construction) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// The orthonormality bound the tests assert, in units of the precision's epsilon.
+const BOUND_EPS: f64 = 4.0;
+
+/// One point of the approach to the south pole: `1 + z` of the (rounded) normals, and the
+/// worst error of Frisvad's and of Duff et al.'s frame over their ring.
+struct PolePoint {
+    dz: f64,
+    frisvad: f64,
+    duff: f64,
+}
+
+/// The figure's approach to `(0, 0, -1)`: `1 + z` from 1 down to 1e-7 (f32) and 1e-15
+/// (f64), four points per decade, each a ring of normals.
+fn pole_sweep(settings: &Settings) -> (Vec<PolePoint>, Vec<PolePoint>) {
     let azimuths = if settings.quick { 64 } else { 1024 };
-    // 1 + z from 1 down to 1e-7 (f32) and 1e-15 (f64), four points per decade.
     let deltas = |decades: i32| -> Vec<f64> {
         (0..=4 * decades)
             .map(|k| 10f64.powf(-f64::from(k) / 4.0))
             .collect()
     };
-    let series32 = |label: &str, f: frame32::Construction| {
-        Series::line(
-            label,
-            deltas(7)
-                .into_iter()
-                .map(|d| {
-                    // The distance the rounded normals really have from z = -1.
-                    let normals = ring(d, azimuths);
-                    let dz = 1.0 + f64::from(normals[0].as_vec3().z);
-                    (dz, worst32(&normals, f))
-                })
-                .collect(),
-        )
-    };
-    let series64 = |label: &str, f: Construction| {
-        Series::line(
-            label,
-            deltas(15)
-                .into_iter()
-                .map(|d| {
-                    let normals = ring(d, azimuths);
-                    (1.0 + normals[0].z, worst64(&normals, f))
-                })
-                .collect(),
-        )
-    };
+    let f32s = deltas(7)
+        .into_iter()
+        .map(|d| {
+            let normals = ring(d, azimuths);
+            PolePoint {
+                // The distance the rounded normals really have from z = -1.
+                dz: 1.0 + f64::from(normals[0].as_vec3().z),
+                frisvad: worst32(&normals, frame32::frisvad),
+                duff: worst32(&normals, frame32::duff),
+            }
+        })
+        .collect();
+    let f64s = deltas(15)
+        .into_iter()
+        .map(|d| {
+            let normals = ring(d, azimuths);
+            PolePoint {
+                dz: 1.0 + normals[0].z,
+                frisvad: worst64(&normals, frisvad),
+                duff: worst64(&normals, duff),
+            }
+        })
+        .collect();
+    (f32s, f64s)
+}
+
+fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    let (sweep32, sweep64) = pole_sweep(settings);
+    fn line(label: &str, sweep: &[PolePoint], pick: fn(&PolePoint) -> f64) -> Series {
+        Series::line(label, sweep.iter().map(|p| (p.dz, pick(p))).collect())
+    }
     let panels = [
         Panel::new(
             "f32: worst error over a ring of normals",
             "1 + z (distance from (0, 0, −1))",
             "worst error (f32 epsilons)",
             vec![
-                series32("Frisvad 2012", frame32::frisvad),
-                series32("Duff et al. 2017", frame32::duff),
+                line("Frisvad 2012", &sweep32, |p| p.frisvad),
+                line("Duff et al. 2017", &sweep32, |p| p.duff),
             ],
         )
         .log_x()
@@ -115,8 +132,8 @@ fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
             "1 + z",
             "worst error (f64 epsilons)",
             vec![
-                series64("Frisvad 2012", frisvad),
-                series64("Duff et al. 2017", duff),
+                line("Frisvad 2012", &sweep64, |p| p.frisvad),
+                line("Duff et al. 2017", &sweep64, |p| p.duff),
             ],
         )
         .log_x()
@@ -125,10 +142,10 @@ fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
     plot::chart(&panels, 2)
 }
 
-fn errors_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn errors_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 10_000 } else { 100_000 };
-    let mut r = rng::seeded(1);
-    let random: Vec<DVec3> = (0..n).map(|_| sphere_uniform(&mut r)).collect();
+    let mut g = rng::seeded(1);
+    let random: Vec<DVec3> = (0..n).map(|_| sphere_uniform(&mut g)).collect();
     let upper: Vec<DVec3> = random
         .iter()
         .map(|v| DVec3::new(v.x, v.y, v.z.abs()))
@@ -141,24 +158,74 @@ fn errors_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
         "| normals | Duff et al., f32 | Frisvad, f32 | Duff et al., f64 | Frisvad, f64 |"
     )?;
     writeln!(md, "|---|---:|---:|---:|---:|")?;
-    for (name, n32, n64) in [
-        ("random, whole sphere", &random, &random),
-        ("random, upper hemisphere (z ≥ 0)", &upper, &upper),
+    // Per row: (value name, Duff f32, Frisvad f32, Duff f64, Frisvad f64).
+    let mut rows = Vec::new();
+    for (key, name, n32, n64) in [
+        ("random_sphere", "random, whole sphere", &random, &random),
         (
+            "random_upper_hemisphere",
+            "random, upper hemisphere (z ≥ 0)",
+            &upper,
+            &upper,
+        ),
+        (
+            "near_south_pole",
             "z = −1 + 10⁻ᵏ, k = 1…7 (f32) and 1…15 (f64)",
             &pole32,
             &pole64,
         ),
     ] {
-        writeln!(
-            md,
-            "| {name} | {:.2} | {:.3e} | {:.2} | {:.3e} |",
+        let e = (
             worst32(n32, frame32::duff),
             worst32(n32, frame32::frisvad),
             worst64(n64, duff),
-            worst64(n64, frisvad)
+            worst64(n64, frisvad),
+        );
+        rows.push((key, e));
+        writeln!(
+            md,
+            "| {name} | {} | {} | {} | {} |",
+            r.number(&format!("{key}.duff_f32"), e.0, ".2"),
+            r.text(&format!("{key}.frisvad_f32"), format!("{:.3e}", e.1)),
+            r.number(&format!("{key}.duff_f64"), e.2, ".2"),
+            r.text(&format!("{key}.frisvad_f64"), format!("{:.3e}", e.3)),
         )?;
     }
+    let duff_rows = rows
+        .iter()
+        .map(|(k, e)| format!("{k}: f32 {:.2}, f64 {:.2}", e.0, e.2))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let rows_within = rows
+        .iter()
+        .all(|(_, e)| e.0 <= BOUND_EPS && e.2 <= BOUND_EPS);
+    r.claim(
+        "duff_within_bound_every_row",
+        rows_within,
+        format!("Duff et al.'s worst error <= {BOUND_EPS} ε on every row ({duff_rows})"),
+    );
+    // "All the way": the rows and every point of the figure's approach to the pole.
+    let (sweep32, sweep64) = pole_sweep(settings);
+    let worst_sweep = |sweep: &[PolePoint]| sweep.iter().map(|p| p.duff).fold(0.0, f64::max);
+    let (s32, s64) = (worst_sweep(&sweep32), worst_sweep(&sweep64));
+    r.claim(
+        "duff_within_bound_all_the_way",
+        rows_within && s32 <= BOUND_EPS && s64 <= BOUND_EPS,
+        format!(
+            "Duff et al.'s worst error <= {BOUND_EPS} ε on every row ({duff_rows}) and along the figure's approach to the pole (f32 {s32:.2}, f64 {s64:.2})"
+        ),
+    );
+    // Frisvad's error near the pole against away from it (the upper hemisphere).
+    let (away, pole) = (rows[1].1, rows[2].1);
+    let (g32, g64) = (pole.1 / away.1, pole.3 / away.3);
+    r.claim(
+        "frisvad_grows_by_orders_of_magnitude_towards_the_pole",
+        g32 >= 100.0 && g64 >= 100.0,
+        format!(
+            "Frisvad's worst error near the south pole over that on the upper hemisphere: f32 {:.3e}/{:.3e} = {g32:.1e} >= 100, f64 {:.3e}/{:.3e} = {g64:.1e} >= 100",
+            pole.1, away.1, pole.3, away.3
+        ),
+    );
     writeln!(
         md,
         "\n*Worst of \\|\\|t\\| − 1\\|, \\|\\|b\\| − 1\\|, \\|t·b\\|, \\|t·n\\|, \\|b·n\\| and \\|t × b − n\\| in units of the precision's ε; {n} random normals, 256 per ring. The tests assert 4 ε. Generated by `tools/figures/src/frame.rs`.*"
@@ -179,13 +246,14 @@ fn time_frames<V: Copy>(normals: &[V], reps: usize, f: impl Fn(V) -> f64) -> f64
     })
 }
 
-fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 201 };
     let n64 = timing_normals(4096);
     let n32: Vec<Vec3> = n64.iter().map(|n| n.as_vec3()).collect();
     // Direct calls (not through a function pointer), so each construction is inlined.
     let rows = [
         (
+            "duff",
             "Duff et al. 2017 (`Frame::from_normal`)",
             "f32",
             time_frames(&n32, reps, |n| {
@@ -194,6 +262,7 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
             }),
         ),
         (
+            "frisvad",
             "Frisvad 2012",
             "f32",
             time_frames(&n32, reps, |n| {
@@ -202,6 +271,7 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
             }),
         ),
         (
+            "duff",
             "Duff et al. 2017 (`Frame::from_normal`)",
             "f64",
             time_frames(&n64, reps, |n| {
@@ -210,6 +280,7 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
             }),
         ),
         (
+            "frisvad",
             "Frisvad 2012",
             "f64",
             time_frames(&n64, reps, |n| {
@@ -218,6 +289,7 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
             }),
         ),
         (
+            "helper_axis",
             "helper axis, cross product, normalise",
             "f64",
             time_frames(&n64, reps, |n| {
@@ -229,8 +301,12 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     let mut md = String::new();
     writeln!(md, "| construction | precision | ns per frame (median) |")?;
     writeln!(md, "|---|---|---:|")?;
-    for (name, precision, ns) in rows {
-        writeln!(md, "| {name} | {precision} | {ns:.2} |")?;
+    for (key, name, precision, ns) in rows {
+        writeln!(
+            md,
+            "| {name} | {precision} | {} |",
+            r.number(&format!("{key}.{precision}_ns"), ns, ".2")
+        )?;
     }
     writeln!(
         md,

@@ -176,7 +176,7 @@ fn efficiency_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
     plot::chart(&panels, 1)
 }
 
-fn efficiency_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn efficiency_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let s = study(settings);
     let mut md = String::new();
     writeln!(
@@ -225,14 +225,38 @@ fn efficiency_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Box
         f64::NAN,
         f64::NAN,
     )?;
-    let best = s
+    r.number(
+        "throughput.efficiency_measured",
+        efficiency(&s.throughput),
+        ".5",
+    );
+    // The best fixed q of the ladder, and the ends of the ladder against it.
+    let (best_q, best) = s
         .fixed
         .iter()
         .max_by(|a, b| efficiency(&a.1).total_cmp(&efficiency(&b.1)))
-        .map_or(f64::NAN, |(q, _)| *q);
+        .ok_or("no fixed survival probability")?;
+    let best_eff = efficiency(best);
+    r.number("best_fixed.efficiency_measured", best_eff, "s3");
+    let (low_q, low) = s.fixed.first().ok_or("no fixed survival probability")?;
+    let (high_q, high) = s.fixed.last().ok_or("no fixed survival probability")?;
+    let (low_eff, high_eff) = (efficiency(low), efficiency(high));
+    let (low_var, best_var) = (low.summary.variance(), best.summary.variance());
+    r.claim(
+        "fixed_efficiency_falls_away_at_both_ends",
+        low_eff < 0.5 * best_eff
+            && high_eff < 0.5 * best_eff
+            && low_var > best_var
+            && high.vertices > best.vertices,
+        format!(
+            "efficiency at q = {low_q} {low_eff:.5} and at q = {high_q} {high_eff:.5} < half the best fixed q's (q = {best_q}) {best_eff:.5}; \
+             variance at q = {low_q} {low_var:.4} > at q = {best_q} {best_var:.4}; mean vertices at q = {high_q} {:.2} > at q = {best_q} {:.2}",
+            high.vertices, best.vertices
+        ),
+    );
     writeln!(
         md,
-        "\n*Furnace L_e = 1, a = {}, directions uniform on the hemisphere (bounce weight 2a cos θ, E[w²] = {:.4}: the variance is infinite for q ≤ E[w²]). Predicted optimum q = {:.3} (formula); best measured q on this grid = {best}. Time per vertex fitted: {:.1} ns. {}.*",
+        "\n*Furnace L_e = 1, a = {}, directions uniform on the hemisphere (bounce weight 2a cos θ, E[w²] = {:.4}: the variance is infinite for q ≤ E[w²]). Predicted optimum q = {:.3} (formula); best measured q on this grid = {best_q}. Time per vertex fitted: {:.1} ns. {}.*",
         FURNACE.albedo,
         FURNACE.weight_second_moment(),
         s.optimum,

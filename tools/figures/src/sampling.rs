@@ -144,7 +144,35 @@ fn chi2_p(w: &dyn Warp, samples: usize, seed: u64) -> f64 {
     warp::chi_squared(w, &options).map_or(f64::NAN, |(c, _, _)| c.p_value)
 }
 
-fn methods_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// A sampler of the methods table as a value name: `cosine, Malley (concentric)` ->
+/// `cosine_malley`.
+fn sampler_key(name: &str) -> String {
+    match name {
+        "sphere, inverse CDF" => "sphere_inverse_cdf".into(),
+        "sphere, Gaussian" => "sphere_gaussian".into(),
+        "sphere, rejection" => "sphere_rejection".into(),
+        "hemisphere, flipped inverse CDF" => "hemisphere_flipped_inverse_cdf".into(),
+        "disc, polar" => "disc_polar".into(),
+        "disc, concentric" => "disc_concentric".into(),
+        "cosine, seed angles" => "cosine_seed_angles".into(),
+        "cosine, seed Cartesian" => "cosine_seed_cartesian".into(),
+        "cosine, Malley (concentric)" => "cosine_malley".into(),
+        other => value_name(other),
+    }
+}
+
+/// A label as a value name, for a row added without a key of its own: lowercase words of
+/// `a-z` and `0-9` joined by `_`.
+fn value_name(label: &str) -> String {
+    label
+        .to_lowercase()
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect::<Vec<_>>()
+        .join("_")
+}
+
+fn methods_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -152,6 +180,8 @@ fn methods_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
         "| sampler | ns per sample | chi-squared p ({samples} samples) | worst Jacobian error | worst \\| \\|w\\| − 1 \\| | f32: worst \\| \\|w\\| − 1 \\| (ε₃₂) | f32: worst relative error of z (ε₃₂) |"
     )?;
     writeln!(md, "|---|---:|---:|---:|---:|---:|---:|")?;
+    // The f32 relative errors of z, by sampler, for the claims.
+    let mut z_errors: Vec<(String, f64)> = Vec::new();
     for w in correct_samplers() {
         let mut rng = rng::seeded(9);
         let n = 4096;
@@ -186,13 +216,42 @@ fn methods_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
         } else {
             "—".into()
         };
+        let key = sampler_key(&w.name());
         let (norm32, z32) = single_precision(&w.name());
+        if let Some(z) = z32 {
+            z_errors.push((key.clone(), z));
+        }
+        let cell = |x: Option<f64>| x.map_or("—".to_string(), |x| format!("{x:.2}"));
         writeln!(
             md,
-            "| {} | {ns:.1} | {p:.3} | {jac} | {norm} | {norm32} | {z32} |",
-            w.name()
+            "| {} | {} | {p:.3} | {jac} | {norm} | {} | {} |",
+            w.name(),
+            r.number(&format!("{key}.ns"), ns, ".1"),
+            cell(norm32),
+            z32.map_or("—".to_string(), |z| r.number(
+                &format!("{key}.f32_z_error"),
+                z,
+                ".2"
+            )),
         )?;
     }
+    let z_of = |key: &str| {
+        z_errors
+            .iter()
+            .find(|(k, _)| k == key)
+            .map_or(f64::NAN, |&(_, z)| z)
+    };
+    let (malley, seed) = (z_of("cosine_malley"), z_of("cosine_seed_angles"));
+    r.claim(
+        "malley_z_within_one_eps32",
+        malley <= 1.0,
+        format!("Malley's worst relative error of z in f32: {malley:.2} ε₃₂ <= 1 ε₃₂"),
+    );
+    r.claim(
+        "seed_angles_z_beyond_one_eps32",
+        seed > 1.0,
+        format!("the seed's angle form, worst relative error of z in f32: {seed:.2} ε₃₂ > 1 ε₃₂"),
+    );
     writeln!(
         md,
         "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples. f32 columns: the same formulas in single precision (`single` modules) at 200 000 random f32 points of the square plus its corners and edges at 0, 1/2 and the largest f32 below 1; z is compared with the f64 formula at the same point (for the Gaussian and rejection methods, the f32 normalisation of 200 000 vectors of lengths 1e-30 to 1e30).*",
@@ -202,8 +261,8 @@ fn methods_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
 }
 
 /// The f32 columns of the methods table for the sampler called `name`: worst norm error
-/// and worst relative error of `z`, in units of `f32::EPSILON` ("—" where not defined).
-fn single_precision(name: &str) -> (String, String) {
+/// and worst relative error of `z`, in units of `f32::EPSILON` (`None` where not defined).
+fn single_precision(name: &str) -> (Option<f64>, Option<f64>) {
     use glam::{DVec2, Vec2, Vec3};
     use raylemma::check::single::{norm_error, square_points, z_error};
     use raylemma::sampling::{cosine, sphere};
@@ -213,8 +272,8 @@ fn single_precision(name: &str) -> (String, String) {
     let points = square_points(&Options::default());
     let both = |f: F32, exact: F64| {
         (
-            format!("{:.2}", norm_error(f, &points)),
-            format!("{:.2}", z_error(f, exact, &points)),
+            Some(norm_error(f, &points)),
+            Some(z_error(f, exact, &points)),
         )
     };
     match name {
@@ -231,7 +290,7 @@ fn single_precision(name: &str) -> (String, String) {
                     (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
                 })
             }));
-            (format!("{worst:.2}"), "—".into())
+            (Some(worst), None)
         }
         "cosine, seed angles" => both(
             single::cosine::cosine_seed_angles,
@@ -242,7 +301,7 @@ fn single_precision(name: &str) -> (String, String) {
             cosine::cosine_seed_cartesian,
         ),
         "cosine, Malley (concentric)" => both(single::cosine::cosine_malley, cosine::cosine_malley),
-        _ => ("—".into(), "—".into()),
+        _ => (None, None),
     }
 }
 
@@ -250,7 +309,18 @@ fn seeds(settings: &Settings) -> u64 {
     if settings.quick { 40 } else { 400 }
 }
 
-fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// A planted bug of the power table as a value name.
+fn bug_key(name: &str) -> String {
+    match name {
+        "disc, r = u" => "disc_r_equals_u".into(),
+        "sphere, theta uniform (missing sin theta)" => "sphere_theta_uniform".into(),
+        "cosine^1.1 lobe claimed as cosine" => "cosine_1_1_lobe".into(),
+        "uniform hemisphere claimed as cosine" => "uniform_hemisphere_as_cosine".into(),
+        other => value_name(other),
+    }
+}
+
+fn power_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let runs = if settings.quick { 10 } else { 50 };
     let sizes = [10_000, 100_000, 1_000_000];
     let alpha = stats::test_alpha();
@@ -265,23 +335,38 @@ fn power_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
         .map(|w| Box::new(w) as Boxed)
         .collect::<Vec<_>>()
     {
-        let rates: Vec<String> = sizes
-            .iter()
-            .map(|&n| {
-                let ps: Vec<f64> = (0..runs)
-                    .into_par_iter()
-                    .map(|s| chi2_p(bug.as_ref(), n, 1000 + s))
-                    .collect();
-                let errors = ps.iter().filter(|p| p.is_nan()).count();
-                let rejected = ps.iter().filter(|&&p| p < alpha).count();
-                let note = if errors > 0 {
-                    format!(" ({errors} errors)")
-                } else {
-                    String::new()
-                };
-                format!("{:.0} %{note}", 100.0 * rejected as f64 / runs as f64)
-            })
-            .collect();
+        let key = bug_key(&bug.name());
+        let mut shares = Vec::new();
+        let mut rates = Vec::new();
+        for &n in &sizes {
+            let ps: Vec<f64> = (0..runs)
+                .into_par_iter()
+                .map(|s| chi2_p(bug.as_ref(), n, 1000 + s))
+                .collect();
+            let errors = ps.iter().filter(|p| p.is_nan()).count();
+            let rejected = ps.iter().filter(|&&p| p < alpha).count();
+            let note = if errors > 0 {
+                format!(" ({errors} errors)")
+            } else {
+                String::new()
+            };
+            let share = 100.0 * rejected as f64 / runs as f64;
+            shares.push(share);
+            rates.push(r.text(
+                &format!("{key}.rejected_n{n}"),
+                format!("{share:.0} %{note}"),
+            ));
+        }
+        if key == "cosine_1_1_lobe" {
+            r.claim(
+                "cosine_1_1_lobe_needs_about_n100000",
+                shares[0] < 50.0 && shares[1] >= 90.0,
+                format!(
+                    "the cos^1.1 lobe rejected for {:.0} % of the seeds at n = 10 000 < 50 % and {:.0} % at n = 100 000 >= 90 %",
+                    shares[0], shares[1]
+                ),
+            );
+        }
         writeln!(md, "| {} | {} |", bug.name(), rates.join(" | "))?;
     }
     writeln!(
@@ -365,7 +450,7 @@ fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
     Ok(md.into_bytes())
 }
 
-fn distortion_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn distortion_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let grid: Vec<DVec2> = (0..200)
         .flat_map(|i| {
             (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))
@@ -374,6 +459,8 @@ fn distortion_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> 
     let mut md = String::new();
     writeln!(md, "| map | mean anisotropy | worst anisotropy |")?;
     writeln!(md, "|---|---:|---:|")?;
+    // (mean, worst) anisotropy of each map.
+    let mut maps = Vec::new();
     for (name, f) in [
         ("polar", disc_polar as fn(DVec2) -> DVec3),
         ("concentric", disc_concentric),
@@ -381,8 +468,23 @@ fn distortion_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> 
         let a: Vec<f64> = grid.iter().map(|&u| anisotropy(f, u)).collect();
         let mean = a.iter().sum::<f64>() / a.len() as f64;
         let worst = a.iter().copied().fold(0.0, f64::max);
-        writeln!(md, "| {name} | {mean:.2} | {worst:.1} |")?;
+        maps.push((mean, worst));
+        writeln!(
+            md,
+            "| {name} | {} | {} |",
+            r.number(&format!("{name}.mean_anisotropy"), mean, ".2"),
+            r.number(&format!("{name}.worst_anisotropy"), worst, ".1"),
+        )?;
     }
+    let (polar, concentric) = (maps[0], maps[1]);
+    r.claim(
+        "concentric_less_anisotropic",
+        concentric.0 < polar.0 && concentric.1 < polar.1,
+        format!(
+            "concentric mean anisotropy {:.2} < polar {:.2}, and worst {:.1} < polar {:.1}",
+            concentric.0, polar.0, concentric.1, polar.1
+        ),
+    );
     writeln!(
         md,
         "\n*Ratio of the larger to the smaller singular value of the map's Jacobian (1 = cells keep their shape), at the centres of a 200 × 200 grid of the unit square.*"
