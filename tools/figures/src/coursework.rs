@@ -7,7 +7,7 @@ use glam::{DVec2, DVec3};
 use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::check::warp::{self, Domain, SquareWarp};
-use raylemma::check::{self, Options, Verdict};
+use raylemma::check::{self, Finding, Options, Verdict};
 use raylemma::exercise::card::{self, Status};
 use raylemma::exercise::{self, edition, marker, registry, stub};
 use raylemma::optics::fresnel::schlick_seed;
@@ -32,7 +32,7 @@ pub fn outputs() -> Vec<Output> {
         Output {
             file: "coursework_verdict_disc.txt",
             what: "verdict: disc with r = u1",
-            make: |s, _| verdict_txt(s, disc_verdict()),
+            make: disc_verdict_txt,
         },
         Output {
             file: "coursework_disc_rows.txt",
@@ -47,33 +47,22 @@ pub fn outputs() -> Vec<Output> {
         Output {
             file: "coursework_verdict_cosine.txt",
             what: "verdict: cosine pdf without 1/pi",
-            make: |s, _| verdict_txt(s, cosine_verdict()),
+            make: cosine_verdict_txt,
         },
         Output {
             file: "coursework_verdict_schlick.txt",
             what: "verdict: the seed's Schlick",
-            make: |s, _| {
-                verdict_txt(
-                    s,
-                    check::fresnel::reflectance(&schlick_seed, &Options::default()),
-                )
-            },
+            make: schlick_verdict_txt,
         },
         Output {
             file: "coursework_verdict_sphere.txt",
             what: "verdict: the far root",
-            make: |s, _| {
-                let f = check::sphere::planted::always_far_root;
-                verdict_txt(s, check::sphere::intersection(&f, &Options::default()))
-            },
+            make: sphere_verdict_txt,
         },
         Output {
             file: "coursework_verdict_refract.txt",
             what: "verdict: refraction without the square root",
-            make: |s, _| {
-                let f = check::reflect::planted::refract_without_sqrt;
-                verdict_txt(s, check::reflect::refraction(&f, &Options::default()))
-            },
+            make: refract_verdict_txt,
         },
     ]
 }
@@ -107,7 +96,7 @@ fn cosine_verdict() -> Verdict {
 /// The chapter's *Statistical verdicts*: what a correct sampler's chi-squared p-value looks
 /// like over seeds 1 to 12 at the tests' settings, against a small real bug (the `cos^1.1`
 /// lobe claimed as a cosine lobe), whose Jacobian check fails too.
-fn seeds_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn seeds_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     use std::fmt::Write as _;
     let correct = SquareWarp::new("disc, polar", Domain::Disc, disc_polar, disc_pdf);
     let lobe = SquareWarp::new(
@@ -129,25 +118,64 @@ fn seeds_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
             format!("{p:.1e}")
         }
     };
+    let alpha = raylemma::stats::test_alpha();
     let mut md = String::from(
         "| seed | correct polar disc: p | cos^1.1 lobe as cosine: p | the lobe's Jacobian check |\n|---:|---:|---:|---|\n",
     );
+    let (mut disc_p, mut lobe_p, mut as_said) = (Vec::new(), Vec::new(), Vec::new());
     for seed in 1..=12u64 {
         let o = warp_options().seed(seed);
         let jacobian = warp::check(&lobe, &o).finding("jacobian").passed();
+        let (pd, pl) = (p(&correct, &o)?, p(&lobe, &o)?);
+        disc_p.push(pd);
+        lobe_p.push(pl);
+        if !(pd >= alpha && pl < alpha && !jacobian) {
+            as_said.push(format!(
+                "seed {seed}: disc p {pd:.3e}, lobe p {pl:.3e}, lobe's Jacobian {}",
+                if jacobian { "passes" } else { "fails" }
+            ));
+        }
         writeln!(
             md,
             "| {seed} | {} | {} | {} |",
-            show(p(&correct, &o)?),
-            show(p(&lobe, &o)?),
+            show(pd),
+            show(pl),
             if jacobian { "passes" } else { "fails" }
         )?;
     }
+    let range = |ps: &[f64]| {
+        ps.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &p| {
+                (lo.min(p), hi.max(p))
+            })
+    };
+    // As the table shows them: three decimals, or (below 1e-3) two significant digits.
+    let plain = |p: f64| if p >= 1e-3 { ".3" } else { "s2" };
+    let (lo, hi) = range(&disc_p);
+    r.number("correct_disc.p_min", lo, plain(lo));
+    r.number("correct_disc.p_max", hi, plain(hi));
+    let (lo, hi) = range(&lobe_p);
+    r.number("lobe.p_min", lo, "x1");
+    r.number("lobe.p_max", hi, "x1");
+    r.claim(
+        "every_seed_disc_passes_lobe_fails_both",
+        as_said.is_empty(),
+        if as_said.is_empty() {
+            format!(
+                "at each of seeds 1 to 12: the disc's p >= {alpha:.3e} (lowest {:.3e}), the \
+                 lobe's p < {alpha:.3e} (highest {:.3e}) and the lobe's Jacobian check fails",
+                range(&disc_p).0,
+                range(&lobe_p).1
+            )
+        } else {
+            format!("level {alpha:.3e}; not as said: {}", as_said.join("; "))
+        },
+    );
     writeln!(
         md,
         "\n*`check::warp` at the tests' settings ({} samples), seeds 1 to 12; the level is {:.3e}.*",
         warp::TEST_SAMPLES,
-        raylemma::stats::test_alpha()
+        alpha
     )?;
     Ok(md.into_bytes())
 }
@@ -162,6 +190,267 @@ fn portable(settings: &Settings, text: String) -> String {
 
 fn verdict_txt(settings: &Settings, verdict: Verdict) -> Result<Vec<u8>, BoxError> {
     Ok(portable(settings, verdict.to_string()).into_bytes())
+}
+
+/// The number that follows the last of `anchors` (each searched after the one before) in
+/// `text`, a counterexample of a [`Finding`]: the values a chapter quotes from a verdict are
+/// the ones its counterexamples print.
+///
+/// # Errors
+/// If an anchor or the number is missing.
+pub(crate) fn number_after(text: &str, anchors: &[&str]) -> Result<f64, BoxError> {
+    let mut rest = text;
+    for a in anchors {
+        let at = rest
+            .find(a)
+            .ok_or_else(|| format!("{a:?} (of {anchors:?}) not found in {text:?}"))?;
+        rest = &rest[at + a.len()..];
+    }
+    let rest = rest.trim_start();
+    let b = rest.as_bytes();
+    let digits = |mut i: usize| {
+        while b.get(i).is_some_and(u8::is_ascii_digit) {
+            i += 1;
+        }
+        i
+    };
+    let mut end = digits(usize::from(matches!(b.first(), Some(b'+' | b'-'))));
+    if b.get(end) == Some(&b'.') {
+        end = digits(end + 1);
+    }
+    if matches!(b.get(end), Some(b'e' | b'E')) {
+        let sign = end + 1 + usize::from(matches!(b.get(end + 1), Some(b'+' | b'-')));
+        let exponent = digits(sign);
+        if exponent > sign {
+            end = exponent;
+        }
+    }
+    rest[..end]
+        .parse()
+        .map_err(|_| format!("no number after {anchors:?} in {text:?}").into())
+}
+
+/// The first counterexample of `finding`.
+pub(crate) fn first_failure(finding: &Finding) -> Result<&str, BoxError> {
+    finding
+        .example
+        .as_deref()
+        .ok_or_else(|| format!("`{}` has no counterexample", finding.name).into())
+}
+
+/// The worst counterexample of `finding` (a quantitative claim's largest error).
+pub(crate) fn worst_failure(finding: &Finding) -> Result<&str, BoxError> {
+    finding
+        .worst_example
+        .as_deref()
+        .ok_or_else(|| format!("`{}` has no worst counterexample", finding.name).into())
+}
+
+/// The disc with `r = u1`: the derivation read off the Jacobian and round-trip lines, and
+/// where the chi-squared line puts the worst cell.
+fn disc_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    let verdict = disc_verdict();
+    let jacobian = verdict.finding("jacobian");
+    let at = first_failure(jacobian)?;
+    let u1 = number_after(at, &["u = DVec2("])?;
+    let det = number_after(at, &["|dT/du| = "])?;
+    let product = number_after(at, &["product "])?;
+    r.number("jacobian.first.u1", u1, ".3");
+    r.number("jacobian.first.det", det, ".3");
+    r.number("jacobian.first.product", product, ".3");
+    let round_trip = verdict.finding("round_trip");
+    let at = first_failure(round_trip)?;
+    let u = number_after(at, &["u = DVec2("])?;
+    let back = number_after(at, &["Some(DVec2("])?;
+    r.number("round_trip.first.u1", u, ".3");
+    r.number("round_trip.first.back_u1", back, ".3");
+    r.claim(
+        "first_failures_follow_the_derivation",
+        !jacobian.passed()
+            && (det - std::f64::consts::TAU * u1).abs() < 1e-5
+            && (product - 2.0 * u1).abs() < 1e-6
+            && !round_trip.passed()
+            && (u * u - back).abs() < 1e-9,
+        format!(
+            "jacobian fails ({} of {}); at u1 = {u1}: |dT/du| = {det} = 2 pi u1 = {} within 1e-5, \
+             product {product} = 2 u1 = {} within 1e-6; round_trip fails ({} of {}); \
+             u1 = {u} came back as {back} = u1^2 = {} within 1e-9",
+            jacobian.failures,
+            jacobian.cases,
+            std::f64::consts::TAU * u1,
+            2.0 * u1,
+            round_trip.failures,
+            round_trip.cases,
+            u * u
+        ),
+    );
+    let at = first_failure(verdict.finding("chi_squared"))?;
+    r.number("chi_squared.p", number_after(at, &["p = "])?, "int");
+    r.number(
+        "chi_squared.worst_cell.r_max",
+        number_after(at, &["(r in [0.000, "])?,
+        ".3",
+    );
+    r.number(
+        "chi_squared.worst_cell.ratio",
+        number_after(at, &["predicts", "("])?,
+        ".1",
+    );
+    verdict_txt(settings, verdict)
+}
+
+/// The cosine pdf without `1/pi`: the pdf's integral and pdf x area element, both pi.
+fn cosine_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    use std::f64::consts::PI;
+    let verdict = cosine_verdict();
+    let integral = number_after(
+        first_failure(verdict.finding("chi_squared"))?,
+        &["integrates to "],
+    )?;
+    let jacobian = verdict.finding("jacobian");
+    let first = number_after(first_failure(jacobian)?, &["product "])?;
+    let worst = number_after(worst_failure(jacobian)?, &["product "])?;
+    let worst_error = jacobian.worst.map_or(f64::NAN, |w| w.0);
+    r.number("chi_squared.pdf_integral", integral, ".6");
+    r.number("jacobian.first.product", first, ".6");
+    r.claim(
+        "pi_at_every_point",
+        (integral - PI).abs() < 1e-6
+            && (first - PI).abs() < 1e-6
+            && (worst - PI).abs() < 1e-6
+            && jacobian.cases > 0
+            && jacobian.failures == jacobian.cases
+            && (worst_error - (PI - 1.0)).abs() < 1e-6,
+        format!(
+            "the pdf integrates to {integral}, pdf x |dT/du| is {first} at the first point and \
+             {worst} at the worst (each pi within 1e-6); every point fails ({} of {}), none by \
+             more than pi - 1 (worst |product - 1| = {worst_error}, pi - 1 within 1e-6)",
+            jacobian.failures, jacobian.cases
+        ),
+    );
+    verdict_txt(settings, verdict)
+}
+
+/// The seed's Schlick: of the claims an approximation keeps, it breaks `tir` and
+/// `reciprocity`, as their counterexamples show.
+fn schlick_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    let verdict = check::fresnel::reflectance(&schlick_seed, &Options::default());
+    // The five claims the chapter names, and the two of them it says the seed breaks.
+    let named = ["range", "normal", "grazing", "tir", "reciprocity"];
+    let broken = ["tir", "reciprocity"];
+    let mut keeps = registry::SCHLICK_KEEPS.to_vec();
+    keeps.sort_unstable();
+    let mut sorted = named.to_vec();
+    sorted.sort_unstable();
+    let as_said = named
+        .iter()
+        .all(|&n| verdict.finding(n).passed() != broken.contains(&n));
+    let read: Vec<String> = named
+        .iter()
+        .map(|&n| {
+            let f = verdict.finding(n);
+            format!("{n} fails {} of {}", f.failures, f.cases)
+        })
+        .collect();
+    r.claim(
+        "breaks_tir_and_reciprocity_of_the_five",
+        keeps == sorted && as_said,
+        format!(
+            "registry::SCHLICK_KEEPS = {:?} (the five named: {named:?}); {}; \
+             exactly {broken:?} must fail",
+            registry::SCHLICK_KEEPS,
+            read.join(", ")
+        ),
+    );
+    let at = first_failure(verdict.finding("tir"))?;
+    r.number(
+        "tir.first.theta_i_deg",
+        number_after(at, &["theta_i = "])?,
+        ".1",
+    );
+    r.number(
+        "tir.first.critical_deg",
+        number_after(at, &["critical angle "])?,
+        ".3",
+    );
+    r.number("tir.first.r", number_after(at, &["1.33, 1) = "])?, ".3");
+    let at = worst_failure(verdict.finding("reciprocity"))?;
+    r.number(
+        "reciprocity.worst.theta_i_deg",
+        number_after(at, &["theta_i = "])?,
+        ".1",
+    );
+    r.number(
+        "reciprocity.worst.r_from_air",
+        number_after(at, &["1.33) = "])?,
+        ".2",
+    );
+    r.number(
+        "reciprocity.worst.theta_t_deg",
+        number_after(at, &["theta_t = "])?,
+        ".1",
+    );
+    r.number(
+        "reciprocity.worst.r_from_water",
+        number_after(at, &["1.33, 1) = "])?,
+        ".3",
+    );
+    verdict_txt(settings, verdict)
+}
+
+/// The far root: about a quarter of `nearest_root`'s cases fail.
+fn sphere_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    let f = check::sphere::planted::always_far_root;
+    let verdict = check::sphere::intersection(&f, &Options::default());
+    let nearest = verdict.finding("nearest_root");
+    let (failures, cases) = (nearest.failures, nearest.cases);
+    r.number("nearest_root.failures", failures as f64, "int");
+    r.number("nearest_root.cases", cases as f64, "int");
+    let share = failures as f64 / cases as f64;
+    r.claim(
+        "nearest_root_about_a_quarter_fail",
+        0.2 < share && share < 0.3,
+        format!("nearest_root fails {failures} of {cases} = {share:.4}, in (0.2, 0.3)"),
+    );
+    // The cases cycle through four kinds; the first kind (origin outside, sphere ahead),
+    // where the far root is wrong, is every fourth case from the first.
+    let first_kind = cases.div_ceil(4);
+    let others = failures.saturating_sub(first_kind);
+    r.number("nearest_root.first_kind_cases", first_kind as f64, "int");
+    r.number(
+        "nearest_root.failures_beyond_first_kind",
+        others as f64,
+        "int",
+    );
+    r.claim(
+        "nearest_root_first_kind_and_a_few_more_fail",
+        failures >= first_kind && others * 1000 <= cases,
+        format!(
+            "nearest_root fails {failures} of {cases}: at least the {first_kind} of the first \
+             kind, and {others} more <= 0.1 % of the cases"
+        ),
+    );
+    verdict_txt(settings, verdict)
+}
+
+/// Refraction without the square root: how far `|w_t|` is off, and `tir_iff` passing.
+fn refract_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    let f = check::reflect::planted::refract_without_sqrt;
+    let verdict = check::reflect::refraction(&f, &Options::default());
+    let worst = verdict
+        .finding("unit_length")
+        .worst
+        .ok_or("unit_length measured no error")?
+        .0;
+    r.number("unit_length.worst_eps", worst, "x1");
+    r.number("unit_length.worst_abs", worst * f64::EPSILON, ".2");
+    let tir = verdict.finding("tir_iff");
+    r.claim(
+        "tir_iff_passes",
+        tir.passed(),
+        format!("tir_iff fails {} of {} cases", tir.failures, tir.cases),
+    );
+    verdict_txt(settings, verdict)
 }
 
 /// The marked region of `disc_polar` in the hand-out: `src/sampling/disc.rs` through the
@@ -230,8 +519,58 @@ fn card_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
 }
 
 /// What the chapter's `where_is_my_disc_wrong` prints for the disc with `r = u1`.
-fn disc_rows_txt(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+///
+/// The ratios it prints are recorded from the same counts, drawn again here (with the same
+/// samples: the seed is fixed), and must be the ones printed.
+fn disc_rows_txt(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let text = tests_mine::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
+    let options = warp::WarpOptions::from(warp_options());
+    let disc = SquareWarp::new(
+        "disc r = u1",
+        Domain::Disc,
+        warp::planted::disc_r_equals_u,
+        disc_pdf,
+    );
+    let (_, observed, expected) = warp::chi_squared(&disc, &options)?;
+    let cols = options.resolution;
+    let rows = expected.len() / cols;
+    let mut ratio = |row: usize| -> Result<f64, BoxError> {
+        let o: u64 = observed[row * cols..(row + 1) * cols].iter().sum();
+        let e: f64 = expected[row * cols..(row + 1) * cols].iter().sum();
+        let x = o as f64 / e;
+        let shown = r.number(&format!("row{row}.ratio"), x, ".2");
+        let printed = text.lines().any(|l| {
+            l.starts_with(&format!("row {row}: ")) && l.ends_with(&format!("ratio {shown}"))
+        });
+        if !printed {
+            return Err(format!(
+                "row {row}: ratio {shown} is not what the example printed:\n{text}"
+            )
+            .into());
+        }
+        Ok(x)
+    };
+    let (centre, rim) = (ratio(0)?, ratio(20)?);
+    // The derivation: the central row (r^2 < 1/21) gets P(u1 < sqrt(1/21)) of the samples
+    // instead of 1/21, the outer one P(u1 > sqrt(20/21)).
+    let n = rows as f64;
+    let share = (1.0 / n).sqrt();
+    let (centre_exact, rim_exact) = (n * share, n * (1.0 - ((n - 1.0) / n).sqrt()));
+    r.claim(
+        "ratios_match_the_derivation",
+        rows == 21
+            && (share - 0.218).abs() < 5e-4
+            && (centre_exact - 4.58).abs() < 5e-3
+            && (rim_exact - 0.5).abs() < 0.01
+            && (centre - centre_exact).abs() < 0.05
+            && (rim - rim_exact).abs() < 0.02,
+        format!(
+            "{rows} rows (21); derivation: share sqrt(1/21) = {share:.5} (0.218 to 5e-4), centre \
+             ratio 21 sqrt(1/21) = {centre_exact:.4} (4.58 to 5e-3), rim ratio 21 (1 - \
+             sqrt(20/21)) = {rim_exact:.4} (1/2 to 0.01); drawn: centre {centre:.4} (within \
+             0.05), rim {rim:.4} (within 0.02)"
+        ),
+    );
     Ok(text.into_bytes())
 }
 

@@ -8,9 +8,10 @@ use std::fmt::Write as _;
 use std::process::{Command, Stdio};
 
 use super::{Output, Record, Settings};
+use crate::coursework::{first_failure, number_after, worst_failure};
 use crate::plot::BoxError;
-use raylemma::check::Options;
 use raylemma::check::external::{self, Density, Function, Program, Sampler, Target};
+use raylemma::check::{Options, Verdict};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -58,7 +59,7 @@ fn block(md: &mut String, command: &str, verdict: &str) -> std::fmt::Result {
     writeln!(md, "```text\n$ {command}\n{verdict}```\n")
 }
 
-fn sampler_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn sampler_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }
@@ -78,6 +79,9 @@ fn sampler_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
             inverse,
         };
         let verdict = external::sampler(&sampler, &options)?;
+        if file == "uniform.py" {
+            record_uniform(&verdict, r)?;
+        }
         let command = format!(
             "raylemma check sampler --target cosine-hemisphere{flag} \\\n    --program \"python3 tools/examples/{file}\""
         );
@@ -87,6 +91,50 @@ fn sampler_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
         writeln!(md, "*(quick mode: {samples} samples)*")?;
     }
     Ok(md.into_bytes())
+}
+
+/// The uniform hemisphere claimed as cosine-weighted: pdf x area element is `2z` (the
+/// claimed `z / pi` times `2 pi`) at the Jacobian's first failure and, almost 0, at its worst
+/// one on the rim; and how many times their share the chi-squared line's worst cell gets.
+fn record_uniform(verdict: &Verdict, r: &mut Record<'_>) -> Result<(), BoxError> {
+    let jacobian = verdict.finding("jacobian");
+    let z_of = ["T(u) = DVec3(", ", ", ", "];
+    let first = first_failure(jacobian)?;
+    let (product, z) = (
+        number_after(first, &["product "])?,
+        number_after(first, &z_of)?,
+    );
+    let worst = worst_failure(jacobian)?;
+    let (rim_product, rim_z) = (
+        number_after(worst, &["product "])?,
+        number_after(worst, &z_of)?,
+    );
+    r.number("uniform.jacobian.first.product", product, ".3");
+    r.number("uniform.jacobian.first.z", z, ".3");
+    r.claim(
+        "uniform.jacobian_product_is_2z_and_almost_0_at_the_rim",
+        !jacobian.passed()
+            && (product - 2.0 * z).abs() < 1e-5
+            && (rim_product - 2.0 * rim_z).abs() < 1e-5
+            && rim_z < 0.01
+            && rim_product < 0.01,
+        format!(
+            "jacobian fails {} of {}; first failure: product {product} = 2z = {} within 1e-5; \
+             worst failure: z = {rim_z} < 0.01 (the rim), product {rim_product} = 2z = {} \
+             within 1e-5 and < 0.01",
+            jacobian.failures,
+            jacobian.cases,
+            2.0 * z,
+            2.0 * rim_z
+        ),
+    );
+    let cells = first_failure(verdict.finding("chi_squared"))?;
+    r.number(
+        "uniform.chi_squared.worst_cell.ratio",
+        number_after(cells, &["predicts", "("])?,
+        "int",
+    );
+    Ok(())
 }
 
 fn fresnel_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {

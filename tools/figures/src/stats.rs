@@ -113,7 +113,19 @@ fn percent(rejected: usize, runs: u64) -> String {
     )
 }
 
-fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// A row's name in the record.
+fn key(case: NullCase) -> &'static str {
+    match case {
+        NullCase::Chi2 => "pearson",
+        NullCase::KsExact => "ks_exact",
+        NullCase::KsAsymptotic => "ks_asymptotic",
+        NullCase::KsTwoSample => "ks_two_samples",
+        NullCase::StudentT => "student_t",
+        NullCase::Welch => "welch_t",
+    }
+}
+
+fn calibration_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let cal = calibration(settings)?;
     let alpha = test_alpha();
     let mut md = String::new();
@@ -125,9 +137,20 @@ fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
     for (case, ps) in &cal.p_values {
         let rejected = |a: f64| ps.iter().filter(|&&p| p < a).count();
         let uniformity = ks::one_sample(ps, |x| x.clamp(0.0, 1.0))?;
+        let name = key(*case);
+        if *case == NullCase::KsTwoSample {
+            r.claim(
+                "ks_two_samples.uniformity_rejected_at_0_01",
+                uniformity.p_value < 0.01,
+                format!(
+                    "KS of the two-sample test's p-values against uniform: p = {:.3e} < 0.01",
+                    uniformity.p_value
+                ),
+            );
+        }
         writeln!(
             md,
-            "| {} | {} | {} | {} | {} | {} | {:.4} | {:.3} |",
+            "| {} | {} | {} | {} | {} | {} | {:.4} | {} |",
             case.test(),
             case.experiment(),
             cal.runs,
@@ -135,7 +158,7 @@ fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
             percent(rejected(0.01), cal.runs),
             percent(rejected(alpha), cal.runs),
             uniformity.statistic,
-            uniformity.p_value,
+            r.number(&format!("{name}.uniformity_p"), uniformity.p_value, ".3"),
         )?;
     }
     let runs = cal.runs as f64;

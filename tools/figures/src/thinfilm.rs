@@ -287,7 +287,7 @@ fn plain_airy(f: &Film, wavelength_nm: f64, theta1: f64) -> f64 {
     0.5 * (airy_r(i12.r_s, i23.r_s, delta).norm_sqr() + airy_r(i12.r_p, i23.r_p, delta).norm_sqr())
 }
 
-fn precision_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn precision_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let (n1, n2, n3) = (2.4, 1.2, 2.0);
     let mut md = String::new();
     writeln!(
@@ -295,14 +295,18 @@ fn precision_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         "| cos θ2 | d (nm) | R, rearranged sum | plain sum − rearranged | ε / cos θ2 |"
     )?;
     writeln!(md, "|---:|---:|---:|---:|---:|")?;
+    // (cos θ2, |plain − rearranged| of each thickness), from the least grazing row down.
+    let mut rows: Vec<(f64, Vec<f64>)> = Vec::new();
     for c2 in [1e-1, 1e-2, 1e-4, 1e-6, 1e-8] {
         // n1 sin θ1 = n2 sqrt(1 − c2²).
         let t = (n2 * (1.0f64 - c2 * c2).sqrt() / n1).asin();
         let c2_actual = cos_theta(n1, t.cos(), n2).re;
+        let mut errors = Vec::new();
         for d in [0.0, 100.0] {
             let f = Film::new(n1, n2, n3, d);
             let stable = f.reflectance(550.0, t);
             let plain = plain_airy(&f, 550.0, t);
+            errors.push((plain - stable).abs());
             writeln!(
                 md,
                 "| {c2_actual:.1e} | {d:.0} | {stable:.6} | {:+.1e} | {:.1e} |",
@@ -310,7 +314,43 @@ fn precision_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
                 f64::EPSILON / c2_actual
             )?;
         }
+        rows.push((c2_actual, errors));
     }
+    // The error grows like ε / cos θ2: below it on every row; from the least to the most
+    // grazing row, growing by at least a tenth of its growth (every error of the last row
+    // against every error of the first); and on the most grazing row, within a factor 100
+    // of it (so that the bound is not one a constant error would also meet).
+    let bound = |c2: f64| f64::EPSILON / c2;
+    let below = rows
+        .iter()
+        .all(|(c2, e)| e.iter().all(|&x| x <= bound(*c2)));
+    let (first, last) = (&rows[0], &rows[rows.len() - 1]);
+    let max_of = |e: &[f64]| e.iter().copied().fold(0.0, f64::max);
+    let min_of = |e: &[f64]| e.iter().copied().fold(f64::INFINITY, f64::min);
+    let growth = min_of(&last.1) / max_of(&first.1);
+    let bound_growth = bound(last.0) / bound(first.0);
+    let near = min_of(&last.1) / bound(last.0);
+    let ratios: Vec<String> = rows
+        .iter()
+        .map(|(c2, e)| {
+            let list: Vec<String> = e.iter().map(|x| format!("{:.3}", x / bound(*c2))).collect();
+            format!("{c2:.1e}: {}", list.join(", "))
+        })
+        .collect();
+    r.claim(
+        "plain_error_grows_like_eps_over_cos",
+        below && growth >= 0.1 * bound_growth && near >= 0.01,
+        format!(
+            "|plain − rearranged| / (ε / cos θ2) by row ({}), each <= 1; from cos θ2 = {:.1e} to \
+             {:.1e} the smallest error grows {growth:.3e} times over the largest, >= 0.1 x the \
+             {bound_growth:.3e} of ε / cos θ2; at {:.1e} the smallest error is {near:.3} x ε / cos θ2 \
+             >= 0.01",
+            ratios.join("; "),
+            first.0,
+            last.0,
+            last.0
+        ),
+    );
     writeln!(
         md,
         "\n*Glass of n1 = {n1} under a film of n2 = {n2} on a substrate of n3 = {n3}, at 550 nm, at \
