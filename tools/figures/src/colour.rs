@@ -178,14 +178,22 @@ fn chromaticity_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
     })
 }
 
-fn illuminants_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// An illuminant's name as a value name: `LED-B3` -> `led_b3`.
+fn illuminant_key(name: &str) -> String {
+    name.to_lowercase().replace('-', "_")
+}
+
+fn illuminants_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
         "| illuminant | published (x, y) | CIE 5 nm sum | renderer (exact integral) | error | by the fit | error | linear sRGB at Y = 1 |"
     )?;
     writeln!(md, "|---|---|---|---|---:|---|---:|---|")?;
+    // (name, renderer's error, fit's error)
+    let mut errors = Vec::new();
     for (name, file, x, y) in ILLUMINANTS {
+        let key = illuminant_key(name);
         let t = spectrum::builtin(file);
         let published = DVec2::new(x, y);
         let sum = xy_of(cie_sum(&t));
@@ -194,22 +202,42 @@ fn illuminants_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError>
         let fit = xy_of(xyz_with(cmf_fit, |nm| t.eval(nm)));
         let rgb = xyz_to_linear_srgb(exact / exact.y);
         let err = |p: DVec2| (p - published).abs().max_element();
+        let (err_quad, err_fit) = (err(quad), err(fit));
+        errors.push((name, err_quad, err_fit));
+        r.number(&format!("{key}.fit_error"), err_fit, "x1");
         writeln!(
             md,
-            "| {name} | ({x}, {y}) | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {:.1e} | ({:.5}, {:.5}) | {:.1e} | ({:.4}, {:.4}, {:.4}) |",
-            sum.x,
-            sum.y,
-            quad.x,
-            quad.y,
-            err(quad),
-            fit.x,
-            fit.y,
-            err(fit),
-            rgb.x,
-            rgb.y,
-            rgb.z
+            "| {name} | ({x}, {y}) | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {err_quad:.1e} | ({:.5}, {:.5}) | {err_fit:.1e} | ({:.4}, {:.4}, {:.4}) |",
+            sum.x, sum.y, quad.x, quad.y, fit.x, fit.y, rgb.x, rgb.y, rgb.z
         )?;
     }
+    // The fit's error on the illuminants that are not reddish (A and HP1 are).
+    let others: Vec<f64> = errors
+        .iter()
+        .filter(|(name, ..)| !["A", "HP1"].contains(name))
+        .map(|e| e.2)
+        .collect();
+    let (lo, hi) = others
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &e| {
+            (lo.min(e), hi.max(e))
+        });
+    r.number("fit_error_others.min", lo, "x1");
+    r.number("fit_error_others.max", hi, "x1");
+    let fit_not_worse: Vec<String> = errors
+        .iter()
+        .filter(|(_, quad, fit)| quad >= fit)
+        .map(|(name, quad, fit)| format!("{name}: table {quad:.2e} >= fit {fit:.2e}"))
+        .collect();
+    r.claim(
+        "table_closer_than_fit_every_illuminant",
+        fit_not_worse.is_empty(),
+        if fit_not_worse.is_empty() {
+            "the table's error is below the fit's for every illuminant".to_string()
+        } else {
+            fit_not_worse.join("; ")
+        },
+    );
     writeln!(
         md,
         "\n*Published: CIE 015:2018 (A and D65 to five decimals, the others to four). CIE 5 nm \
@@ -319,12 +347,12 @@ fn fit_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 41 };
     // Wavelengths as a renderer draws them: uniform over the range, not on the knots.
-    let mut r = raylemma::rng::seeded(0xC0);
+    let mut rng = raylemma::rng::seeded(0xC0);
     let nms: Vec<f64> = (0..4096)
-        .map(|_| raylemma::rng::uniform(&mut r, LAMBDA_MIN, LAMBDA_MAX))
+        .map(|_| raylemma::rng::uniform(&mut rng, LAMBDA_MIN, LAMBDA_MAX))
         .collect();
     let batch = |f: fn(f64) -> DVec3| {
         let nms = &nms;
@@ -356,13 +384,15 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     writeln!(md, "|---|---:|---:|---:|")?;
     writeln!(
         md,
-        "| 1 nm table, linear interpolation (`cmf`) | {table_ns:.2} | 0 (the definition) | {:.1} |",
-        xyz_table / 1e3
+        "| 1 nm table, linear interpolation (`cmf`) | {} | 0 (the definition) | {} |",
+        r.number("table.ns_per_evaluation", table_ns, ".2"),
+        r.number("table.us_per_xyz", xyz_table / 1e3, ".1"),
     )?;
     writeln!(
         md,
-        "| Wyman-Sloan-Shirley fit (`cmf_fit`) | {fit_ns:.2} | {worst:.4} | {:.1} |",
-        xyz_fit / 1e3
+        "| Wyman-Sloan-Shirley fit (`cmf_fit`) | {} | {worst:.4} | {} |",
+        r.number("fit.ns_per_evaluation", fit_ns, ".2"),
+        r.number("fit.us_per_xyz", xyz_fit / 1e3, ".1"),
     )?;
     writeln!(
         md,

@@ -126,34 +126,94 @@ fn worst_codes(f: impl Fn(f64) -> u8) -> (i32, Vec<u8>, i32) {
     (worst, at, lowest)
 }
 
-fn codes_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// The darkest codes: "the deepest shadows".
+const SHADOWS: std::ops::Range<u8> = 0..32;
+/// The middle half of the codes: "the mid-tones".
+const MID_TONES: std::ops::Range<u8> = 64..192;
+
+fn codes_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
         "| encoder | largest difference from sRGB, codes | at sRGB codes | most negative difference | codes that differ |"
     )?;
     writeln!(md, "|---|---:|---|---:|---:|")?;
-    let rows: [(&str, Encoder); 3] = [
-        ("gamma 2.2, x^(1/2.2) (the seed)", |x| gamma8(x, 2.2)),
-        ("sqrt, x^(1/2) (the seed's approximation)", |x| {
+    let rows: [(&str, &str, Encoder); 3] = [
+        ("gamma_2_2", "gamma 2.2, x^(1/2.2) (the seed)", |x| {
+            gamma8(x, 2.2)
+        }),
+        ("sqrt", "sqrt, x^(1/2) (the seed's approximation)", |x| {
             gamma8(x, 2.0)
         }),
-        ("x^2.2 (exponent the wrong way round)", |x| {
+        ("wrong_way", "x^2.2 (exponent the wrong way round)", |x| {
             quantise(gamma_decode(x, 2.2))
         }),
     ];
-    for (name, f) in rows {
+    // (worst, its codes, most negative, its codes) per encoder
+    let mut found = Vec::new();
+    for (key, name, f) in rows {
         let (worst, at, lowest) = worst_codes(f);
         let differ = (0..=255u8)
             .filter(|&c| f(srgb_decode(f64::from(c) / 255.0)) != c)
             .count();
-        let at: Vec<String> = at.iter().map(u8::to_string).collect();
+        let lowest_at: Vec<u8> = (0..=255u8)
+            .filter(|&c| i32::from(f(srgb_decode(f64::from(c) / 255.0))) - i32::from(c) == lowest)
+            .collect();
+        r.number(
+            &format!("{key}.largest_difference"),
+            f64::from(worst),
+            "int",
+        );
+        r.number(
+            &format!("{key}.most_negative_abs"),
+            f64::from(lowest.abs()),
+            "int",
+        );
+        let at_text: Vec<String> = at.iter().map(u8::to_string).collect();
         writeln!(
             md,
             "| {name} | {worst:+} | {} | {lowest:+} | {differ} of 256 |",
-            at.join(", ")
+            at_text.join(", ")
         )?;
+        found.push((worst, at, lowest, lowest_at));
     }
+    let (gamma, sqrt) = (&found[0], &found[1]);
+    let all_in = |codes: &[u8], range: &std::ops::Range<u8>| {
+        !codes.is_empty() && codes.iter().all(|c| range.contains(c))
+    };
+    let some_in =
+        |codes: &[u8], range: &std::ops::Range<u8>| codes.iter().any(|c| range.contains(c));
+    let span = |codes: &[u8]| match (codes.first(), codes.last()) {
+        (Some(a), Some(b)) => format!("{a}–{b}"),
+        _ => "none".into(),
+    };
+    // Gamma 2.2: brighter in the deepest shadows, darker in the mid-tones; sqrt: darker
+    // still in the mid-tones, and worse overall.
+    r.claim(
+        "gamma_bright_in_shadows_dark_in_mid_tones_sqrt_worse",
+        gamma.0 > 0
+            && all_in(&gamma.1, &SHADOWS)
+            && gamma.2 < 0
+            && some_in(&gamma.3, &MID_TONES)
+            && sqrt.0 < 0
+            && all_in(&sqrt.1, &MID_TONES)
+            && sqrt.0.abs() > gamma.0.abs()
+            && sqrt.2 < gamma.2,
+        format!(
+            "gamma 2.2: largest difference {:+} (> 0) at codes {} (in {SHADOWS:?}), most negative {:+} (< 0) at codes {} (some in {MID_TONES:?}); \
+             sqrt: largest difference {:+} (< 0) at codes {} (in {MID_TONES:?}), |{}| > |{}|, most negative {:+} < {:+}",
+            gamma.0,
+            span(&gamma.1),
+            gamma.2,
+            span(&gamma.3),
+            sqrt.0,
+            span(&sqrt.1),
+            sqrt.0,
+            gamma.0,
+            sqrt.2,
+            gamma.2
+        ),
+    );
     let xs = (2.2f64 * 12.92).powf(-2.2 / 1.2);
     let d = xs.powf(1.0 / 2.2) - 12.92 * xs;
     writeln!(
@@ -234,36 +294,83 @@ fn ramps_png(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::encode_png(w, h, buffer)
 }
 
-fn hue_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn hue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
         "| colour × exposure | luminance Y in | method | result (linear) | Y out | xy hue shift, ° | CIELAB hue shift, ° |"
     )?;
     writeln!(md, "|---|---:|---|---|---:|---:|---:|")?;
+    let mut clip_orange_xy = f64::NEG_INFINITY;
+    // The seed's rows: (colour, exposure, Y in, Y out, xy hue shift)
+    let mut seed_rows = Vec::new();
     for (cname, colour) in RAMP_COLOURS {
         for k in [2.0, 4.0] {
             let c = colour * k;
             for (mname, method) in METHODS {
                 let out = method(c);
                 let shift = |h: fn(DVec3) -> Option<f64>| match (h(c), h(out)) {
-                    (Some(a), Some(b)) => format!("{:+.2}", hue_difference(b, a)),
-                    _ => "— (grey)".into(),
+                    (Some(a), Some(b)) => Some(hue_difference(b, a)),
+                    _ => None,
                 };
+                let show = |d: Option<f64>| d.map_or("— (grey)".into(), |d| format!("{d:+.2}"));
+                let (xy, lab) = (shift(hue_xy_degrees), shift(hue_lab_degrees));
+                let (y_in, y_out) = (luminance(c), luminance(out));
+                if cname == "orange" && mname == "clip" {
+                    clip_orange_xy = clip_orange_xy.max(xy.unwrap_or(f64::NAN));
+                }
+                if mname.starts_with("seed") {
+                    seed_rows.push((cname, k, y_in, y_out, xy));
+                    if k == 2.0 && cname == "blue" {
+                        r.number("blue_x2.seed.y_out_over_in", y_out / y_in, "s2");
+                    }
+                    if k == 2.0 && cname == "orange" {
+                        r.number(
+                            "orange_x2.seed.lab_hue_shift_abs",
+                            lab.map_or(f64::NAN, f64::abs),
+                            "int",
+                        );
+                    }
+                }
                 writeln!(
                     md,
-                    "| {cname} × {k} | {:.3} | {mname} | ({:.3}, {:.3}, {:.3}) | {:.3} | {} | {} |",
-                    luminance(c),
+                    "| {cname} × {k} | {y_in:.3} | {mname} | ({:.3}, {:.3}, {:.3}) | {y_out:.3} | {} | {} |",
                     out.x,
                     out.y,
                     out.z,
-                    luminance(out),
-                    shift(hue_xy_degrees),
-                    shift(hue_lab_degrees),
+                    show(xy),
+                    show(lab),
                 )?;
             }
         }
     }
+    r.number("orange.clip.worst_xy_hue_shift", clip_orange_xy, "int");
+    // The seed's mix keeps the xy hue (of every row, to rounding), and at 2x shows the blue
+    // too bright and the orange too dark.
+    let moved: Vec<String> = seed_rows
+        .iter()
+        .filter(|row| row.4.is_none_or(|d| d.abs() > 1e-6))
+        .map(|(c, k, _, _, d)| format!("{c} × {k}: {d:?}"))
+        .collect();
+    let at_2 = |name: &str| {
+        seed_rows
+            .iter()
+            .find(|row| row.0 == name && row.1 == 2.0)
+            .map_or((f64::NAN, f64::NAN), |row| (row.2, row.3))
+    };
+    let (blue, orange) = (at_2("blue"), at_2("orange"));
+    r.claim(
+        "seed_keeps_xy_hue_blue_too_bright_orange_too_dark",
+        moved.is_empty() && blue.1 > blue.0 && orange.1 < orange.0,
+        format!(
+            "seed's rows whose xy hue moves by more than 1e-6°: {}; blue × 2: Y out {:.4} > Y in {:.4}; orange × 2: Y out {:.4} < Y in {:.4}",
+            if moved.is_empty() { "none".to_string() } else { moved.join(", ") },
+            blue.1,
+            blue.0,
+            orange.1,
+            orange.0
+        ),
+    );
     writeln!(
         md,
         "\n*Hue shifts are the result's hue minus the input's: the angle of the CIE xy \

@@ -86,25 +86,154 @@ fn measure(light: &QuadLight, settings: &Settings) -> Vec<(&'static str, f64, f6
 
 const SIDES: [(&str, f64); 2] = [("small (0.1 × 0.1)", 0.1), ("large (6 × 6)", 6.0)];
 
-fn strategies_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// One strategy for one light: `(name, exact E, variance per sample, ns per sample)`.
+type Row = (&'static str, f64, f64, f64);
+
+/// The strategies measured once per run for each light of [`SIDES`]: the table and the
+/// chart show the same measurement.
+fn measured(settings: &Settings) -> Result<&'static [Vec<Row>], BoxError> {
+    static MEASURED: std::sync::OnceLock<Result<Vec<Vec<Row>>, String>> =
+        std::sync::OnceLock::new();
+    MEASURED
+        .get_or_init(|| {
+            SIDES
+                .iter()
+                .map(|&(_, side)| {
+                    square_light(side)
+                        .map(|light| measure(&light, settings))
+                        .map_err(|e| e.to_string())
+                })
+                .collect()
+        })
+        .as_deref()
+        .map_err(|e| e.clone().into())
+}
+
+/// A light and a strategy as a value name: `small.mis_power`.
+fn row_key(side: &str, strategy: &str) -> String {
+    let light = if side.starts_with("small") {
+        "small"
+    } else {
+        "large"
+    };
+    let strategy = match strategy {
+        "light" => "light",
+        "BSDF (cosine)" => "bsdf",
+        "MIS (balance)" => "mis_balance",
+        _ => "mis_power",
+    };
+    format!("{light}.{strategy}")
+}
+
+fn strategies_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
         "| light | strategy | exact E | variance per sample / E² | ns per sample | relative efficiency |"
     )?;
     writeln!(md, "|---|---|---:|---:|---:|---:|")?;
-    for (label, side) in SIDES {
-        let rows = measure(&square_light(side)?, settings);
+    // Per light: (relative variance, relative efficiency) by strategy, in STRATEGIES' order.
+    let mut lights = Vec::new();
+    for ((label, _), rows) in SIDES.iter().zip(measured(settings)?) {
         let best = rows.iter().map(|r| 1.0 / (r.2 * r.3)).fold(0.0, f64::max);
-        for (name, exact, var, ns) in rows {
+        let mut of_light = Vec::new();
+        for &(name, exact, var, ns) in rows {
+            let key = row_key(label, name);
+            let (rel_var, eff) = (var / (exact * exact), 1.0 / (var * ns) / best);
+            r.number(&format!("{key}.efficiency"), eff, "s2");
+            of_light.push((rel_var, eff));
             writeln!(
                 md,
-                "| {label} | {name} | {exact:.4e} | {:.3e} | {ns:.0} | {:.2e} |",
-                var / (exact * exact),
-                1.0 / (var * ns) / best
+                "| {label} | {name} | {exact:.4e} | {rel_var:.3e} | {ns:.0} | {eff:.2e} |"
             )?;
         }
+        lights.push(of_light);
     }
+    // STRATEGIES: light, BSDF, MIS (balance), MIS (power).
+    let (small, large) = (&lights[0], &lights[1]);
+    let var = |l: &Vec<(f64, f64)>, k: usize| l[k].0;
+    let (light, bsdf, balance, power) = (0, 1, 2, 3);
+    r.claim(
+        "light_wins_small_cosine_wins_large",
+        var(small, light) < var(small, bsdf) && var(large, light) > var(large, bsdf),
+        format!(
+            "variance per sample / E²: small light {:.3e} < BSDF {:.3e}; large light {:.3e} > BSDF {:.3e}",
+            var(small, light),
+            var(small, bsdf),
+            var(large, light),
+            var(large, bsdf)
+        ),
+    );
+    let mis: Vec<f64> = [small, large]
+        .iter()
+        .flat_map(|l| [l[balance].1, l[power].1])
+        .collect();
+    r.claim(
+        "mis_not_most_efficient_either_light",
+        mis.iter().all(|&e| e < 1.0),
+        format!(
+            "relative efficiency of MIS (balance, power): small {:.3}, {:.3}; large {:.3}, {:.3}; each < 1",
+            mis[0], mis[1], mis[2], mis[3]
+        ),
+    );
+    // MIS's factors are near 1 (`.1`, not `s2`, which shows 0.99998 as "1.00"); the wrong
+    // strategy's are large.
+    let ratios = [
+        (
+            "small.mis_power_over_light",
+            var(small, power) / var(small, light),
+            ".1",
+        ),
+        (
+            "large.mis_power_over_bsdf",
+            var(large, power) / var(large, bsdf),
+            ".1",
+        ),
+        (
+            "small.bsdf_over_light",
+            var(small, bsdf) / var(small, light),
+            "s2",
+        ),
+        (
+            "large.light_over_bsdf",
+            var(large, light) / var(large, bsdf),
+            "s2",
+        ),
+    ];
+    for (name, x, format) in ratios {
+        r.number(&format!("{name}.variance_ratio"), x, format);
+    }
+    let [mis_small, mis_large, wrong_small, wrong_large] = ratios.map(|(_, x, _)| x);
+    // MIS's price is a small factor (< 3); the wrong single strategy's, more than two and
+    // one orders of magnitude. (The chapter's "orders of magnitude" for both, >= 100 each,
+    // does not hold for the large light.)
+    r.claim(
+        "mis_price_small_wrong_strategy_large",
+        wrong_small > 100.0 && wrong_large > 10.0 && mis_small < 3.0 && mis_large < 3.0,
+        format!(
+            "variance ratios: small BSDF / light {wrong_small:.3} > 100, large light / BSDF {wrong_large:.3} > 10, \
+             small MIS (power) / light {mis_small:.3} < 3, large MIS (power) / BSDF {mis_large:.3} < 3"
+        ),
+    );
+    r.claim(
+        "wrong_strategy_costs_orders_of_magnitude_both_lights",
+        wrong_small >= 100.0 && wrong_large >= 100.0 && mis_small < 3.0 && mis_large < 3.0,
+        format!(
+            "variance ratios: small BSDF / light {wrong_small:.3} >= 100, large light / BSDF {wrong_large:.3} >= 100, \
+             small MIS (power) / light {mis_small:.3} < 3, large MIS (power) / BSDF {mis_large:.3} < 3"
+        ),
+    );
+    let worst_is = |l: &Vec<(f64, f64)>, k: usize| (0..l.len()).all(|j| j == k || l[j].0 < l[k].0);
+    r.claim(
+        "bsdf_worst_small_light_worst_large",
+        worst_is(small, bsdf) && worst_is(large, light),
+        format!(
+            "variance per sample / E²: small {:.3e} (light, BSDF, MIS balance, MIS power: BSDF the largest), \
+             large {:.3e} (light the largest)",
+            small.iter().map(|x| x.0).fold(0.0, f64::max),
+            large.iter().map(|x| x.0).fold(0.0, f64::max),
+        ),
+    );
     writeln!(
         md,
         "\nShading point at the origin, normal +z, square light centred 0.3 off the normal at height 1. \
@@ -117,11 +246,10 @@ fn strategies_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Box
 
 fn convergence_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut panels = Vec::new();
-    for (label, side) in SIDES {
-        let rows = measure(&square_light(side)?, settings);
+    for ((label, _), rows) in SIDES.iter().zip(measured(settings)?) {
         let series = rows
-            .into_iter()
-            .map(|(name, exact, var, ns)| {
+            .iter()
+            .map(|&(name, exact, var, ns)| {
                 Series::line(
                     name,
                     // n independent samples: relative RMS error sqrt(var / n) / E after n * ns.
@@ -148,7 +276,7 @@ fn convergence_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, B
     plot::chart(&panels, 2)
 }
 
-fn sphere_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn sphere_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 20_000 } else { 400_000 };
     let mut md = String::new();
     writeln!(
@@ -156,6 +284,7 @@ fn sphere_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
         "| distance / radius | exact E | variance / E², cap area | variance / E², cone |"
     )?;
     writeln!(md, "|---:|---:|---:|---:|")?;
+    let mut cap_not_worse = Vec::new();
     for d in [1.05, 2.0, 10.0, 100.0] {
         let light = SphereLight::new(DVec3::new(0.0, 0.0, d), 1.0)?;
         let (p, n) = (DVec3::ZERO, DVec3::Z);
@@ -169,13 +298,21 @@ fn sphere_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
             }
             s.variance() / (exact * exact)
         };
-        writeln!(
-            md,
-            "| {d} | {exact:.4e} | {:.3e} | {:.3e} |",
-            variance(&light),
-            variance(&SphereCone(light))
-        )?;
+        let (cap, cone) = (variance(&light), variance(&SphereCone(light)));
+        if cone >= cap {
+            cap_not_worse.push(format!("{d}: cone {cone:.3e} >= cap area {cap:.3e}"));
+        }
+        writeln!(md, "| {d} | {exact:.4e} | {cap:.3e} | {cone:.3e} |")?;
     }
+    r.claim(
+        "cone_below_cap_area_every_distance",
+        cap_not_worse.is_empty(),
+        if cap_not_worse.is_empty() {
+            "cone sampling's variance is below cap-area sampling's at every distance".to_string()
+        } else {
+            cap_not_worse.join("; ")
+        },
+    );
     writeln!(
         md,
         "\nOne light sample per estimate, {samples} estimates; shading normal towards the centre."

@@ -115,20 +115,32 @@ fn logistic(r: &Reflectance, nm: f64) -> f64 {
     }
 }
 
+/// The worst errors of one row of the round-trip table.
+struct Worst {
+    /// The largest linear sRGB error, and the colour it is at.
+    linear: (f64, DVec3),
+    /// The largest ΔE, and the colour it is at.
+    delta_e: (f64, DVec3),
+}
+
 fn row(
     md: &mut String,
     name: &str,
     colours: &[DVec3],
     fitter: &Fitter,
     eval: fn(&Reflectance, f64) -> f64,
-) -> Result<(), BoxError> {
+) -> Result<Worst, BoxError> {
     let (mut lin, mut de_max, mut de_sum, mut at, mut its, mut lo, mut hi) =
         (0.0f64, 0.0f64, 0.0, DVec3::ZERO, 0u32, 1.0f64, 0.0f64);
+    let mut lin_at = DVec3::ZERO;
     for &c in colours {
         let fit = fitter.fit(c)?;
         its = its.max(fit.iterations);
         let back = srgb_under_d65(|nm| eval(&fit.reflectance, nm));
-        lin = lin.max((back - c).abs().max_element());
+        let e = (back - c).abs().max_element();
+        if e > lin {
+            (lin, lin_at) = (e, c);
+        }
         let de = delta_e(back, c);
         de_sum += de;
         if de > de_max {
@@ -148,10 +160,13 @@ fn row(
         at.z,
         de_sum / colours.len() as f64,
     )?;
-    Ok(())
+    Ok(Worst {
+        linear: (lin, lin_at),
+        delta_e: (de_max, at),
+    })
 }
 
-fn roundtrip_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn roundtrip_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -160,13 +175,27 @@ fn roundtrip_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     writeln!(md, "|---|---:|---:|---:|---|---:|---:|---|")?;
     let d65 = Fitter::d65();
     let n_random = if settings.quick { 200 } else { 2000 };
-    row(
+    let on_grid = row(
         &mut md,
         "D65, grid 0, 0.1, ..., 1",
         &grid(),
         d65,
         Reflectance::eval,
     )?;
+    let at = on_grid.delta_e.1;
+    r.text(
+        "grid.worst_delta_e_at",
+        format!("({:.2}, {:.2}, {:.2})", at.x, at.y, at.z),
+    );
+    // The largest error on the grid, ΔE and linear, is at white.
+    r.claim(
+        "grid_worst_error_at_white",
+        on_grid.delta_e.1 == DVec3::ONE && on_grid.linear.1 == DVec3::ONE,
+        format!(
+            "largest ΔE {:.2e} at {:?}, largest linear error {:.2e} at {:?}; white is (1, 1, 1)",
+            on_grid.delta_e.0, on_grid.delta_e.1, on_grid.linear.0, on_grid.linear.1
+        ),
+    );
     row(
         &mut md,
         "D65, random (seeded)",
@@ -205,7 +234,7 @@ fn roundtrip_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let colours = if settings.quick { random(100) } else { grid() };
     let reps = if settings.quick { 3 } else { 11 };
     let d65 = Fitter::d65();
@@ -230,12 +259,14 @@ fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     let mut md = String::new();
     writeln!(md, "| operation | time |")?;
     writeln!(md, "|---|---:|")?;
+    let us = r.number("fit_one_colour.us", ns_fit / 1000.0, ".1");
     writeln!(
         md,
-        "| fit one colour (average over {} colours) | {:.1} µs |",
+        "| fit one colour (average over {} colours) | {} |",
         colours.len(),
-        ns_fit / 1000.0
+        r.text("fit_one_colour.time", format!("{us} µs")),
     )?;
+    r.number("thousand_colours_s", ns_fit * 1000.0 / 1e9, "s2");
     writeln!(
         md,
         "| mean Levenberg-Marquardt iterations per colour | {:.1} |",

@@ -146,7 +146,53 @@ fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
     plot::chart(&panels, 2)
 }
 
-fn efficiency_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+/// A spectrum's name as a value name: `blackbody 5000 K` -> `blackbody_5000_k`.
+fn spectrum_key(name: &str) -> String {
+    let mut key = String::new();
+    for c in name.to_lowercase().chars() {
+        if c.is_ascii_alphanumeric() {
+            key.push(c);
+        } else if !key.ends_with('_') && !key.is_empty() {
+            key.push('_');
+        }
+    }
+    key.trim_end_matches('_').to_string()
+}
+
+/// A strategy as a value name (the renderer's names, `hero-visible` as `hero_visible`).
+fn strategy_key(s: Strategy) -> &'static str {
+    match s {
+        Strategy::Uniform => "uniform",
+        Strategy::Visible => "visible",
+        Strategy::HeroUniform => "hero_uniform",
+        Strategy::HeroVisible => "hero_visible",
+        Strategy::HeroBalance => "hero_balance",
+        Strategy::SeedBand => "seed_band",
+    }
+}
+
+/// Names as the book lists them: `a`, `a and b`, `a, b and c`, or `none`.
+fn join_names(names: &[&str]) -> String {
+    match names {
+        [] => "none".into(),
+        [one] => (*one).to_string(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    }
+}
+
+/// The index of the smallest (`better` = `f64::lt`) or largest (`f64::gt`) value of
+/// `column`, or `None` when two share it.
+fn extreme(column: &[f64], better: fn(&f64, &f64) -> bool) -> Option<usize> {
+    let mut best = 0;
+    for (k, x) in column.iter().enumerate() {
+        if better(x, &column[best]) {
+            best = k;
+        }
+    }
+    (column.iter().filter(|&&x| x == column[best]).count() == 1).then_some(best)
+}
+
+fn efficiency_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let (n, reps) = if settings.quick {
         (20_000, 3)
     } else {
@@ -204,13 +250,57 @@ fn efficiency_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Box
          `(Var × ns)` of the strategy (larger is better)\n"
     )?;
     header(&mut md, "strategy")?;
+    // efficiency[spectrum][strategy]
+    let efficiency: Vec<Vec<f64>> = variance
+        .iter()
+        .zip(&times)
+        .map(|(v, t)| (0..v.len()).map(|i| v[0] * t[0] / (v[i] * t[i])).collect())
+        .collect();
     for (i, s) in Strategy::ALL.iter().enumerate() {
         write!(md, "| {} |", s.name())?;
-        for (v, t) in variance.iter().zip(&times) {
-            write!(md, " {:.2} |", v[0] * t[0] / (v[i] * t[i]))?;
+        for ((name, _), e) in spectra.iter().zip(&efficiency) {
+            let key = format!("{}.{}.efficiency", spectrum_key(name), strategy_key(*s));
+            write!(md, " {} |", r.number(&key, e[i], ".2"))?;
         }
         writeln!(md)?;
     }
+    let hero = Strategy::ALL
+        .iter()
+        .position(|&s| s == Strategy::HeroVisible)
+        .ok_or("no hero-visible strategy")?;
+    let seed = Strategy::ALL
+        .iter()
+        .position(|&s| s == Strategy::SeedBand)
+        .ok_or("no seed's band strategy")?;
+    // The smallest relative variance of every spectrum: hero-visible's?
+    let not_smallest: Vec<&str> = spectra
+        .iter()
+        .zip(&variance)
+        .filter(|(_, v)| extreme(v, f64::lt) != Some(hero))
+        .map(|((name, _), _)| *name)
+        .collect();
+    r.claim(
+        "hero_visible_smallest_variance_every_spectrum",
+        not_smallest.is_empty(),
+        format!(
+            "spectra where hero, visible pdf (sample space) does not have the smallest relative variance (alone): {}",
+            join_names(&not_smallest)
+        ),
+    );
+    let (most, not_most): (Vec<_>, Vec<_>) = spectra
+        .iter()
+        .zip(&efficiency)
+        .map(|((name, _), e)| (*name, extreme(e, f64::gt) == Some(hero)))
+        .partition(|(_, is)| *is);
+    r.number(
+        "hero_visible_most_efficient.count",
+        most.len() as f64,
+        "int",
+    );
+    let not_most: Vec<&str> = not_most.iter().map(|(name, _)| *name).collect();
+    r.text("hero_visible_most_efficient.except", join_names(&not_most));
+    let seed_below = efficiency.iter().filter(|e| e[seed] < 1.0).count();
+    r.number("seed_band_below_uniform.count", seed_below as f64, "int");
     writeln!(
         md,
         "\n*{n} paths per cell (seeded); {}; median of {reps} batches of 2000 paths{}. \
@@ -233,7 +323,7 @@ pub fn seed_readings() -> Vec<(&'static str, SeedBand)> {
     ]
 }
 
-fn seed_bias_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn seed_bias_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let spectra = spectra();
     let readings = seed_readings();
     let mut md = String::new();
@@ -251,9 +341,17 @@ fn seed_bias_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     for (name, spectrum) in &spectra {
         let exact = cie::xyz(|l| spectrum.eval(l));
         write!(md, "| {name} |")?;
-        for (_, band) in &readings {
+        for (k, (_, band)) in readings.iter().enumerate() {
             let biased = cie::xyz(|l| spectrum.eval(l) * seed_band_weight(l, band));
             let rel = biased / exact - DVec3::ONE;
+            if k == 0 {
+                // The chapter's reading, 380–780 nm at 5 nm.
+                r.number(
+                    &format!("{}.predicted_bias_z_380_780", spectrum_key(name)),
+                    rel.z,
+                    "x1",
+                );
+            }
             write!(md, " {:.1e} / {:.1e} / {:.1e} |", rel.x, rel.y, rel.z)?;
         }
         writeln!(md)?;
@@ -276,13 +374,18 @@ fn seed_bias_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     {
         let exact = cie::xyz(|l| spectrum.eval(l));
         let biased = cie::xyz(|l| spectrum.eval(l) * seed_band_weight(l, &band));
-        let mut r = rng::seeded(0xB1A5);
+        let mut g = rng::seeded(0xB1A5);
         let (mut x, mut z) = (Summary::default(), Summary::default());
         for _ in 0..n {
-            let e = seed_band(rng::uniform(&mut r, 0.0, 1.0), &band).xyz(|l| spectrum.eval(l));
+            let e = seed_band(rng::uniform(&mut g, 0.0, 1.0), &band).xyz(|l| spectrum.eval(l));
             x.push(e.x / exact.x - 1.0);
             z.push(e.z / exact.z - 1.0);
         }
+        r.number(
+            &format!("{}.measured_400_700.z_std_error", spectrum_key(name)),
+            z.std_error(),
+            "x1",
+        );
         writeln!(
             md,
             "| {name} | {:.2e} ± {:.1e} | {:.2e} | {:.2e} ± {:.1e} | {:.2e} |",
