@@ -209,6 +209,8 @@ impl ExrContents {
             };
             return Err(err(what.into()));
         }
+        // The header's claimed sizes, checked against the file before the reader allocates.
+        super::exr_header::check_file(path).map_err(err)?;
         let image = exr::prelude::read()
             .no_deep_data()
             .largest_resolution_level()

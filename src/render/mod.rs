@@ -24,6 +24,7 @@ pub mod camera;
 pub mod compare;
 pub mod driver;
 pub mod export;
+pub mod exr_header;
 pub mod files;
 pub mod format;
 pub mod image;

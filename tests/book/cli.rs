@@ -326,3 +326,36 @@ fn export_writes_both_formats_and_refuses_bad_input_without_touching_earlier_fil
     );
     assert_eq!(std::fs::read(&blocker).unwrap(), b"keep");
 }
+
+/// The crafted files of `tests/data/exr/` (made by its `make.py`): headers that claim sizes
+/// the files cannot back. Each is refused, with exit status 2 and the reason, before the
+/// reader allocates anything the header asks for (chapter *Bad input*).
+#[test]
+fn compare_refuses_headers_that_claim_what_the_file_cannot_hold() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/exr");
+    for (file, says) in [
+        (
+            "huge-100000x100000.exr",
+            "claims 100000 x 100000 pixels, more than",
+        ),
+        (
+            "wide-1000000000x1.exr",
+            "claims 1000000000 x 1 pixels, more than",
+        ),
+        ("tall-1x10000000.exr", "claims 10000000 blocks of pixels"),
+        (
+            "dense-60000x16.exr",
+            "more than 4096 times the file's 598 bytes",
+        ),
+    ] {
+        let path = dir.join(file);
+        let path = path.to_str().expect("a UTF-8 path");
+        for args in [["compare", path, path], ["compare", path, "missing.exr"]] {
+            let out = raylemma(&args);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{file}: {err}");
+            assert!(err.contains(file) && err.contains(says), "{file}: {err}");
+            assert!(!err.contains("panicked"), "{file}: {err}");
+        }
+    }
+}
