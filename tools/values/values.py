@@ -21,6 +21,11 @@ def slug(label):
     return re.sub(r"_+", "_", re.sub(r"[^a-z0-9]", "_", label.lower())).strip("_")
 
 
+def _round(v):
+    """Half away from zero, as Rust's f64::round (Python's round() is half to even)."""
+    return math.copysign(math.floor(abs(v) + 0.5), v)
+
+
 def format_number(x, fmt):
     """`int`, `.N`, `sN` or `xN`, as raylemma_values::format_number."""
     if not math.isfinite(x):
@@ -34,9 +39,12 @@ def format_number(x, fmt):
         if x == 0:
             return "0"
         e = math.floor(math.log10(abs(x)))
+        rounded = _round(x / 10.0 ** (e - n + 1)) * 10.0 ** (e - n + 1)
+        if abs(rounded) >= 10.0 ** (e + 1):  # rounding carried into the next power of ten
+            e += 1
+            rounded = _round(x / 10.0 ** (e - n + 1)) * 10.0 ** (e - n + 1)
         decimals = max(n - 1 - e, 0)
-        scale = 10.0 ** (e - n + 1)
-        return f"{round(x / scale) * scale:.{decimals}f}"
+        return f"{rounded:.{decimals}f}"
     if fmt.startswith("x"):
         m, e = f"{x:.{int(fmt[1:])}e}".split("e")
         return m if int(e) == 0 else f"{m}\\times10^{{{int(e)}}}"

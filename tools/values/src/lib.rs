@@ -248,10 +248,18 @@ pub fn format_number(x: f64, format: &str) -> Result<String, String> {
         if x == 0.0 {
             "0".into()
         } else {
-            let e = x.abs().log10().floor() as i32;
+            let mut e = x.abs().log10().floor() as i32;
+            let round = |e: i32| {
+                let scale = 10f64.powi(e - n as i32 + 1);
+                (x / scale).round() * scale
+            };
+            let mut rounded = round(e);
+            // Rounding may carry into the next power of ten (0.99998 to 2 digits is 1.0).
+            if rounded.abs() >= 10f64.powi(e + 1) {
+                e += 1;
+                rounded = round(e);
+            }
             let decimals = (n as i32 - 1 - e).max(0) as usize;
-            let scale = 10f64.powi(e - n as i32 + 1);
-            let rounded = (x / scale).round() * scale;
             format!("{rounded:.decimals$}")
         }
     } else if let Some(n) = format.strip_prefix('x') {
@@ -315,6 +323,8 @@ mod tests {
         assert_eq!(format_number(0.000050250, "s3").unwrap(), "0.0000503");
         assert_eq!(format_number(46.97, "s2").unwrap(), "47");
         assert_eq!(format_number(1234.5, "s2").unwrap(), "1200");
+        assert_eq!(format_number(0.99998, "s2").unwrap(), "1.0");
+        assert_eq!(format_number(-9.96, "s2").unwrap(), "-10");
         assert_eq!(format_number(-0.5, ".2").unwrap(), "-0.50");
         assert_eq!(format_number(45.4, "int").unwrap(), "45");
         assert_eq!(format_number(6.034e14, "x1").unwrap(), "6.0\\times10^{14}");
