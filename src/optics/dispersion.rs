@@ -34,8 +34,8 @@ pub const LINE_F_NM: f64 = 486.1327;
 /// The hydrogen C line (nm).
 pub const LINE_C_NM: f64 = 656.2725;
 
-/// The wavelength range the renderer samples (nm), after the seed notes: 360–830 nm is
-/// where the CIE colour-matching functions are tabulated.
+/// The wavelength range the renderer samples (nm): 360–830 nm, where the CIE
+/// colour-matching functions are tabulated (the source notes trace 380–830 nm).
 pub const RENDER_RANGE_NM: (f64, f64) = (360.0, 830.0);
 
 // ---------------------------------------------------------------------------------------
@@ -371,8 +371,10 @@ pub enum PrismPath {
         /// The critical angle of that face (rad); `angle` exceeds it.
         critical: f64,
     },
-    /// Inside, the ray runs parallel to or away from the second face (`|A − θ2| ≥ π/2`,
-    /// possible only for apex angles near or above a right angle): it never reaches it.
+    /// Inside, the ray runs parallel to or away from the second face (`|A − θ2| ≥ π/2`): it
+    /// never reaches it. Since `θ2 ≥ −asin(1/n)`, possible when `apex ≥ π/2 − asin(1/n)`
+    /// (about 49° for N-BK7, so already for a 60° prism), for rays entering steeply from
+    /// the apex side.
     MissesExitFace,
 }
 

@@ -13,7 +13,7 @@
 //!   amplitudes and `T_s, T_p` from the *transmission* amplitudes (an independent route to
 //!   the same energy balance).
 //! * [`schlick`]: Schlick's approximation with the cosine on the less dense side, as it
-//!   must be; [`schlick_seed`] is the seed's version, which uses `cos theta_i` even when
+//!   must be; [`schlick_seed`] is the source notes' version, which uses `cos theta_i` even when
 //!   the light leaves the denser medium.
 //! * [`FresnelFit`]: a Chebyshev interpolant of degree [`FIT_DEGREE`], built once per
 //!   pair of indices: no square root or division (entering the denser medium), and over a
@@ -57,7 +57,8 @@ impl Polarized {
     }
 }
 
-/// The Fresnel amplitude coefficients of a transmitting interface (no TIR).
+/// The Fresnel amplitude coefficients of a transmitting interface (no TIR), in Born &
+/// Wolf's sign convention: `t_s = 1 + r_s` and `t_p = (n1 / n2)(1 + r_p)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Amplitudes {
     /// `r_s = (n1 cos_i - n2 cos_t) / (n1 cos_i + n2 cos_t)`.
@@ -74,11 +75,16 @@ pub struct Amplitudes {
 
 // ANCHOR: amplitudes
 // EXERCISE optics/fresnel amplitudes: the Fresnel amplitude coefficients r_s, r_p, t_s, t_p, or None under total internal reflection
-/// The amplitude coefficients, or `None` under total internal reflection.
+/// The amplitude coefficients, or `None` under total internal reflection, in Born & Wolf's
+/// sign convention (`r_p = -r_s` at normal incidence; `r_p` changes sign at Brewster's
+/// angle).
 ///
-/// Two inputs are special: matched indices (`n1 == n2`, no interface: `r = 0`, `t = 1`)
-/// and exactly grazing incidence (`cos_i = 0`, where all four formulas would be `0/0`
-/// for matched indices and are `-1, 1, 0, 0` in the limit otherwise).
+/// Matched indices (`n1 == n2`) form no interface: `r = 0`, `t = 1`, also at grazing
+/// incidence, where the formulas would be `0/0`. With different indices, grazing incidence
+/// (`cos_i = 0`) from the less dense side needs no special case: `cos_t > 0`, and the
+/// formulas give their limit `r_s = r_p = -1`, `t_s = t_p = 0` (from the denser side it is
+/// past the critical angle). Both cosines are never 0 together: `cos_t = 0` needs
+/// `n1 > n2` and an angle of incidence at the critical angle, where `cos_i > 0`.
 pub fn amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<Amplitudes> {
     let c = clamp_cos(cos_i);
     if n1 == n2 {
@@ -92,16 +98,6 @@ pub fn amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<Amplitudes> {
         });
     }
     let cos_t = cos_transmitted(c, n1, n2)?;
-    if c == 0.0 {
-        let (r_s, r_p, t_s, t_p) = (-1.0, 1.0, 0.0, 0.0);
-        return Some(Amplitudes {
-            r_s,
-            r_p,
-            t_s,
-            t_p,
-            cos_t,
-        });
-    }
     let (a, b) = (n1 * c, n2 * cos_t); // the s denominators' terms
     let (d, e) = (n2 * c, n1 * cos_t); // the p denominators' terms
     Some(Amplitudes {
@@ -199,7 +195,7 @@ pub fn schlick(cos_i: f64, n1: f64, n2: f64) -> f64 {
 // ANCHOR_END: schlick
 
 // ANCHOR: schlick_seed
-/// The seed's Schlick: `R0 + (1 - R0)(1 - cos theta_i)^5` whichever side the light is on.
+/// The source notes' Schlick: `R0 + (1 - R0)(1 - cos theta_i)^5` whichever side the light is on.
 /// Leaving a denser medium it ignores the critical angle and is wrong by up to ~0.96.
 pub fn schlick_seed(cos_i: f64, n1: f64, n2: f64) -> f64 {
     let r0 = r0(n1, n2);

@@ -15,7 +15,7 @@
 //! Total internal reflection is returned as [`Refraction::TotalInternalReflection`],
 //! never as a NaN direction.
 //!
-//! The seed notes write the reflection as `w_o = 2n + w_i`, which is wrong except at
+//! The source notes write the reflection as `w_o = 2n + w_i`, which is wrong except at
 //! normal incidence; see [`crate::check::reflect::planted::seed_reflect`] and the chapter.
 //!
 //! The chapter's checker, which any routine with the signatures of [`reflect`] and

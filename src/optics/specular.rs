@@ -161,12 +161,17 @@ pub fn furnace_path(
 }
 // ANCHOR_END: furnace
 
-/// A ray from 3 radii away aimed at a uniformly random point of the sphere's silhouette
-/// disc, so that it hits.
+/// A ray from 3 radii away aimed at a uniformly random point of the sphere's silhouette,
+/// so that it hits. The silhouette is drawn in the plane through the centre perpendicular
+/// to the line of sight: seen from 3 radii, the tangent cone meets that plane in the circle
+/// of radius `3 / sqrt(8)`, not 1 (a ray aimed at radius `r` passes the centre at
+/// `3 r / sqrt(9 + r^2)`). The radius is shrunk by 0.999 so that every ray hits, at angles
+/// of incidence up to about 87.6°.
 pub fn furnace_camera_ray(rng: &mut Rng) -> Ray {
     let origin = sphere_uniform(rng) * 3.0;
     let (t, b) = (-origin.normalize()).any_orthonormal_pair();
-    let r = rng::uniform(rng, 0.0, 1.0).sqrt() * 0.999;
+    let silhouette = 3.0 / 8f64.sqrt();
+    let r = rng::uniform(rng, 0.0, 1.0).sqrt() * 0.999 * silhouette;
     let phi = rng::uniform(rng, 0.0, TAU);
     let target = (t * phi.cos() + b * phi.sin()) * r;
     Ray::new(origin, (target - origin).normalize())

@@ -298,10 +298,10 @@ fn grazing() -> Response {
 }
 
 // ---------------------------------------------------------------------------------------
-// The seed's formula, kept to show what it gets wrong.
+// The source notes' formula, kept to show what it gets wrong.
 
 // ANCHOR: seed
-/// Reflectance exactly as the seed notes write it: real cosines `sqrt(1 − sin²θ)`, the
+/// Reflectance exactly as the source notes write it: real cosines `sqrt(1 − sin²θ)`, the
 /// s-polarised Fresnel coefficients for all light, the round-trip phase
 /// `φ = 4π n2 d cos θ2 / λ`, and
 /// `R = (r12² + r23² + 2 r12 r23 cos φ) / (1 + r12² r23² − 2 r12 r23 cos φ)`.

@@ -3,7 +3,8 @@
 //! checked against the claims of the chapter *Fresnel and Schlick*
 //! (`chapters/optics/fresnel.md`): range, normal and grazing incidence, matched indices,
 //! total internal reflection, `R + T = 1` and reciprocity. Its planted bugs are in
-//! [`planted`].
+//! [`planted`]. [`amplitudes`] checks the amplitude coefficients themselves, signs
+//! included, which no reflectance can see.
 //!
 //! The cases are a deterministic sweep: [`PAIRS`] of indices times the cosines of
 //! [`sweep_cosines`]. Of the [`Options`], the number of cases is the number of evenly
@@ -13,6 +14,7 @@
 pub mod planted;
 
 use super::{Finding, Options, Verdict};
+use crate::optics::fresnel::Amplitudes;
 
 /// Index pairs `(n1, n2)`: water, glass and diamond from both sides, glass under water,
 /// a strong contrast, a tiny one, and matched indices.
@@ -150,3 +152,159 @@ pub fn reflectance(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdi
     verdict
 }
 // ANCHOR_END: claims
+
+/// The amplitude coefficients `(r_s, r_p, t_s, t_p)` in Born & Wolf's convention, computed
+/// here from the angles (`sin_t = n1 sin_i / n2`), independently of the code under test.
+/// `None` under total internal reflection.
+pub fn independent_amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<[f64; 4]> {
+    let c = cos_i.abs().min(1.0);
+    let sin_i = ((1.0 - c) * (1.0 + c)).sqrt();
+    let sin_t = n1 * sin_i / n2;
+    if sin_t > 1.0 {
+        return None;
+    }
+    let cos_t = ((1.0 - sin_t) * (1.0 + sin_t)).sqrt();
+    let (a, b, d, e) = (n1 * c, n2 * cos_t, n2 * c, n1 * cos_t);
+    Some([
+        (a - b) / (a + b),
+        (d - e) / (d + e),
+        2.0 * a / (a + b),
+        2.0 * a / (d + e),
+    ])
+}
+
+// ANCHOR: amplitude_claims
+/// Runs the claims on the amplitude coefficients over [`PAIRS`] and
+/// [`sweep_cosines`]`(options)`. Matched pairs are skipped: `r = 0, t = 1` there is the
+/// reflectance checker's `matched` claim.
+pub fn amplitudes(f: &dyn Fn(f64, f64, f64) -> Option<Amplitudes>, options: &Options) -> Verdict {
+    let cosines = sweep_cosines(options);
+    let mut range = Finding::new("range", "every amplitude finite, |r| <= 1 and t >= 0");
+    let mut tir = Finding::new("tir", "None exactly past the critical angle");
+    let mut values = Finding::new(
+        "values",
+        "r_s, r_p, t_s, t_p equal Born & Wolf's formulas, within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
+    );
+    let mut normal = Finding::new(
+        "normal",
+        "at cos_i = 1: r_s = (n1 - n2)/(n1 + n2), r_p = -r_s, t_s = t_p = 2 n1/(n1 + n2), within 4 eps",
+    );
+    let mut grazing = Finding::new(
+        "grazing",
+        "at cos_i = 0 from the less dense side: r_s = r_p = -1 and t_s = t_p = 0, the limits (no jump)",
+    );
+    let mut stokes = Finding::new(
+        "stokes",
+        "t_s = 1 + r_s and t_p = (n1/n2)(1 + r_p), within 8 eps (1 + n1/n2)",
+    );
+    let mut brewster = Finding::new(
+        "brewster",
+        "r_p has the sign of (cos_i - cos theta_B)(n2 - n1): it changes sign at Brewster's angle",
+    );
+    for &(n1, n2) in PAIRS.iter().filter(|(n1, n2)| n1 != n2) {
+        let cos_b = (n2 / n1).atan().cos();
+        for &cos_i in &cosines {
+            let got = f(cos_i, n1, n2);
+            let c = cos_i.abs().min(1.0);
+            let angle = c.acos().to_degrees();
+            let show = || format!("f({cos_i:e}, {n1}, {n2}) = {got:?} (theta_i = {angle:.3} deg)");
+            let expected = independent_amplitudes(cos_i, n1, n2);
+            tir.record(got.is_none() == expected.is_none(), || {
+                format!(
+                    "{}, but the transmitted wave {} there",
+                    show(),
+                    if expected.is_none() {
+                        "does not exist"
+                    } else {
+                        "exists"
+                    }
+                )
+            });
+            let (Some(a), Some(want)) = (got, expected) else {
+                continue;
+            };
+            let have = [a.r_s, a.r_p, a.t_s, a.t_p];
+            range.record(
+                have.iter().all(|v| v.is_finite())
+                    && a.r_s.abs() <= 1.0
+                    && a.r_p.abs() <= 1.0
+                    && a.t_s >= 0.0
+                    && a.t_p >= 0.0,
+                show,
+            );
+            let cos_t = {
+                let sin_t = n1 * ((1.0 - c) * (1.0 + c)).sqrt() / n2;
+                ((1.0 - sin_t) * (1.0 + sin_t)).sqrt()
+            };
+            if c > 1e-100 && cos_t > 0.0 {
+                let unit = f64::EPSILON * (1.0 + 1.0 / c.min(cos_t));
+                let error = have
+                    .iter()
+                    .zip(want)
+                    .map(|(h, w)| (h - w).abs())
+                    .fold(0.0, f64::max);
+                values.measure(error / unit, BALANCE_BOUND, || {
+                    format!(
+                        "{}; Born & Wolf give (r_s, r_p, t_s, t_p) = {want:?}",
+                        show()
+                    )
+                });
+            }
+            let unit = 8.0 * f64::EPSILON * (1.0 + n1 / n2);
+            let error = (a.t_s - (1.0 + a.r_s))
+                .abs()
+                .max((a.t_p - n1 / n2 * (1.0 + a.r_p)).abs());
+            stokes.measure(error, unit, || {
+                format!(
+                    "{}: t_s - (1 + r_s) = {:e}, t_p - (n1/n2)(1 + r_p) = {:e}",
+                    show(),
+                    a.t_s - (1.0 + a.r_s),
+                    a.t_p - n1 / n2 * (1.0 + a.r_p)
+                )
+            });
+            if c >= 1.0 {
+                let r = (n1 - n2) / (n1 + n2);
+                let t = 2.0 * n1 / (n1 + n2);
+                let error = [a.r_s - r, a.r_p + r, a.t_s - t, a.t_p - t]
+                    .iter()
+                    .fold(0.0f64, |m, e| m.max(e.abs()));
+                normal.measure(error, VALUE_BOUND, || {
+                    format!(
+                        "{}; at normal incidence r_s = {r}, r_p = {}, t_s = t_p = {t}",
+                        show(),
+                        -r
+                    )
+                });
+            }
+            if c == 0.0 {
+                let error = [a.r_s + 1.0, a.r_p + 1.0, a.t_s, a.t_p]
+                    .iter()
+                    .fold(0.0f64, |m, e| m.max(e.abs()));
+                grazing.measure(error, VALUE_BOUND, || {
+                    format!(
+                        "{}; the limit at grazing incidence is (-1, -1, 0, 0)",
+                        show()
+                    )
+                });
+            }
+            // Away from Brewster's angle (and from the critical angle, where r_p = 1 is
+            // approached from the same side), the sign of r_p is fixed.
+            if (c - cos_b).abs() > 1e-6 {
+                let positive = (c > cos_b) == (n2 > n1);
+                brewster.record((a.r_p > 0.0) == positive, || {
+                    format!(
+                        "{}: r_p should be {} {} Brewster's angle {:.3} deg",
+                        show(),
+                        if positive { "positive" } else { "negative" },
+                        if c > cos_b { "below" } else { "above" },
+                        cos_b.acos().to_degrees()
+                    )
+                });
+            }
+        }
+    }
+    let mut verdict = Verdict::new("Fresnel amplitudes");
+    verdict.findings = vec![range, tir, values, normal, grazing, stokes, brewster];
+    verdict
+}
+// ANCHOR_END: amplitude_claims

@@ -8,7 +8,7 @@
 //! * [`refraction`]: finite, total internal reflection exactly past the critical angle,
 //!   unit length, Snell's law, into the far medium, coplanar, either side's normal,
 //!   reversible, matched indices;
-//! * [`planted`]: the seed's reflection and refractions with the classic mistakes, which
+//! * [`planted`]: the source notes' reflection and refractions with the classic mistakes, which
 //!   the checker must reject.
 //!
 //! Both are called with the routine and one [`Options`]: the number of random cases

@@ -1,4 +1,4 @@
-//! Planted bugs of the reflection and refraction checker: the seed's reflection and
+//! Planted bugs of the reflection and refraction checker: the source notes' reflection and
 //! refractions with the classic mistakes, each of which [`super::reflection`] or
 //! [`super::refraction`] must reject on the claims it breaks. Chapter: *Reflection and
 //! refraction* (`chapters/optics/reflect.md`).
@@ -16,8 +16,8 @@ fn facing(w_i: DVec3, n: DVec3) -> DVec3 {
 }
 
 // ANCHOR: seed_reflect
-/// The seed's reflection, `w_o = 2n + w_i`, with `n` the normal facing the light as the
-/// seed intends. Right only at normal incidence: it drops the factor `cos(theta_i)`.
+/// The source notes' reflection, `w_o = 2n + w_i`, with `n` the normal facing the light as the
+/// source notes intend. Right only at normal incidence: it drops the factor `cos(theta_i)`.
 pub fn seed_reflect(w_i: DVec3, n: DVec3) -> DVec3 {
     2.0 * facing(w_i, n) + w_i
 }
@@ -50,7 +50,7 @@ pub fn refract_nan_tir(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
     Refraction::Transmitted(ratio * w_i + (ratio * cos_i - cos_t) * m)
 }
 
-/// Refraction that trusts `n` to face the light (the seed's "outward facing normal"
+/// Refraction that trusts `n` to face the light (the source notes' "outward facing normal"
 /// assumption) and never flips it.
 pub fn refract_unflipped_normal(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
     let cos_i = -w_i.dot(n);

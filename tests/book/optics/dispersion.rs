@@ -503,3 +503,179 @@ fn rainbow_red_outside_violet_inside() {
     // The round "42.3 degrees for red" of the textbooks is the bow at about 650 nm.
     assert!((bow(650.0) - 42.3).abs() <= 0.05, "650 nm: {}", bow(650.0));
 }
+
+// ---------------------------------------------------------------------------------------
+// Exercises. Each scaffold is the student's to fill in; each ignored test checks it, and
+// fails until it is done: `cargo test --test book optics::dispersion::exercise_ -- --ignored`.
+
+/// Golden-section search for the minimum of a unimodal `f` on `[a, b]`, written here
+/// independently of the library's: `(x, f(x))`.
+fn golden_min(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..300 {
+        let (c, d) = (b - g * (b - a), a + g * (b - a));
+        if f(c) < f(d) {
+            b = d;
+        } else {
+            a = c;
+        }
+    }
+    let x = 0.5 * (a + b);
+    (x, f(x))
+}
+
+/// The secondary bow's radius around the antisolar point, `D_min - 180°` (rad), from the
+/// closed form `cos^2 i = (n^2 - 1)/8` and `D = 360° + 2i - 6r`, written here.
+fn secondary_bow(n: f64) -> f64 {
+    let i = ((n * n - 1.0) / 8.0).sqrt().acos();
+    let r = (i.sin() / n).asin();
+    2.0 * PI + 2.0 * i - 6.0 * r - PI
+}
+
+/// Exercise 1 of *Dispersion*: the deviation of a ray through a spherical drop of index
+/// `n` with `k` internal reflections, entering at `incidence` (rad).
+#[allow(unused_variables)]
+fn your_drop_deviation_k(n: f64, incidence: f64, k: u32) -> f64 {
+    unimplemented!("exercise 1 of Dispersion: the deviation with k internal reflections")
+}
+
+/// Exercise 1 of *Dispersion*: the secondary bow's radius around the antisolar point at
+/// 550 nm (degrees), for water at 20 °C.
+const YOUR_SECONDARY_BOW_AT_550_DEG: Option<f64> = None;
+
+#[test]
+#[ignore = "exercise 1 of Dispersion: fill in your_drop_deviation_k and YOUR_SECONDARY_BOW_AT_550_DEG, then run it"]
+fn exercise_1_secondary_bow() {
+    for k in 0..=40 {
+        let n = 1.2 + 0.015 * f64::from(k);
+        for i in [0.0, 0.3, 1.0, 1.5] {
+            let (yours, primary) = (your_drop_deviation_k(n, i, 1), disp::drop_deviation(n, i));
+            assert!(
+                (yours - primary).abs() <= 1e-13,
+                "n {n}, i {i}, k = 1: {yours} vs {primary}"
+            );
+        }
+        let (i_num, d_num) = golden_min(|i| your_drop_deviation_k(n, i, 2), 0.0, FRAC_PI_2);
+        let i_exact = ((n * n - 1.0) / 8.0).sqrt().acos();
+        assert!(
+            (i_num - i_exact).abs() <= 1e-7,
+            "n {n}: minimum at {i_num}, closed form {i_exact}"
+        );
+        assert!(
+            (d_num - PI - secondary_bow(n)).abs() <= 1e-13,
+            "n {n}: D_min {d_num}"
+        );
+    }
+    let water = disp::material(WATER);
+    let bow = |l: f64| {
+        let n = water.index(l);
+        golden_min(|i| your_drop_deviation_k(n, i, 2), 0.0, FRAC_PI_2).1 - PI
+    };
+    // Colours the other way round: red inside, violet outside.
+    assert!(bow(700.0) < bow(550.0) && bow(550.0) < bow(400.0));
+    let expected = secondary_bow(water.index(550.0)).to_degrees();
+    let yours =
+        YOUR_SECONDARY_BOW_AT_550_DEG.expect("exercise 1: set YOUR_SECONDARY_BOW_AT_550_DEG");
+    assert!(
+        (yours - expected).abs() <= 0.01,
+        "{yours}°, but the bow is at {expected}°"
+    );
+}
+
+/// Exercise 2 of *Dispersion*: Cauchy's `n = a + b / lambda^2` fitted to N-BK7 at the F
+/// and C lines, minus the Sellmeier fit, at 360 nm and at 830 nm.
+const YOUR_CAUCHY_MINUS_SELLMEIER_AT_360_AND_830: Option<(f64, f64)> = None;
+
+#[test]
+#[ignore = "exercise 2 of Dispersion: set YOUR_CAUCHY_MINUS_SELLMEIER_AT_360_AND_830, then run it"]
+fn exercise_2_cauchy() {
+    let g = disp::material(N_BK7);
+    let (f, c) = (LINE_F_NM * 1e-3, LINE_C_NM * 1e-3);
+    let b = (g.index(LINE_F_NM) - g.index(LINE_C_NM)) / (1.0 / (f * f) - 1.0 / (c * c));
+    let a = g.index(LINE_F_NM) - b / (f * f);
+    let cauchy = |nm: f64| a + b / (nm * 1e-3).powi(2);
+    let expected = (
+        cauchy(360.0) - g.index(360.0),
+        cauchy(830.0) - g.index(830.0),
+    );
+    let yours = YOUR_CAUCHY_MINUS_SELLMEIER_AT_360_AND_830
+        .expect("exercise 2: set YOUR_CAUCHY_MINUS_SELLMEIER_AT_360_AND_830");
+    assert!(
+        (yours.0 - expected.0).abs() <= 1e-6 && (yours.1 - expected.1).abs() <= 1e-6,
+        "{yours:?}, but Cauchy minus Sellmeier is {expected:?}"
+    );
+}
+
+/// Exercise 3 of *Dispersion*: a row of `data/sellmeier.csv` for SCHOTT N-SF11, with the
+/// coefficients and range of its datasheet, named `N-SF11`.
+const YOUR_N_SF11_ROW: &str = "";
+
+/// Exercise 3 of *Dispersion*: how many times wider N-SF11 spreads the F and C lines than
+/// N-BK7, through 60° prisms at minimum deviation.
+const YOUR_SPREAD_RATIO: Option<f64> = None;
+
+#[test]
+#[ignore = "exercise 3 of Dispersion: fill in YOUR_N_SF11_ROW and YOUR_SPREAD_RATIO, then run it"]
+fn exercise_3_another_glass() {
+    let text = format!("{HEADER}\n{YOUR_N_SF11_ROW}\n");
+    let table = disp::parse(&text, "exercise.csv").unwrap_or_else(|e| panic!("{e}"));
+    let g = table.material("N-SF11");
+    // SCHOTT optical glass datasheet N-SF11 (785257.322): n_d = 1.78472, nu_d = 25.68.
+    assert!(
+        (g.index(LINE_D_NM) - 1.78472).abs() <= 5e-6,
+        "n_d = {}",
+        g.index(LINE_D_NM)
+    );
+    assert!((g.abbe() - 25.68).abs() <= 0.005, "V_d = {}", g.abbe());
+    let spread = |m: &Sellmeier| {
+        let d = |nm: f64| disp::minimum_deviation_analytic(m.index(nm), deg(60.0)).unwrap();
+        d(LINE_F_NM) - d(LINE_C_NM)
+    };
+    let ratio = spread(g) / spread(disp::material(N_BK7));
+    let yours = YOUR_SPREAD_RATIO.expect("exercise 3: set YOUR_SPREAD_RATIO");
+    assert!(
+        (yours - ratio).abs() <= 0.01,
+        "{yours}, but the ratio is {ratio}"
+    );
+}
+
+/// Exercise 4 of *Dispersion*: the width of Alexander's dark band at 550 nm (degrees),
+/// between the primary and the secondary bow, for water at 20 °C.
+const YOUR_DARK_BAND_AT_550_DEG: Option<f64> = None;
+
+#[test]
+#[ignore = "exercise 4 of Dispersion: set YOUR_DARK_BAND_AT_550_DEG, then run it"]
+fn exercise_4_alexanders_dark_band() {
+    let n = disp::material(WATER).index(550.0);
+    let band = (secondary_bow(n) - disp::rainbow_angle(n)).to_degrees();
+    let yours = YOUR_DARK_BAND_AT_550_DEG.expect("exercise 4: set YOUR_DARK_BAND_AT_550_DEG");
+    assert!(
+        (yours - band).abs() <= 0.01,
+        "{yours}°, but the band is {band}° wide"
+    );
+}
+
+/// Exercise 5 of *Dispersion*: the line of `data/sellmeier.csv` that the parser's error
+/// names, and the column it blames, when N-BK7's `B1` is written `1,0` (a decimal comma).
+const YOUR_ERROR_LINE_AND_COLUMN: Option<(usize, &str)> = None;
+
+#[test]
+#[ignore = "exercise 5 of Dispersion: set YOUR_ERROR_LINE_AND_COLUMN, then run it"]
+fn exercise_5_a_broken_row() {
+    let broken = SELLMEIER_CSV.replacen("N-BK7,0.3,2.5,1.03961212,", "N-BK7,0.3,2.5,1,0,", 1);
+    assert_ne!(
+        broken, SELLMEIER_CSV,
+        "the embedded table has changed: update this test"
+    );
+    let e =
+        disp::parse(&broken, disp::SELLMEIER_CSV_NAME).expect_err("a decimal comma must not parse");
+    let (line, column) =
+        YOUR_ERROR_LINE_AND_COLUMN.expect("exercise 5: set YOUR_ERROR_LINE_AND_COLUMN");
+    let text = e.to_string();
+    assert_eq!(e.line, line, "{text}");
+    assert!(
+        text.starts_with(&format!("{}:{line}: ", disp::SELLMEIER_CSV_NAME))
+            && text.contains(&format!("`{column}`")),
+        "{text}"
+    );
+}

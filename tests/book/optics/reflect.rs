@@ -48,7 +48,7 @@ fn refract_passes_every_check() {
 // The seed's claims.
 
 // ANCHOR: seed_reflection
-/// Seed: "w_o = 2n + w_i". Right at normal incidence only; elsewhere the result is not
+/// Source notes: "w_o = 2n + w_i". Right at normal incidence only; elsewhere the result is not
 /// even a unit vector (|2n + w_i|^2 = 5 - 4 cos_i) and leaves at the wrong angle.
 #[test]
 fn seed_reflection_fails_unit_length_and_equal_angles() {
@@ -286,7 +286,9 @@ fn refraction_is_reversible() {
     }
 }
 
-/// Refraction never returns NaN, even for every angle around the critical one.
+/// Refraction never returns NaN, even for every angle around the critical one, and each
+/// answer is on the correct side of the critical angle to within 1e-14 rad (ten steps of
+/// the walk; the rounding of the incident direction and of cos_i is about 1e-16 rad).
 #[test]
 fn no_nan_across_the_critical_angle() {
     let (n, t) = frame();
@@ -294,8 +296,15 @@ fn no_nan_across_the_critical_angle() {
     for k in -1000..=1000 {
         let theta = theta_c + f64::from(k) * 1e-15;
         match refract(incident(theta, n, t), n, 1.5, 1.0) {
-            Refraction::Transmitted(w) => assert!(w.is_finite() && theta <= theta_c + 1e-13),
-            Refraction::TotalInternalReflection => assert!(theta >= theta_c - 1e-13),
+            Refraction::Transmitted(w) => {
+                assert!(
+                    w.is_finite() && theta <= theta_c + 1e-14,
+                    "{k}: transmitted"
+                )
+            }
+            Refraction::TotalInternalReflection => {
+                assert!(theta >= theta_c - 1e-14, "{k}: totally reflected")
+            }
         }
     }
 }
@@ -326,7 +335,7 @@ impl Arbitrary for Dirs {
         let n = unit(g);
         let mut w_i = unit(g);
         if bool::arbitrary(g) && w_i.dot(n) > 0.0 {
-            w_i = -w_i; // half of the cases with the normal facing the light
+            w_i = -w_i; // so three quarters of the cases have the normal facing the light
         }
         Dirs {
             w_i,
@@ -381,4 +390,149 @@ fn prop_refraction(d: Dirs) -> TestResult {
 #[test]
 fn quickcheck_refraction() {
     quickcheck(12).quickcheck(prop_refraction as fn(Dirs) -> TestResult);
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises. Each scaffold is the student's to fill in; each ignored test checks it, and
+// fails until it is done: `cargo test --test book optics::reflect::exercise_ -- --ignored`.
+
+/// Exercise 1 of *Reflection and refraction*: mirror reflection of `w`, which points
+/// *away* from the surface, towards where the light came from; the result points away too.
+#[allow(unused_variables)]
+fn your_reflect_away(w: DVec3, n: DVec3) -> DVec3 {
+    unimplemented!(
+        "exercise 1 of Reflection and refraction: reflect w (pointing away from the surface) about n"
+    )
+}
+
+/// Exercise 1 of *Reflection and refraction*: refraction of `w`, which points *away* from
+/// the surface on the side of index `n1`, into the medium of index `n2`.
+#[allow(unused_variables)]
+fn your_refract_away(w: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
+    unimplemented!(
+        "exercise 1 of Reflection and refraction: refract w (pointing away from the surface) from n1 into n2"
+    )
+}
+
+#[test]
+#[ignore = "exercise 1 of Reflection and refraction: fill in your_reflect_away and your_refract_away, then run it"]
+fn exercise_1_the_other_convention() {
+    let reflection = |w_i: DVec3, n: DVec3| your_reflect_away(-w_i, n);
+    check::reflection(&reflection, &Options::default()).assert_pass();
+    let refraction = |w_i: DVec3, n: DVec3, n1: f64, n2: f64| your_refract_away(-w_i, n, n1, n2);
+    check::refraction(&refraction, &Options::default()).assert_pass();
+}
+
+/// Exercise 2 of *Reflection and refraction*: the direction in which a ray `w_i` (the
+/// direction of travel) leaves a slab of index `n_slab` in air, with parallel faces of
+/// normal `n`: refracted in at the first face and out at the second. `None` if the second
+/// face reflects it totally.
+#[allow(unused_variables)]
+fn your_through_slab(w_i: DVec3, n: DVec3, n_slab: f64) -> Option<DVec3> {
+    unimplemented!(
+        "exercise 2 of Reflection and refraction: refract w_i into the slab and out again"
+    )
+}
+
+#[test]
+#[ignore = "exercise 2 of Reflection and refraction: fill in your_through_slab, then run it"]
+fn exercise_2_through_a_slab() {
+    let mut rng = raylemma::rng::seeded(7);
+    for k in 0..1000 {
+        let c = check::random_case(&mut rng, k); // grazing cases are skipped below
+        let cos_i = -c.w_i.dot(c.m);
+        for n_slab in [1.33, 1.5, 2.4] {
+            let out = your_through_slab(c.w_i, c.n, n_slab);
+            if cos_i < 1e-6 {
+                continue; // rounding at grazing incidence may decide either way
+            }
+            let w = out.unwrap_or_else(|| {
+                panic!("{n_slab}: total internal reflection at the second face for {c:?}, but sin inside <= 1/n")
+            });
+            assert!(
+                (w - c.w_i).length() <= 16.0 * EPS / cos_i,
+                "{n_slab}: {w:?} leaves, {:?} came in",
+                c.w_i
+            );
+        }
+    }
+}
+
+/// Exercise 3 of *Reflection and refraction*: the unit normal `h` that mirrors the
+/// incident direction `w_i` (the direction of travel) into `w_o`, `reflect(w_i, h) = w_o`,
+/// or `None` if there is none (`w_o = w_i`: the ray goes on, grazing).
+#[allow(unused_variables)]
+fn your_half_vector(w_i: DVec3, w_o: DVec3) -> Option<DVec3> {
+    unimplemented!("exercise 3 of Reflection and refraction: the normal that reflects w_i into w_o")
+}
+
+#[test]
+#[ignore = "exercise 3 of Reflection and refraction: fill in your_half_vector, then run it"]
+fn exercise_3_half_vector() {
+    let mut rng = raylemma::rng::seeded(8);
+    for _ in 0..10_000 {
+        let w_i = raylemma::sampling::sphere::sphere_uniform(&mut rng);
+        let w_o = raylemma::sampling::sphere::sphere_uniform(&mut rng);
+        let gap = (w_o - w_i).length();
+        if gap <= 1e-3 {
+            continue;
+        }
+        let h = your_half_vector(w_i, w_o).expect("w_o != w_i has a half vector");
+        assert!(
+            (h.length() - 1.0).abs() <= 4.0 * EPS,
+            "|h| = {}",
+            h.length()
+        );
+        let back = reflect(w_i, h);
+        assert!(
+            (back - w_o).length() <= 16.0 * EPS / gap,
+            "reflect(w_i, h) = {back:?}, w_o = {w_o:?}"
+        );
+    }
+    let w = DVec3::new(0.6, 0.0, 0.8);
+    assert_eq!(
+        your_half_vector(w, w),
+        None,
+        "w_o = w_i: no normal reflects w_i into itself"
+    );
+}
+
+/// Exercise 4 of *Reflection and refraction*: `refract` in `f32`, `None` under total
+/// internal reflection.
+#[allow(unused_variables)]
+fn your_refract_f32(w_i: glam::Vec3, n: glam::Vec3, n1: f32, n2: f32) -> Option<glam::Vec3> {
+    unimplemented!("exercise 4 of Reflection and refraction: write refract in f32")
+}
+
+#[test]
+#[ignore = "exercise 4 of Reflection and refraction: fill in your_refract_f32, then run it"]
+fn exercise_4_refract_in_f32() {
+    let eps32 = f64::from(f32::EPSILON);
+    let mut rng = raylemma::rng::seeded(9);
+    let (mut worst_unit, mut worst_snell) = (0.0f64, 0.0f64);
+    for k in 0..20_000 {
+        let c = check::random_case(&mut rng, k);
+        let (n1, n2) = check::INDEX_PAIRS[(k / 16) % check::INDEX_PAIRS.len()];
+        let (w_i, n, m) = (c.w_i.as_vec3(), c.n.as_vec3(), c.m.as_vec3().as_dvec3());
+        let w_i64 = w_i.as_dvec3(); // the f32 input, exactly, measured in f64
+        let sin_i = w_i64.cross(m).length() / w_i64.length();
+        let past = n1 / n2 * sin_i - 1.0;
+        let out = your_refract_f32(w_i, n, n1 as f32, n2 as f32);
+        if past.abs() > 1e-5 {
+            assert_eq!(out.is_none(), past > 0.0, "{c:?}, {n1} -> {n2}: {out:?}");
+        }
+        let Some(w_t) = out else { continue };
+        let w_t = w_t.as_dvec3();
+        worst_unit = worst_unit.max((w_t.length() - 1.0).abs() / eps32);
+        let sin_t = w_t.cross(m).length() / w_t.length();
+        worst_snell = worst_snell.max((n1 * sin_i - n2 * sin_t).abs() / n1.max(n2) / eps32);
+    }
+    assert!(
+        worst_unit <= 8.0,
+        "worst | |w_t| - 1 | = {worst_unit:.2} f32 eps"
+    );
+    assert!(
+        worst_snell <= 8.0,
+        "worst Snell error = {worst_snell:.2} f32 eps"
+    );
 }

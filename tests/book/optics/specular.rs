@@ -6,7 +6,7 @@ use std::f64::consts::FRAC_PI_3;
 use glam::{DVec2, DVec3};
 use raylemma::geometry::sphere::intersect_stable;
 use raylemma::geometry::{Ray, Sphere};
-use raylemma::optics::fresnel::fresnel_dielectric;
+use raylemma::optics::fresnel::{cos_transmitted, fresnel_dielectric, fresnel_transmittance};
 use raylemma::optics::reflect::{Refraction, reflect, refract};
 use raylemma::optics::specular::*;
 use raylemma::rng;
@@ -144,11 +144,15 @@ fn furnace_with_the_cosine_kept_is_rejected() {
 }
 
 /// Deterministic energy bookkeeping: following *both* branches at every glass interface,
-/// weighted by F and 1 - F, the weights escaping the sphere add up to 1 (to the weight
-/// still inside after 40 interactions).
+/// the reflected one weighted by the Fresnel reflectance R and the transmitted one by the
+/// transmittance T computed independently from the transmission amplitudes
+/// (`fresnel_transmittance`, never 1 - R), the weights escaping the sphere add up to 1 (to
+/// the weight still inside after 64 interfaces) only if R + T = 1 at every interface of
+/// the real geometry. And the directions agree with it: inside a sphere every interface of
+/// a path is met at the entry angle.
 #[test]
 fn both_branches_conserve_energy() {
-    fn split(ray: Ray, ior: f64, depth: u32) -> (f64, f64) {
+    fn split(ray: Ray, ior: f64, cos_entry: f64, depth: u32) -> (f64, f64) {
         let sphere = Sphere::new(DVec3::ZERO, 1.0);
         let Some(t) = intersect_stable(&ray, &sphere, 1e-9) else {
             return (1.0, 0.0); // escaped with all its weight
@@ -163,23 +167,77 @@ fn both_branches_conserve_energy() {
         } else {
             (ior, 1.0)
         };
-        let f = fresnel_dielectric(w.dot(n).abs(), n1, n2);
-        let (re, rl) = split(Ray::new(p, reflect(w, n)), ior, depth - 1);
+        let cos_i = w.dot(n).abs();
+        // Inside, the angle of incidence is the refracted entry angle, which Snell's law
+        // gives from the entry cosine.
+        let expected = if n1 == 1.0 {
+            cos_entry
+        } else {
+            cos_transmitted(cos_entry, 1.0, ior).unwrap()
+        };
+        assert!(
+            (cos_i - expected).abs() <= 1e-9,
+            "interface at cos {cos_i}, expected {expected} (entry cos {cos_entry})"
+        );
+        let r = fresnel_dielectric(cos_i, n1, n2);
+        let t = fresnel_transmittance(cos_i, n1, n2).unpolarized();
+        let (re, rl) = split(Ray::new(p, reflect(w, n)), ior, cos_entry, depth - 1);
         match refract(w, n, n1, n2) {
             Refraction::Transmitted(w_t) => {
-                let (te, tl) = split(Ray::new(p, w_t), ior, depth - 1);
-                (f * re + (1.0 - f) * te, f * rl + (1.0 - f) * tl)
+                let (te, tl) = split(Ray::new(p, w_t), ior, cos_entry, depth - 1);
+                (r * re + t * te, r * rl + t * tl)
             }
             Refraction::TotalInternalReflection => (re, rl),
         }
     }
     let mut rng = rng::seeded(30);
-    for _ in 0..20 {
+    let sphere = Sphere::new(DVec3::ZERO, 1.0);
+    for _ in 0..200 {
         let ray = furnace_camera_ray(&mut rng);
-        let (escaped, left) = split(ray, 1.5, 12);
-        assert!((escaped + left - 1.0).abs() <= 1e-12, "{escaped} + {left}");
-        assert!(left <= 1e-3, "{left} left inside after 12 interfaces");
+        let t = intersect_stable(&ray, &sphere, 1e-9).unwrap();
+        let cos_entry = ray.at(t).normalize().dot(ray.dir.normalize()).abs();
+        for ior in [1.5, 2.4] {
+            let (escaped, left) = split(ray, ior, cos_entry, 64);
+            assert!(
+                (escaped + left - 1.0).abs() <= 1e-12,
+                "{ior}: {escaped} + {left}"
+            );
+            assert!(
+                left <= 1e-6,
+                "{ior}: {left} left inside after 64 interfaces"
+            );
+        }
     }
+}
+
+/// The furnace camera covers the whole silhouette, grazing incidence included, where the
+/// Fresnel reflectance tends to 1 and the kept cosine of the planted bug to 0: a ray
+/// aimed at the unit disc through the centre would stop at 71°.
+#[test]
+fn furnace_camera_covers_the_silhouette() {
+    let mut rng = rng::seeded(31);
+    let sphere = Sphere::new(DVec3::ZERO, 1.0);
+    let (mut steepest, mut above_71) = (0.0f64, 0);
+    let n = 100_000;
+    for _ in 0..n {
+        let ray = furnace_camera_ray(&mut rng);
+        let t = intersect_stable(&ray, &sphere, 1e-9).expect("every camera ray hits");
+        let cos = ray.at(t).normalize().dot(ray.dir.normalize()).abs();
+        let degrees = cos.acos().to_degrees();
+        steepest = steepest.max(degrees);
+        above_71 += usize::from(degrees > 71.0);
+    }
+    // Uniform over the disc of radius 0.999 * 3/sqrt(8): the impact parameter passes
+    // sin 71° at r = 3 sin71 / sqrt(9 - sin^2 71), so about 11.6 % of the rays are above.
+    let b = 71f64.to_radians().sin();
+    let r = 3.0 * b / (9.0 - b * b).sqrt();
+    let expected = 1.0 - (r / (0.999 * 3.0 / 8f64.sqrt())).powi(2);
+    let fraction = above_71 as f64 / n as f64;
+    assert!(steepest > 87.0, "steepest incidence {steepest}");
+    assert!(
+        (fraction - expected).abs() < 0.01,
+        "{fraction} above 71°, expected {expected}"
+    );
 }
 
 /// The seed writes the mirror's delta as delta(n - (w_i + w_o)/2). For a mirror pair,
@@ -262,5 +320,133 @@ fn glass_sphere_paths_average_two_bounces() {
         ttest::one_sample(&unswapped, 2.0).unwrap().p_value < test_alpha(),
         "mean {}",
         unswapped.mean
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises. Each scaffold is the student's to fill in; each ignored test checks it, and
+// fails until it is done: `cargo test --test book optics::specular::exercise_ -- --ignored`.
+
+/// Exercise 1 of *The missing cosine in specular reflection*: what every furnace path
+/// through a mirror sphere of reflectance 0.8 returns, and after how many bounces.
+const YOUR_MIRROR_RADIANCE: Option<f64> = None;
+const YOUR_MIRROR_BOUNCES: Option<u32> = None;
+
+#[test]
+#[ignore = "exercise 1 of The missing cosine: set YOUR_MIRROR_RADIANCE and YOUR_MIRROR_BOUNCES, then run it"]
+fn exercise_1_coloured_mirror() {
+    let radiance = YOUR_MIRROR_RADIANCE.expect("exercise 1: set YOUR_MIRROR_RADIANCE");
+    let bounces = YOUR_MIRROR_BOUNCES.expect("exercise 1: set YOUR_MIRROR_BOUNCES");
+    let mut rng = rng::seeded(60);
+    for _ in 0..20_000 {
+        let ray = furnace_camera_ray(&mut rng);
+        let path = furnace_path(
+            ray,
+            Material::Mirror { rho: 0.8 },
+            CosineTerm::Cancelled,
+            &mut rng,
+        );
+        assert!(
+            (path.radiance - radiance).abs() <= 1e-15,
+            "a path returned {}",
+            path.radiance
+        );
+        assert_eq!(
+            path.bounces, bounces,
+            "a path bounced {} times",
+            path.bounces
+        );
+    }
+}
+
+/// Exercise 2 of *The missing cosine in specular reflection*: one estimate of the furnace
+/// through a glass sphere of index `ior` that follows *both* branches at the first
+/// interface, weighted by F and 1 - F, and chooses between them with probability F (as
+/// `furnace_path` does) at every later interface.
+#[allow(unused_variables)]
+fn your_furnace_estimate_split_first(ray: Ray, ior: f64, rng: &mut rng::Rng) -> f64 {
+    unimplemented!("exercise 2 of The missing cosine: follow both branches at the first interface")
+}
+
+#[test]
+#[ignore = "exercise 2 of The missing cosine: fill in your_furnace_estimate_split_first, then run it"]
+fn exercise_2_both_branches_at_the_first_interface() {
+    for (k, ior) in [1.5, 2.4].into_iter().enumerate() {
+        let mut rng = rng::seeded(61 + k as u64);
+        let s = ttest::Summary::of((0..20_000).map(|_| {
+            let ray = furnace_camera_ray(&mut rng);
+            your_furnace_estimate_split_first(ray, ior, &mut rng)
+        }));
+        assert!(
+            (s.mean - 1.0).abs() <= 4.0 * f64::EPSILON,
+            "{ior}: mean {}",
+            s.mean
+        );
+        assert!(s.variance() <= 1e-30, "{ior}: variance {:e}", s.variance());
+    }
+}
+
+/// Exercise 3 of *The missing cosine in specular reflection*: the furnace path through a
+/// glass sphere of index `ior`, with reflection chosen with Schlick's probability
+/// (`schlick` of the Fresnel chapter) instead of the exact Fresnel reflectance.
+#[allow(unused_variables)]
+fn your_schlick_furnace_path(ray: Ray, ior: f64, rng: &mut rng::Rng) -> FurnacePath {
+    unimplemented!("exercise 3 of The missing cosine: the furnace path with Schlick's reflectance")
+}
+
+/// The fraction of camera paths that a Fresnel term `f` reflects at entry: its mean over
+/// the camera's incidences (uniform over the silhouette disc of `furnace_camera_ray`), by
+/// the midpoint rule in the disc's area.
+fn mean_over_the_camera(f: impl Fn(f64) -> f64) -> f64 {
+    let radius = 0.999 * 3.0 / 8f64.sqrt();
+    let n = 200_000;
+    (0..n)
+        .map(|k| {
+            let r = ((f64::from(k) + 0.5) / f64::from(n)).sqrt() * radius;
+            let b = 3.0 * r / (9.0 + r * r).sqrt(); // the ray's distance from the centre
+            f((1.0 - b * b).sqrt())
+        })
+        .sum::<f64>()
+        / f64::from(n)
+}
+
+#[test]
+#[ignore = "exercise 3 of The missing cosine: fill in your_schlick_furnace_path, then run it"]
+fn exercise_3_schlick_in_the_furnace() {
+    let exact = mean_over_the_camera(|c| fresnel_dielectric(c, 1.0, 1.5));
+    let fraction = |path: &dyn Fn(Ray, &mut rng::Rng) -> FurnacePath, seed: u64| {
+        let mut rng = rng::seeded(seed);
+        ttest::Summary::of((0..200_000).map(|_| {
+            let ray = furnace_camera_ray(&mut rng);
+            let p = path(ray, &mut rng);
+            assert_eq!(p.radiance, 1.0, "the furnace itself does not notice");
+            f64::from(u8::from(p.bounces == 1))
+        }))
+    };
+    // The statistic works: the exact Fresnel term's fraction reflected at entry is its
+    // mean over the camera, and Schlick's is not.
+    let library = fraction(
+        &|ray, rng| {
+            furnace_path(
+                ray,
+                Material::Glass { ior: 1.5 },
+                CosineTerm::Cancelled,
+                rng,
+            )
+        },
+        62,
+    );
+    let p = ttest::one_sample(&library, exact).unwrap().p_value;
+    assert!(
+        p >= test_alpha(),
+        "exact Fresnel: {} reflected at entry, expected {exact} (p = {p:.3e})",
+        library.mean
+    );
+    let yours = fraction(&|ray, rng| your_schlick_furnace_path(ray, 1.5, rng), 63);
+    let p = ttest::one_sample(&yours, exact).unwrap().p_value;
+    assert!(
+        p < test_alpha(),
+        "Schlick: {} reflected at entry, indistinguishable from {exact} (p = {p:.3e})",
+        yours.mean
     );
 }

@@ -755,3 +755,278 @@ fn building_block_conventions() {
     let ev = cos_theta(1.5, 0.6, 1.0); // n1 sin θ1 = 1.2 > 1
     assert!(ev.re == 0.0 && ev.im > 0.0);
 }
+
+// ---------------------------------------------------------------------------------------
+// Exercises. Each scaffold is the student's to fill in; each ignored test checks it, and
+// fails until it is done: `cargo test --test book optics::thinfilm::exercise_ -- --ignored`.
+
+/// Two films by Macleod's characteristic matrices (his conventions, as in [`tmm_cos`]),
+/// `n = [ambient, upper film, lower film, substrate]`: `[R_s, R_p]`. Unscaled, so for
+/// films up to a few micrometres only.
+fn tmm_two_layers(n: [f64; 4], d_nm: [f64; 2], wavelength_nm: f64, cos1: f64) -> [f64; 2] {
+    let k = 2.0 * PI / wavelength_nm;
+    let i = Complex64::i();
+    let c: Vec<Complex64> = n.iter().map(|&nj| macleod_cos(n[0], cos1, nj)).collect();
+    let mut out = [0.0; 2];
+    for (pol, slot) in out.iter_mut().enumerate() {
+        // Tilted admittances: n cos θ for s, n / cos θ for p.
+        let eta = |j: usize| if pol == 0 { c[j] * n[j] } else { n[j] / c[j] };
+        let (mut m11, mut m12, mut m21, mut m22) = (
+            Complex64::new(1.0, 0.0),
+            Complex64::new(0.0, 0.0),
+            Complex64::new(0.0, 0.0),
+            Complex64::new(1.0, 0.0),
+        );
+        for layer in 1..=2 {
+            let delta = c[layer] * (k * n[layer] * d_nm[layer - 1]);
+            let (cos, sin) = (delta.cos(), delta.sin());
+            let (a11, a12, a21, a22) = (cos, i * sin / eta(layer), i * eta(layer) * sin, cos);
+            (m11, m12, m21, m22) = (
+                m11 * a11 + m12 * a21,
+                m11 * a12 + m12 * a22,
+                m21 * a11 + m22 * a21,
+                m21 * a12 + m22 * a22,
+            );
+        }
+        let b = m11 + m12 * eta(3);
+        let cc = m21 + m22 * eta(3);
+        *slot = ((eta(0) * b - cc) / (eta(0) * b + cc)).norm_sqr();
+    }
+    out
+}
+
+/// Exercise 1 of *Thin-film interference*: `[R_s, R_p]` of two films on a substrate,
+/// `n = [ambient, upper film, lower film, substrate]` with thicknesses `d_nm = [upper,
+/// lower]`, by the Airy sum applied twice.
+#[allow(unused_variables)]
+fn your_two_layer_reflectance(
+    n: [f64; 4],
+    d_nm: [f64; 2],
+    wavelength_nm: f64,
+    cos1: f64,
+) -> [f64; 2] {
+    unimplemented!("exercise 1 of Thin-film interference: apply the Airy sum twice")
+}
+
+#[test]
+#[ignore = "exercise 1 of Thin-film interference: fill in your_two_layer_reflectance, then run it"]
+fn exercise_1_two_layers() {
+    let mut g = rng::seeded(0x2f11);
+    let mut worst: f64 = 0.0;
+    for _ in 0..20_000 {
+        let mut n = [0.0; 4];
+        for x in &mut n {
+            *x = rng::uniform(&mut g, 1.0, 2.5);
+        }
+        let d = [
+            rng::uniform(&mut g, 0.0, 1000.0),
+            rng::uniform(&mut g, 0.0, 1000.0),
+        ];
+        let wavelength = rng::uniform(&mut g, 360.0, 830.0);
+        let cos1 = rng::uniform(&mut g, 0.01, 1.0);
+        let (yours, reference) = (
+            your_two_layer_reflectance(n, d, wavelength, cos1),
+            tmm_two_layers(n, d, wavelength, cos1),
+        );
+        for (y, r) in yours.iter().zip(reference) {
+            assert!(
+                (y - r).abs() <= 1e-10,
+                "{n:?}, {d:?} nm at {wavelength} nm, cos {cos1}: {yours:?}, matrices give {reference:?}"
+            );
+            worst = worst.max((y - r).abs());
+        }
+    }
+    // One film with the other of zero thickness is the library's one film.
+    let one = Film::new(1.0, 1.38, 1.52, 100.0).response_cos(550.0, 0.8);
+    let two = your_two_layer_reflectance([1.0, 1.38, 2.0, 1.52], [100.0, 0.0], 550.0, 0.8);
+    assert!(
+        (two[0] - one.reflectance_s).abs() <= 1e-12 && (two[1] - one.reflectance_p).abs() <= 1e-12
+    );
+    assert!(worst <= 1e-10);
+}
+
+/// The unpolarised reflectance of the film of MgF2 (1.38, no dispersion) on glass (1.52)
+/// in air, averaged over 400..=700 nm in steps of 1 nm, at `theta1`.
+fn mean_coating_reflectance(thickness_nm: f64, theta1: f64) -> f64 {
+    let film = Film::new(1.0, 1.38, 1.52, thickness_nm);
+    (400..=700)
+        .map(|l| film.reflectance(f64::from(l), theta1))
+        .sum::<f64>()
+        / 301.0
+}
+
+/// Exercise 2 of *Thin-film interference*: the MgF2 thickness (nm) that minimises
+/// `mean_coating_reflectance` at normal incidence and at 45°.
+const YOUR_COATING_NM_AT_0_AND_45: Option<(f64, f64)> = None;
+
+#[test]
+#[ignore = "exercise 2 of Thin-film interference: set YOUR_COATING_NM_AT_0_AND_45, then run it"]
+fn exercise_2_broadband_coating() {
+    let optimum = |theta1: f64| {
+        (500..=2000)
+            .map(|k| f64::from(k) * 0.1)
+            .min_by(|a, b| {
+                mean_coating_reflectance(*a, theta1)
+                    .total_cmp(&mean_coating_reflectance(*b, theta1))
+            })
+            .unwrap()
+    };
+    let expected = (optimum(0.0), optimum(45f64.to_radians()));
+    let yours = YOUR_COATING_NM_AT_0_AND_45.expect("exercise 2: set YOUR_COATING_NM_AT_0_AND_45");
+    assert!(
+        (yours.0 - expected.0).abs() <= 0.5 && (yours.1 - expected.1).abs() <= 0.5,
+        "{yours:?} nm, but the optima are {expected:?} nm"
+    );
+}
+
+/// Exercise 3 of *Thin-film interference*: the unpolarised reflectance of a film (index
+/// `n2`, `d_nm` thick) on a metal of complex index `n3 = n + ik`, for light from the
+/// ambient `n1` at `cos θ1 = cos1`.
+#[allow(unused_variables)]
+fn your_film_on_metal_reflectance(
+    n1: f64,
+    n2: f64,
+    n3: Complex64,
+    d_nm: f64,
+    wavelength_nm: f64,
+    cos1: f64,
+) -> f64 {
+    unimplemented!("exercise 3 of Thin-film interference: a film on a metal substrate")
+}
+
+/// The bare interface from `n1` onto a conductor `n3`, as pbrt-v4 writes it (`FrComplex`).
+fn bare_conductor(n1: f64, n3: Complex64, cos1: f64) -> f64 {
+    let eta = n3 / n1;
+    let sin2_t = (1.0 - cos1 * cos1) / (eta * eta);
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let r_parl = (eta * cos1 - cos_t) / (eta * cos1 + cos_t);
+    let r_perp = (cos1 - eta * cos_t) / (cos1 + eta * cos_t);
+    0.5 * (r_parl.norm_sqr() + r_perp.norm_sqr())
+}
+
+#[test]
+#[ignore = "exercise 3 of Thin-film interference: fill in your_film_on_metal_reflectance, then run it"]
+fn exercise_3_metal_substrate() {
+    let metals = [
+        Complex64::new(0.96, 6.69),
+        Complex64::new(0.06, 3.59),
+        Complex64::new(0.2, 3.0),
+    ];
+    for m in metals {
+        for k in 0..90 {
+            let c = f64::to_radians(f64::from(k)).cos();
+            // No film: the bare conductor, from air and from glass.
+            for n1 in [1.0, 1.5] {
+                let (got, want) = (
+                    your_film_on_metal_reflectance(n1, 1.38, m, 0.0, 550.0, c),
+                    bare_conductor(n1, m, c),
+                );
+                assert!(
+                    (got - want).abs() <= 1e-12,
+                    "{m} from {n1} at {k} deg, no film: {got}, expected {want}"
+                );
+            }
+            let r = your_film_on_metal_reflectance(1.0, 1.38, m, 120.0, 550.0, c);
+            assert!(
+                (0.0..1.0).contains(&r),
+                "{m} at {k} deg: R = {r}, but the metal absorbs"
+            );
+        }
+        // A half-wave film is absent at normal incidence, on a metal too.
+        let half = 550.0 / (2.0 * 1.38);
+        let (got, want) = (
+            your_film_on_metal_reflectance(1.0, 1.38, m, half, 550.0, 1.0),
+            bare_conductor(1.0, m, 1.0),
+        );
+        assert!(
+            (got - want).abs() <= 1e-12,
+            "{m}, half-wave film: {got}, expected {want}"
+        );
+    }
+    // A real substrate index is the library's dielectric film, total reflection included.
+    for case in sweep(2_000, 0x3e7a) {
+        let Film {
+            n1,
+            n2,
+            n3,
+            thickness_nm,
+        } = case.film;
+        let c = case.theta1.cos();
+        // Where the plain Airy sum keeps its digits (see "Where the plain sum loses digits").
+        if c < 1e-3 || cos_theta(n1, c, n2).norm() < 1e-3 || thickness_nm > 5_000.0 {
+            continue;
+        }
+        let got = your_film_on_metal_reflectance(
+            n1,
+            n2,
+            Complex64::new(n3, 0.0),
+            thickness_nm,
+            case.wavelength_nm,
+            c,
+        );
+        let want = case.film.response_cos(case.wavelength_nm, c).reflectance();
+        assert!(
+            (got - want).abs() <= 1e-9,
+            "{case:?}: {got}, expected {want}"
+        );
+    }
+}
+
+/// Exercise 4 of *Thin-film interference*: for the 300 nm soap film (1.33) in air at
+/// 550 nm, the hemispherical means weighted by cos θ, `2 ∫ R(θ) cos θ sin θ dθ` over
+/// `[0, π/2]`, of the s-only reflectance `R_s` and of the true unpolarised `R`.
+const YOUR_MEANS_S_ONLY_AND_TRUE: Option<(f64, f64)> = None;
+
+#[test]
+#[ignore = "exercise 4 of Thin-film interference: set YOUR_MEANS_S_ONLY_AND_TRUE, then run it"]
+fn exercise_4_s_only_on_average() {
+    let film = Film::new(1.0, 1.33, 1.0, 300.0);
+    let steps = 20_000;
+    let h = FRAC_PI_2 / f64::from(steps);
+    let (mut s_only, mut truth) = (0.0, 0.0);
+    for k in 0..steps {
+        let theta = (f64::from(k) + 0.5) * h;
+        let r = film.response(550.0, theta);
+        let w = 2.0 * theta.cos() * theta.sin() * h;
+        s_only += w * r.reflectance_s;
+        truth += w * r.reflectance();
+    }
+    let yours = YOUR_MEANS_S_ONLY_AND_TRUE.expect("exercise 4: set YOUR_MEANS_S_ONLY_AND_TRUE");
+    assert!(
+        (yours.0 / s_only - 1.0).abs() <= 0.01 && (yours.1 / truth - 1.0).abs() <= 0.01,
+        "{yours:?}, but the means are ({s_only}, {truth})"
+    );
+}
+
+/// Exercise 5 of *Thin-film interference*: a film and a wavelength for which the rule
+/// "dark when 2 n2 d = m λ" predicts darkness at normal incidence (m a whole number, at
+/// least 1), but the reflectance there is a maximum over the thickness.
+fn your_counterexample() -> (Film, f64) {
+    unimplemented!("exercise 5 of Thin-film interference: a film where the pi rule is wrong")
+}
+
+#[test]
+#[ignore = "exercise 5 of Thin-film interference: fill in your_counterexample, then run it"]
+fn exercise_5_the_pi_rule() {
+    let (film, wavelength) = your_counterexample();
+    let m = 2.0 * film.n2 * film.thickness_nm / wavelength;
+    assert!(
+        m >= 0.5 && (m - m.round()).abs() <= 1e-9,
+        "2 n2 d / λ = {m}: not a whole number"
+    );
+    let r = |d: f64| {
+        Film {
+            thickness_nm: d,
+            ..film
+        }
+        .response(wavelength, 0.0)
+        .reflectance()
+    };
+    let (at, quarter) = (r(film.thickness_nm), wavelength / (4.0 * film.n2));
+    for shift in [0.1 * quarter, 0.5 * quarter, quarter] {
+        assert!(
+            at > r(film.thickness_nm + shift) && at > r(film.thickness_nm - shift),
+            "R = {at} at the rule's dark thickness is not a maximum"
+        );
+    }
+}
