@@ -88,6 +88,7 @@ fn candidate(paths: &[PathBuf], size: (u32, u32)) -> Result<(Estimate, String), 
         };
     }
     let means: Vec<&[glam::DVec3]> = files.iter().map(|c| &c.mean[..]).collect();
+    refuse_identical(paths, &means)?;
     let mut estimate = Estimate::from_spread(size.0, size.1, &means)?;
     if files.iter().any(|c| c.var.is_some()) {
         estimate.source += "; their own variance channels are not used";
@@ -101,6 +102,33 @@ fn candidate(paths: &[PathBuf], size: (u32, u32)) -> Result<(Estimate, String), 
     Ok((estimate, name))
 }
 // ANCHOR_END: candidate
+
+/// Candidates rendered with the same seed (a renderer's default, often) are the same
+/// image: their spread is zero, and every pixel that differs from the reference at all
+/// would fail. Two identical candidates are refused, naming them.
+fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), String> {
+    let same: Vec<usize> = (1..means.len()).filter(|&j| means[j] == means[0]).collect();
+    if same.len() + 1 == means.len() {
+        return Err(format!(
+            "these {} images are identical ({} ... {}): their spread says nothing of their noise. \
+             Render each with a different seed (Mitsuba: `mi.render(scene, seed=k)` or \
+             `<integer name=\"seed\" value=\"k\"/>` in the sampler; raylemma: --seed k)",
+            means.len(),
+            paths[0].display(),
+            paths[paths.len() - 1].display()
+        ));
+    }
+    for i in 0..means.len() {
+        if let Some(j) = (i + 1..means.len()).find(|&j| means[i] == means[j]) {
+            return Err(format!(
+                "{} and {} are the same image: render each candidate with a different seed",
+                paths[i].display(),
+                paths[j].display()
+            ));
+        }
+    }
+    Ok(())
+}
 
 /// `Ok(true)`: agree, `Ok(false)`: differ; an error is returned for bad input (exit
 /// status 2).

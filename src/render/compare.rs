@@ -126,7 +126,7 @@ pub struct Region {
     /// The region's top-left pixel.
     pub y: u32,
     /// The region mean's z (the normal z with the same p-value as its t) of the channel
-    /// with the largest `|z|`.
+    /// with the largest `|z|`: positive where the second image (the candidate) is brighter.
     pub z: f64,
     /// Which channel (0 R, 1 G, 2 B).
     pub channel: usize,
@@ -134,6 +134,9 @@ pub struct Region {
     pub zs: DVec3,
     /// The degrees of freedom of that channel's test ([`region_dof`]).
     pub dof: f64,
+    /// That channel's difference relative to the first image's mean over the region, and
+    /// the half-width of its 95 % interval.
+    pub relative: (f64, f64),
     /// The RMS difference over the region's pixels and channels.
     pub rmse: f64,
 }
@@ -166,8 +169,10 @@ pub struct Comparison {
     pub regions: Vec<Region>,
     /// How many blocks are beyond the critical value.
     pub block_failure_count: usize,
-    /// The whole image's mean, per channel: its z and degrees of freedom.
-    pub image: [(f64, f64); 3],
+    /// The whole image's mean, per channel: its z (positive: the second image, the
+    /// candidate, is brighter), degrees of freedom, and relative difference with the
+    /// half-width of its 95 % interval.
+    pub image: [(f64, f64, (f64, f64)); 3],
     /// Root-mean-square difference over all pixels and channels.
     pub rmse: f64,
     /// The mean of `z²` over pixel-channels: about 1 when the variances are right.
@@ -181,7 +186,7 @@ impl Comparison {
     pub fn image_failure_count(&self) -> usize {
         self.image
             .iter()
-            .filter(|(z, _)| fails(*z, self.z_critical))
+            .filter(|(z, _, _)| fails(*z, self.z_critical))
             .count()
     }
 
@@ -223,9 +228,16 @@ impl Comparison {
             self.mean_z2,
             100.0 * self.share_beyond_95
         );
+        s += "the sign of every z and difference: positive where the candidate (the second) is brighter than the reference; pixels and blocks at (x, y) from the top-left pixel (0, 0), y down\n";
         s += &format!(
             "whole image: z = {:.2} (R), {:.2} (G), {:.2} (B)\n",
             self.image[0].0, self.image[1].0, self.image[2].0
+        );
+        s += &format!(
+            "whole image, candidate against reference, with 95 % intervals: R {}, G {}, B {}\n",
+            percent(self.image[0].2),
+            percent(self.image[1].2),
+            percent(self.image[2].2)
         );
         s += &format!(
             "pixels beyond: {}; blocks ({BLOCK}x{BLOCK}) beyond: {}; whole-image means beyond: {}\n",
@@ -239,8 +251,14 @@ impl Comparison {
         s += "worst regions:\n";
         for r in self.regions.iter().take(5) {
             s += &format!(
-                "  block at ({}, {}) channel {}: z = {:.2} ({:.0} degrees of freedom), RMSE {:.4e}\n",
-                r.x, r.y, rgb[r.channel], r.z, r.dof, r.rmse
+                "  block at ({}, {}) channel {}: z = {:.2} ({:.0} degrees of freedom), {}, RMSE {:.4e}\n",
+                r.x,
+                r.y,
+                rgb[r.channel],
+                r.z,
+                r.dof,
+                percent(r.relative),
+                r.rmse
             );
         }
         s += if self.agree() {
@@ -250,6 +268,11 @@ impl Comparison {
         };
         s
     }
+}
+
+/// A relative difference and the half-width of its interval, in percent.
+fn percent((r, h): (f64, f64)) -> String {
+    format!("{:+.3} % ± {:.3} %", 100.0 * r, 100.0 * h)
 }
 
 /// Whether a test with normal-equivalent `z` fails at `z_critical` (NaN fails).
@@ -389,7 +412,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
     let (mut sum_d2, mut sum_z2, mut beyond_95) = (0.0, 0.0, 0usize);
     for i in 0..ia.mean.len() {
         let (x, y) = (i as u32 % w, i as u32 / w);
-        let d = ia.mean[i] - ib.mean[i];
+        let d = ib.mean[i] - ia.mean[i];
         let mut z = DVec3::ZERO;
         for c in 0..3 {
             let (va, vb) = (ia.var[i][c], ib.var[i][c]);
@@ -419,17 +442,18 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
                 .flat_map(move |y| (x0..(x0 + rw).min(w)).map(move |x| ia.index(x, y)))
         };
         let n = pixels().count() as f64;
-        let mut best = (0.0_f64, 0usize, f64::INFINITY);
+        let mut best = (0.0_f64, 0usize, f64::INFINITY, (0.0, 0.0));
         let mut zs = DVec3::ZERO;
         for c in 0..3 {
-            let d: f64 = pixels().map(|i| ia.mean[i][c] - ib.mean[i][c]).sum::<f64>() / n;
+            let d: f64 = pixels().map(|i| ib.mean[i][c] - ia.mean[i][c]).sum::<f64>() / n;
+            let base: f64 = pixels().map(|i| ia.mean[i][c]).sum::<f64>() / n;
             let terms = pixels().flat_map(|i| [(ia.var[i][c], na), (ib.var[i][c], nb)]);
             let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
             let dof = region_dof(terms);
             let z = equivalent_z(d, v, dof);
             zs[c] = z;
             if c == 0 || z.abs() > best.0.abs() || z.is_nan() {
-                best = (z, c, dof);
+                best = (z, c, dof, relative(d, v, dof, base));
             }
         }
         let d2: f64 = pixels()
@@ -442,6 +466,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
             channel: best.1,
             zs,
             dof: best.2,
+            relative: best.3,
             rmse: (d2 / (3.0 * n)).sqrt(),
         }
     };
@@ -473,17 +498,26 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
 }
 // ANCHOR_END: compare
 
-/// The whole image's mean difference per channel: its z and degrees of freedom.
-fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64); 3] {
+/// The relative difference `d / |base|` and the half-width of its 95 % interval (Student's
+/// t with `dof` degrees of freedom on the variance `v` of `d`); NaN where `base` is 0.
+fn relative(d: f64, v: f64, dof: f64, base: f64) -> (f64, f64) {
+    let half = t_critical(0.05, dof) * v.sqrt();
+    (d / base.abs(), half / base.abs())
+}
+
+/// The whole image's mean difference per channel: its z, degrees of freedom, and the
+/// relative difference with the half-width of its 95 % interval ([`relative`]).
+fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64, (f64, f64)); 3] {
     let n = ia.mean.len() as f64;
     std::array::from_fn(|c| {
         let d = ia
             .mean
             .iter()
             .zip(&ib.mean)
-            .map(|(p, q)| p[c] - q[c])
+            .map(|(p, q)| q[c] - p[c])
             .sum::<f64>()
             / n;
+        let base = ia.mean.iter().map(|p| p[c]).sum::<f64>() / n;
         let terms = ia
             .var
             .iter()
@@ -491,7 +525,7 @@ fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64); 3] {
             .flat_map(|(p, q)| [(p[c], na), (q[c], nb)]);
         let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
         let dof = region_dof(terms);
-        (equivalent_z(d, v, dof), dof)
+        (equivalent_z(d, v, dof), dof, relative(d, v, dof, base))
     })
 }
 

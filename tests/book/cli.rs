@@ -138,6 +138,18 @@ fn compare_takes_plain_candidates_from_another_renderer() {
     let report = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{report}");
     assert!(report.contains("DIFFER"), "{report}");
+    // The report says how large the difference is, with its sign: the candidate is 3 %
+    // brighter.
+    let red: f64 = report
+        .split("with 95 % intervals: R ")
+        .nth(1)
+        .and_then(|r| r.split(" %").next())
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(f64::NAN);
+    assert!(
+        report.contains("positive where the candidate") && (red - 3.0).abs() < 0.3,
+        "{red}: {report}"
+    );
 }
 
 #[test]
@@ -150,6 +162,15 @@ fn compare_refuses_what_it_cannot_judge_with_the_file_and_the_reason() {
     // A plain reference.
     let out = compare_files(&two[0], &two[1..], &[]);
     refused(&out, &[&name(&two[0]), "no variance channels"]);
+    // The same image twice (renders with one seed): no spread to measure noise by.
+    let out = compare_files(&reference, &[two[0].clone(), two[0].clone()], &[]);
+    refused(&out, &["these 2 images are identical", "different seed"]);
+    let out = compare_files(
+        &reference,
+        &[two[0].clone(), two[1].clone(), two[0].clone()],
+        &[],
+    );
+    refused(&out, &[&name(&two[0]), "are the same image"]);
     // Another size.
     let small = tmp("bad-small.exr");
     write_plain(&small, (8, 16), &["R", "G", "B"], false, |_, _| 0.5);

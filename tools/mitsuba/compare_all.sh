@@ -156,7 +156,7 @@ def channels(path):
     return np.stack([a[:, :, names.index(c)] for c in "RGB"], axis=-1)
 
 def summary(path):
-    """verdict, mean z^2, RMSE, the whole image's z (reference minus candidate) of a report."""
+    """verdict, mean z^2, RMSE, the whole image's z (positive: the candidate is brighter) of a report."""
     report = open(path).read()
     rc = open(path + ".rc").read().strip()
     m = re.search(r"RMSE ([0-9.e+-]+); mean z\^2 ([0-9.]+)", report)
@@ -183,13 +183,13 @@ for scene, name, verdict in rows:
     c = np.mean([channels(p).reshape(-1, 3).mean(axis=0)
                  for p in sorted(glob.glob(f"{work}/{name}-[0-9]*.exr"))], axis=0)
     # Relative to |raylemma|: a channel's mean is negative where the light is outside the gamut.
-    rel = ", ".join(f"{100 * (c[i] - r[i]) / abs(r[i]):+.3f} % ({-zs[i]:+.1f})" for i in range(3))
+    rel = ", ".join(f"{100 * (c[i] - r[i]) / abs(r[i]):+.3f} % ({zs[i]:+.1f})" for i in range(3))
     if name.endswith("-hdrfilm"):
         label, bright, control = f"`{scene}`, Mitsuba's own `hdrfilm`", "", ""
     else:
         label = f"`{scene}`"
         bw, _, _, bz = summary(f"{work}/{name}.bright.txt")
-        bright = f"{bw.replace('**', '')} (z {-max(bz, key=abs):+.1f})"
+        bright = f"{bw.replace('**', '')} (z {max(bz, key=abs):+.1f})"
         cw, cz2, crmse, _ = summary(f"{work}/{name}.control.txt")
         control = f"{cw}, {cz2:.3f}, {crmse:.3e}"
         compared.append((scene, word, z2, rmse, bw.replace("**", ""), cw, cz2, crmse))
