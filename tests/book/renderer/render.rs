@@ -252,6 +252,51 @@ fn bits(image: &Image) -> Vec<u64> {
 }
 
 #[test]
+fn at_max_depth_zero_every_strategy_sees_only_the_lights_themselves() {
+    // `max_depth = M` counts the paths of at most M bounces whatever the direct-lighting
+    // strategy: no next-event estimate is made at the last vertex, whose BSDF half is never
+    // traced. At M = 0 only emitters seen directly count, so the four strategies render the
+    // same image bit for bit (they draw the same random numbers), black wherever no light is
+    // seen. A shadow ray at the last vertex would light the walls under `light` and MIS only.
+    use raylemma::render::scene::DirectLight;
+    use raylemma::transport::shadow::Heuristic;
+    let strategies = [
+        DirectLight::Mis(Heuristic::Power),
+        DirectLight::Mis(Heuristic::Balance),
+        DirectLight::Light,
+        DirectLight::Bsdf,
+    ];
+    let at = |depth: u32, direct: DirectLight| {
+        let mut s = small(load("cornell-diffuse.toml"), 16, 4);
+        s.settings.max_depth = depth;
+        s.settings.direct = direct;
+        render(&s, s.settings.spp, Progress::Silent)
+    };
+    let black = |i: &Image| i.mean.iter().filter(|m| **m == DVec3::ZERO).count();
+    let first = at(0, strategies[0]);
+    for &d in &strategies[1..] {
+        assert!(
+            bits(&at(0, d)) == bits(&first),
+            "{d:?} differs from {:?} at max_depth 0",
+            strategies[0]
+        );
+    }
+    let pixels = first.mean.len();
+    assert!(
+        black(&first) > pixels / 2,
+        "at max_depth 0, only {} of {pixels} pixels are black",
+        black(&first)
+    );
+    // Not vacuous: one bounce lights the walls (all but the sphere's shadow).
+    let one = at(1, DirectLight::Light);
+    assert!(
+        black(&one) < pixels / 4,
+        "at max_depth 1, {} of {pixels} pixels are still black",
+        black(&one)
+    );
+}
+
+#[test]
 fn images_are_bit_identical_whatever_the_number_of_threads() {
     let s = small(load("cornell.toml"), 40, 3);
     let with = |threads: usize| {
