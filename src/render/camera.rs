@@ -1,4 +1,4 @@
-//! The pinhole camera. Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
+//! The pinhole camera. Chapter: *The path tracer* (`chapters/renderer/path-tracer.md`).
 
 use glam::{DVec2, DVec3};
 

@@ -1,5 +1,5 @@
-//! Do two renders of the same scene agree within their noise? Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`, *Comparing two renders*).
+//! Do two renders of the same scene agree within their noise? Chapter: *Comparing
+//! images* (`chapters/renderer/compare.md`).
 //!
 //! Each side of a comparison is an [`Estimate`]: per-pixel means, the estimated variance
 //! of each mean, and the degrees of freedom `ν` of that estimate: `n - 1` for a render's

@@ -1,8 +1,8 @@
 //! The driver: a render of a whole image, split into square tiles ([`TILE`]) that the
 //! worker threads (rayon) take in any order, each pixel by [`super::pixel::render_pixel`],
 //! with a progress bar ([`Progress`]); and [`render_file`], which reads a scene file,
-//! renders it and times it for its sidecar. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`).
+//! renders it and times it for its sidecar. Chapter: *The path tracer*
+//! (`chapters/renderer/path-tracer.md`).
 
 use std::path::Path;
 use std::time::Instant;

@@ -2,8 +2,8 @@
 //! display image) and `SCENE.json`, the sidecar that says what the render was
 //! ([`Sidecar`], written with `serde_json`). All three land together or not at all
 //! ([`write_outputs`], through the project's one writer, [`crate::output::FileSet`]), so a
-//! failure leaves an earlier render whole. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`, *What a render writes*).
+//! failure leaves an earlier render whole. Chapter: *The path tracer*
+//! (`chapters/renderer/path-tracer.md`, *What a render writes*).
 
 use std::path::{Path, PathBuf};
 

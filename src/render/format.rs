@@ -1,8 +1,8 @@
 //! The scene file as written: a small TOML file, deserialised by serde into raw tables
 //! whose values keep their byte spans, so that the checker (`validate`) can name
 //! the line of every mistake. The entry points [`parse`] and [`load`] return a checked
-//! [`Scene`] or a [`DataError`]. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`), which documents every key so that another
+//! [`Scene`] or a [`DataError`]. Chapter: *Reference scenes and
+//! interop* (`chapters/renderer/scenes.md`), which documents every key so that another
 //! implementation can read the same files.
 
 use std::collections::BTreeMap;

@@ -1,8 +1,9 @@
 //! A rendered image: per-pixel means and the variance of each mean, in linear sRGB
 //! ([`Welford`] accumulates them), and its two image files: OpenEXR with the variances
 //! (written and read back) and the display PNG. The sidecar, and the writing of a render's
-//! three files as one set, are in [`super::files`]. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`).
+//! three files as one set, are in [`super::files`]. Chapter: *The path tracer*
+//! (`chapters/renderer/path-tracer.md`, *What a render writes*) and *Comparing images*
+//! (`chapters/renderer/compare.md`).
 //!
 //! # The EXR layout
 //!

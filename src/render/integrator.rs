@@ -2,8 +2,8 @@
 //! estimation and multiple importance sampling, Russian roulette and hero wavelengths, and
 //! the offset of a ray leaving a surface ([`offset_origin`]). The scene answers the
 //! geometric questions ([`super::scene`]); the pixels and tiles are the driver's
-//! ([`super::pixel`], [`super::driver`]). Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`).
+//! ([`super::pixel`], [`super::driver`]). Chapter: *The path tracer*
+//! (`chapters/renderer/path-tracer.md`), which writes out the estimator this loop computes.
 //!
 //! Every interaction is one of the book's modules, unchanged: the stable ray-sphere
 //! intersection, the parallelogram and sphere lights with their area-to-solid-angle pdfs
@@ -81,6 +81,7 @@ impl<const K: usize> PerPath<K> {
 }
 
 // ANCHOR: radiance
+// ANCHOR: loop_head
 /// The radiance arriving at `o` from the direction `-d` (`d` of unit length), at the
 /// wavelengths `wl`, estimated along one path. `wl` may be changed: a dispersive
 /// refraction terminates the secondary lanes.
@@ -133,6 +134,7 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
         };
         let (p, n) = scene.surface_point(i, o, d, hit.t);
         match &scene.materials[scene.shapes[i].material] {
+            // ANCHOR_END: loop_head
             // ANCHOR: lambert
             Material::Lambert { .. } => {
                 // Shade on the side the ray arrived from (two-sided).
@@ -189,11 +191,13 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                 }
             }
             // ANCHOR_END: lambert
+            // ANCHOR: mirror
             Material::Mirror => {
                 d = reflect(d, n);
                 o = offset_origin(p, n, d);
                 bsdf_pdf = None;
             }
+            // ANCHOR_END: mirror
             // ANCHOR: dielectric
             Material::Dielectric { ior } => {
                 if matches!(ior, Ior::Sellmeier(_)) {
@@ -242,7 +246,9 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
                 }
                 o = offset_origin(p, n, d);
                 bsdf_pdf = None;
-            } // ANCHOR_END: thin_film
+                // ANCHOR_END: thin_film
+                // ANCHOR: loop_tail
+            }
         }
         // ANCHOR: roulette
         // Russian roulette on the largest live throughput.
@@ -267,4 +273,5 @@ pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: 
     }
     l
 }
+// ANCHOR_END: loop_tail
 // ANCHOR_END: radiance

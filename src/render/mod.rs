@@ -1,5 +1,6 @@
-//! The reference renderer. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`).
+//! The reference renderer. Chapters: *The path tracer* (`chapters/renderer/path-tracer.md`),
+//! *Comparing images* (`chapters/renderer/compare.md`) and *Reference scenes and interop*
+//! (`chapters/renderer/scenes.md`).
 //!
 //! A scene file goes through these files, in this order:
 //!

@@ -1,7 +1,7 @@
 //! One pixel: its generator ([`pixel_rng`]), its samples (a jittered camera ray, the
 //! path's wavelengths, the path's radiance, its colour: [`sample_xyz`]), and their running
-//! mean and variance ([`render_pixel`]). Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`, *From lanes to a pixel*).
+//! mean and variance ([`render_pixel`]). Chapter: *The path tracer*
+//! (`chapters/renderer/path-tracer.md`, *From lanes to a pixel*).
 
 use glam::{DVec2, DVec3};
 use rand::RngExt;

@@ -1,6 +1,6 @@
 //! What a reference render was made from: the scene file, the data files it read, the
-//! renderer's code and the settings. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`, *Reference images*).
+//! renderer's code and the settings. Chapter: *Reference scenes and
+//! interop* (`chapters/renderer/scenes.md`, *Reference images*).
 //!
 //! The renders reproduce bit for bit, so a committed reference whose record matches what the
 //! render would be made from now is current, and need not be rendered again: `cargo run

@@ -2,7 +2,8 @@
 //! environment) and its geometric queries: the first surface along a ray
 //! ([`Scene::intersect`]), the point and normal where a ray meets a shape
 //! ([`Scene::surface_point`]), and the side an emitter emits to ([`Scene::emits_towards`]).
-//! Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
+//! Chapter: *The path tracer* (`chapters/renderer/path-tracer.md`); its file format is in
+//! *Reference scenes and interop* (`chapters/renderer/scenes.md`).
 //!
 //! A `Scene` is made from a file by [`super::format::parse`] (or [`super::format::load`]),
 //! which checks everything (`validate`), or built directly by code and tests.
@@ -158,8 +159,10 @@ pub struct RenderSettings {
     pub direct: DirectLight,
     /// Russian roulette starts after this many bounces.
     pub roulette_depth: u32,
-    /// A hard limit on the number of bounces (a safety net; with roulette, paths this long
-    /// carry no measurable energy in the canonical scenes).
+    /// At most this many bounces, that is paths of at most `max_depth + 1` segments,
+    /// whatever the `direct` strategy: the path tracer makes no next-event estimate at the
+    /// last vertex, whose BSDF half it never traces. A safety net at its default of 1000:
+    /// with roulette, paths this long carry no measurable energy in the canonical scenes.
     pub max_depth: u32,
 }
 

@@ -1,5 +1,5 @@
-//! The surfaces of a scene laid out for fast intersection. Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`, *Speed*).
+//! The surfaces of a scene laid out for fast intersection. Chapter: *The path
+//! tracer* (`chapters/renderer/path-tracer.md`, *Speed against error*).
 //!
 //! [`super::scene::Scene::intersect`] is the book's form: a loop over the shapes and the
 //! lights, each matched by kind. Most of a path's time goes there, so the renderer traces

@@ -1,8 +1,8 @@
 //! A scene as fully resolved JSON: every default filled in, every spectrum sampled on the
 //! 1 nm grid, every transform explicit, and the conventions (colour, camera, quads, lights)
 //! stated in the file, so that an implementer in any language can render it without
-//! re-implementing raylemma's TOML parser. Written with `serde_json`. Chapter: *The
-//! reference renderer* (`chapters/renderer/renderer.md`, *Exporting a scene*).
+//! re-implementing raylemma's TOML parser. Written with `serde_json`. Chapter: *Reference
+//! scenes and interop* (`chapters/renderer/scenes.md`, *Exporting a scene*).
 //!
 //! Nothing is refused: Sellmeier glass is its coefficients and its index at every
 //! nanometre, a thin film its index, thickness and heights, a gradient sky its axis and

@@ -1,7 +1,7 @@
 //! A scene as a Mitsuba 3 XML file (`<scene version="3.0.0">`) that `mitsuba.load_file`
 //! renders unchanged in a spectral variant, following the rules checked against Mitsuba
-//! 3.9.1 in `tools/mitsuba/NOTES.md`. Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`, *Exporting a scene*).
+//! 3.9.1 in `tools/mitsuba/NOTES.md`. Chapter: *Reference scenes and interop*
+//! (`chapters/renderer/scenes.md`, *Exporting a scene*).
 //!
 //! * Spectra are written inline as `irregular` spectra with every knot (a constant as a
 //!   `uniform` value, a blackbody tabulated at 1 nm): linear between knots and zero
@@ -14,7 +14,9 @@
 //!   (reflectance exactly 1), a dielectric `int_ior` = its index with `ext_ior` = 1 (the
 //!   default is air's 1.000277).
 //! * The integrator is `path` with `rr_depth` = raylemma's `roulette_depth` (at least 1)
-//!   and `max_depth` = raylemma's `max_depth + 1` (Mitsuba counts segments).
+//!   and `max_depth` = raylemma's `max_depth + 1` (Mitsuba counts segments, raylemma
+//!   bounces; both sample a light only where the next segment is traced too, so the two
+//!   count the same paths).
 //! * The camera is `perspective` with `fov_axis = "y"`, a box filter, and far enough a far
 //!   clip; the film is a `specfilm` whose three sensor responses are the 1 nm CIE 1931
 //!   functions divided by raylemma's `∫ȳ`, so that its channels `X`, `Y`, `Z` are
@@ -24,8 +26,9 @@
 //! Refused, with the line: Sellmeier dispersion and thin films (no Mitsuba BSDF has
 //! them), a gradient sky, a dielectric quad (Mitsuba scales radiance by `1/η²` on
 //! refraction and raylemma does not: the two agree only for closed shapes that paths
-//! leave again), and anything inside a sphere light or the camera or a light inside a
-//! dielectric sphere (Mitsuba's sphere emitters emit outwards only; the `η²` again).
+//! leave again), and anything inside a sphere light (Mitsuba's sphere emitters emit
+//! outwards only). A camera or a light inside a dielectric sphere, where the `η²` would
+//! not cancel either, never reaches the exporter: the scene's checks refuse it.
 
 use std::fmt::Write as _;
 
@@ -153,15 +156,6 @@ fn check(f: &SceneFile) -> Result<(), DataError> {
     }
     let dielectric = |i: usize| matches!(s.materials[i], Material::Dielectric { .. });
     let inside = |p: DVec3, c: DVec3, r: f64| (p - c).length() < r;
-    let dielectric_spheres: Vec<(DVec3, f64)> = s
-        .shapes
-        .iter()
-        .filter(|sh| dielectric(sh.material))
-        .filter_map(|sh| match sh.geometry {
-            Geometry::Sphere(sp) => Some((sp.center, sp.radius)),
-            Geometry::Quad(_) => None,
-        })
-        .collect();
     let sphere_lights: Vec<(DVec3, f64)> = s
         .lights
         .iter()
@@ -199,27 +193,6 @@ fn check(f: &SceneFile) -> Result<(), DataError> {
             f.camera_line,
             format!("the camera is inside a sphere light: Mitsuba's sphere emitters emit outwards only; {beyond}"),
         ));
-    }
-    if dielectric_spheres.iter().any(|&(c, r)| inside(eye, c, r)) {
-        return Err(f.error(
-            f.camera_line,
-            format!("the camera is inside a dielectric sphere: Mitsuba scales radiance by η² there and raylemma does not; {beyond}"),
-        ));
-    }
-    for (i, l) in s.lights.iter().enumerate() {
-        let points: Vec<DVec3> = match &l.shape {
-            LightShape::Quad(q) => q.vertices().to_vec(),
-            LightShape::Sphere(sp) => vec![sp.center()],
-        };
-        if points
-            .iter()
-            .any(|&p| dielectric_spheres.iter().any(|&(c, r)| inside(p, c, r)))
-        {
-            return Err(f.error(
-                f.light_lines[i],
-                format!("light {} is inside a dielectric sphere: Mitsuba scales radiance by 1/η² on the way out and raylemma does not; {beyond}", i + 1),
-            ));
-        }
     }
     Ok(())
 }

@@ -2,11 +2,11 @@
 //! `mitsuba.load_file` renders unchanged, and as fully resolved JSON ([`json::to_json`]:
 //! every default filled in, every spectrum on the 1 nm grid, every transform explicit),
 //! which an implementer in any language reads without re-implementing the TOML parser.
-//! Chapter: *The reference renderer* (`chapters/renderer/renderer.md`, *Exporting a
+//! Chapter: *Reference scenes and interop* (`chapters/renderer/scenes.md`, *Exporting a
 //! scene*).
 //!
-//! Both start from a [`SceneFile`]: the checked [`Scene`] and, for every material, shape,
-//! light, the camera and the environment, the line of the file where it is written, so
+//! Both start from a [`SceneFile`]: the checked [`Scene`] and, for every material and
+//! shape, the camera and the environment, the line of the file where it is written, so
 //! that what Mitsuba cannot express (Sellmeier dispersion, thin films, a gradient sky) is
 //! refused as `file:line: reason`, like every other problem of a scene file.
 
@@ -39,8 +39,6 @@ pub struct SceneFile {
     pub materials: Vec<(String, usize)>,
     /// The line of every `[[shape]]`, in order.
     pub shape_lines: Vec<usize>,
-    /// The line of every `[[light]]`, in order.
-    pub light_lines: Vec<usize>,
 }
 
 impl SceneFile {
@@ -65,7 +63,6 @@ impl SceneFile {
                 .map(|(name, m)| (name.clone(), line(m.span())))
                 .collect(),
             shape_lines: raw.shape.iter().map(|s| line(s.span())).collect(),
-            light_lines: raw.light.iter().map(|s| line(s.span())).collect(),
         })
     }
 

@@ -1,7 +1,7 @@
 //! The checks of `[materials]`: each type's keys and values (a reflectance in `[0, 1]`, an
 //! index of refraction `> 0` or a known Sellmeier fit, a film's thickness and the heights
-//! over which it varies). Chapter: *The reference renderer*
-//! (`chapters/renderer/renderer.md`).
+//! over which it varies). Chapter: *Reference scenes and
+//! interop* (`chapters/renderer/scenes.md`).
 
 use std::collections::BTreeMap;
 

@@ -2,8 +2,9 @@
 //! model ([`super::scene`]): every number, name and combination is checked before a single
 //! ray is traced, and every problem is a [`DataError`] naming the file, the line and what
 //! is wrong (an unknown key or material, a negative radius, an index of refraction `<= 0`,
-//! a NaN, a degenerate quad, a missing spectrum file, zero samples per pixel). Chapter:
-//! *The reference renderer* (`chapters/renderer/renderer.md`, *Bad input*).
+//! a NaN, a degenerate quad, a missing spectrum file, zero samples per pixel, a camera or a
+//! light inside glass). Chapter: *Reference scenes and interop*
+//! (`chapters/renderer/scenes.md`, *Bad input*).
 //!
 //! One file per part of the scene: [`settings`] (`[render]`, `[camera]`, the emission
 //! wavelength strategy), [`spectra`], [`materials`], [`shapes`] (`[[shape]]` and
@@ -38,8 +39,9 @@ struct Checker<'a> {
 
 /// Checks the raw tables `raw` of the scene file `file` (text `text`, folder `dir`), table
 /// by table in the order the model needs them: settings, camera, spectra (which may refer
-/// to earlier ones), materials, shapes, lights, environment, then the wavelength strategy
-/// that depends on the lights. The scene carries the [`fnv1a`] hash of `text`.
+/// to earlier ones), materials, shapes, lights (and the camera and lights outside every
+/// dielectric sphere), environment, then the wavelength strategy that depends on the
+/// lights. The scene carries the [`fnv1a`] hash of `text`.
 ///
 /// # Errors
 /// The first problem, as a [`DataError`] with its line.
@@ -70,6 +72,12 @@ pub(super) fn scene(
     }
     let shapes = ck.shapes(&raw.shape, &names)?;
     let lights = ck.lights(&raw.light, &spectra)?;
+    ck.outside_dielectrics(
+        (&raw.camera, camera.position),
+        (&raw.light, &lights),
+        &materials,
+        &shapes,
+    )?;
     let environment = match &raw.environment {
         Some(env) => Some(ck.environment(env, &spectra)?),
         None => None,

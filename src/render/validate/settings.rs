@@ -1,5 +1,5 @@
 //! The checks of `[render]` and `[camera]`, and of the emission wavelength strategy, which
-//! needs the lights. Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
+//! needs the lights. Chapter: *Reference scenes and interop* (`chapters/renderer/scenes.md`).
 
 use std::ops::Range;
 

@@ -1,7 +1,8 @@
 //! The checks of `[[shape]]` and `[[light]]`: a sphere (centre, radius > 0) or a quad
 //! (corner and two edges that span a parallelogram), each with only its own keys, and a
-//! known material (shapes) or an emission spectrum (lights). Chapter: *The reference
-//! renderer* (`chapters/renderer/renderer.md`).
+//! known material (shapes) or an emission spectrum (lights); and the camera and the lights
+//! outside every dielectric sphere. Chapter: *Reference scenes and interop*
+//! (`chapters/renderer/scenes.md`, *Bad input*).
 
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -13,8 +14,8 @@ use super::Checker;
 use crate::data::DataError;
 use crate::geometry::parallelogram::{Degenerate, Parallelogram};
 use crate::geometry::sphere::Sphere;
-use crate::render::format::RawShape;
-use crate::render::scene::{Emitter, Geometry, LightShape, Shape};
+use crate::render::format::{RawCamera, RawShape};
+use crate::render::scene::{Emitter, Geometry, LightShape, Material, Shape};
 use crate::spectral::spectrum::Spectrum;
 use crate::transport::shadow::{QuadLight, SphereLight};
 
@@ -87,6 +88,64 @@ impl Checker<'_> {
             lights.push(Emitter { shape, emission });
         }
         Ok(lights)
+    }
+
+    /// Refuses a camera or a light inside a dielectric sphere. The path tracer leaves out the
+    /// radiance factor `η²` of a refraction, which cancels only for paths that leave every
+    /// dielectric they enter: a path that starts inside one (the camera) or ends inside one
+    /// (a light) would be wrong by that factor (chapter *The path tracer*,
+    /// `chapters/renderer/path-tracer.md`). A light is inside when its centre (a sphere) or
+    /// a corner (a quad) is; the error is on the line of the camera's `position`, or of the
+    /// light's `center` or `corner`. A dielectric made of quads has no inside to test.
+    pub(super) fn outside_dielectrics(
+        &self,
+        camera: (&Spanned<RawCamera>, DVec3),
+        lights: (&[Spanned<RawShape>], &[Emitter]),
+        materials: &[Material],
+        shapes: &[Shape],
+    ) -> Result<(), DataError> {
+        let spheres: Vec<(usize, Sphere)> = shapes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| match s.geometry {
+                Geometry::Sphere(sp)
+                    if matches!(materials[s.material], Material::Dielectric { .. }) =>
+                {
+                    Some((i, sp))
+                }
+                _ => None,
+            })
+            .collect();
+        let inside = |p: DVec3| {
+            spheres
+                .iter()
+                .find(|(_, sp)| (p - sp.center).length() < sp.radius)
+                .map(|(i, _)| i + 1)
+        };
+        let why = "the renderer leaves out the radiance factor η² of refraction, which cancels only \
+                   when the camera and every light are outside every dielectric";
+        if let Some(i) = inside(camera.1) {
+            return self.err(
+                camera.0.get_ref().position.span(),
+                format!("the camera is inside shape {i}, a dielectric sphere: {why}"),
+            );
+        }
+        for (k, (raw, light)) in lights.0.iter().zip(lights.1).enumerate() {
+            let (points, at) = match &light.shape {
+                LightShape::Quad(q) => (q.vertices().to_vec(), raw.get_ref().corner.as_ref()),
+                LightShape::Sphere(sp) => (vec![sp.center()], raw.get_ref().center.as_ref()),
+            };
+            if let Some(i) = points.iter().find_map(|&p| inside(p)) {
+                return self.err(
+                    at.map_or(raw.span(), Spanned::span),
+                    format!(
+                        "light {} is inside shape {i}, a dielectric sphere: {why}",
+                        k + 1
+                    ),
+                );
+            }
+        }
+        Ok(())
     }
 
     /// The centre and radius (> 0) of a sphere.

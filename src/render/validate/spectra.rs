@@ -1,7 +1,7 @@
 //! The checks of spectra: a number (a constant), the name of an entry of `[spectra]`, or
 //! an inline table of one kind (`constant`, `file` with its `column`, `blackbody` with its
 //! `peak`, `lamp`) with an optional `scale` or `luminance`; and the environment, made of
-//! spectra. Chapter: *The reference renderer* (`chapters/renderer/renderer.md`).
+//! spectra. Chapter: *Reference scenes and interop* (`chapters/renderer/scenes.md`).
 
 use std::collections::BTreeMap;
 use std::ops::Range;

@@ -1,5 +1,4 @@
-//! Tests of `compare` with few candidates (chapter *The reference renderer*, *Comparing
-//! two renders*): the statistics of variances estimated from few images, the reading of
+//! Tests of `compare` with few candidates (chapter *Comparing images*): the statistics of variances estimated from few images, the reading of
 //! plain EXRs as other renderers write them, and the refusal of images no comparison can
 //! use.
 //!
@@ -147,6 +146,33 @@ fn few_candidates_keep_the_false_alarm_rate_and_normal_critical_values_do_not() 
             );
         }
     }
+}
+
+/// Exercise 1 of *Comparing images*: your critical `|z|` of one test, for two 256 x 256
+/// images compared at `--alpha 0.01`.
+const YOUR_CRITICAL_Z: Option<f64> = None;
+
+#[test]
+#[ignore = "exercise 1 of Comparing images: set YOUR_CRITICAL_Z, then run it"]
+fn exercise_1_the_critical_z_of_a_256_by_256_comparison() {
+    // Two images that agree exactly, with unit variances: the comparison's own critical value.
+    const SIDE: u32 = 256;
+    let image = Image {
+        width: SIDE,
+        height: SIDE,
+        mean: vec![DVec3::ONE; (SIDE * SIDE) as usize],
+        var: vec![DVec3::ONE; (SIDE * SIDE) as usize],
+        spp: None,
+    };
+    let e = Estimate::from_variance(image);
+    let c = compare(&e, &e, 0.01).unwrap();
+    let yours = YOUR_CRITICAL_Z.expect("exercise 1 of Comparing images: set YOUR_CRITICAL_Z");
+    // The message does not give the answer away: count the tests, then apply Šidák.
+    assert!(
+        (yours - c.z_critical).abs() <= 0.01,
+        "your critical |z| {yours} is not within 0.01 of the one compare uses \
+         (a test per pixel and channel, per block and channel, per channel of the image)"
+    );
 }
 
 #[test]

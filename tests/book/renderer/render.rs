@@ -1,6 +1,8 @@
-//! Tests of the chapter *The reference renderer* (`src/render/`): furnace scenes against
+//! Tests of the chapter *The path tracer* (`src/render/`): furnace scenes against
 //! their exact pixel values, determinism whatever the number of threads, ray offsets (no
-//! acne, no leaks), the image files, and `compare` on agreeing and disagreeing renders.
+//! acne, no leaks), the image files, and `compare` on agreeing and disagreeing renders
+//! (chapter *Comparing images*). The exercises' checks are the ignored tests at the end
+//! of the furnaces (`exercise_…`).
 //!
 //! Statistical tests (9 of the suite's budget of 200): the white furnace under four
 //! wavelength strategies, the grey furnace's two regions, one comparison of two seeds and
@@ -147,6 +149,41 @@ fn white_furnace_rejects_a_wavelength_pdf_that_is_not_the_sampled_one() {
     );
 }
 
+/// Exercise 1 of *The path tracer*: a white furnace seen from inside a glass sphere of
+/// index 1.5. Radiance divided by the square of the index is what a ray conserves, so at
+/// equilibrium the radiance inside the glass is `1.5²` times the environment's 1, at every
+/// pixel: every camera path leaves the glass once more than it enters it. The camera lies
+/// within `R / 1.5` of the centre, so no ray from it is trapped by total internal
+/// reflection, and the furnace's other spheres are taken out. A path tracer that leaves out
+/// the radiance factor of refraction (this one, until the exercise is done) sees 1.
+#[test]
+#[ignore = "exercise 1 of The path tracer: add the radiance factor of refraction to the dielectric branch, then run it"]
+fn exercise_1_a_camera_inside_glass_sees_eta_squared() {
+    let mut s = small(load("furnace.toml"), 32, 32);
+    s.materials.push(Material::Dielectric {
+        ior: scene::Ior::Constant(1.5),
+    });
+    let glass = s.materials.len() - 1;
+    let eye = s.camera.position;
+    s.shapes = vec![scene::Shape {
+        geometry: Geometry::Sphere(raylemma::geometry::Sphere::new(
+            eye + DVec3::new(0.3, -0.4, 0.6),
+            3.0,
+        )),
+        material: glass,
+    }];
+    let image = render_with(&s, s.settings.spp, Progress::Silent, &|u| {
+        Strategy::HeroVisible.sample(u)
+    });
+    let f = fit(
+        &image,
+        |_, _| true,
+        1.5 * 1.5 * exact_rgb(&Spectrum::Constant(1.0)),
+    );
+    assert_eq!(f.pixels, 32 * 32);
+    f.assert_exact("a white furnace seen from inside glass of index 1.5");
+}
+
 /// The grey furnace: pixels that see only the sphere (all four corners' rays hit it) must
 /// be `rho` times the environment, pixels whose 3x3 neighbourhood misses it entirely must
 /// be the environment.
@@ -212,6 +249,51 @@ fn bits(image: &Image) -> Vec<u64> {
         .chain(&image.var)
         .flat_map(|v| v.to_array().map(f64::to_bits))
         .collect()
+}
+
+#[test]
+fn at_max_depth_zero_every_strategy_sees_only_the_lights_themselves() {
+    // `max_depth = M` counts the paths of at most M bounces whatever the direct-lighting
+    // strategy: no next-event estimate is made at the last vertex, whose BSDF half is never
+    // traced. At M = 0 only emitters seen directly count, so the four strategies render the
+    // same image bit for bit (they draw the same random numbers), black wherever no light is
+    // seen. A shadow ray at the last vertex would light the walls under `light` and MIS only.
+    use raylemma::render::scene::DirectLight;
+    use raylemma::transport::shadow::Heuristic;
+    let strategies = [
+        DirectLight::Mis(Heuristic::Power),
+        DirectLight::Mis(Heuristic::Balance),
+        DirectLight::Light,
+        DirectLight::Bsdf,
+    ];
+    let at = |depth: u32, direct: DirectLight| {
+        let mut s = small(load("cornell-diffuse.toml"), 16, 4);
+        s.settings.max_depth = depth;
+        s.settings.direct = direct;
+        render(&s, s.settings.spp, Progress::Silent)
+    };
+    let black = |i: &Image| i.mean.iter().filter(|m| **m == DVec3::ZERO).count();
+    let first = at(0, strategies[0]);
+    for &d in &strategies[1..] {
+        assert!(
+            bits(&at(0, d)) == bits(&first),
+            "{d:?} differs from {:?} at max_depth 0",
+            strategies[0]
+        );
+    }
+    let pixels = first.mean.len();
+    assert!(
+        black(&first) > pixels / 2,
+        "at max_depth 0, only {} of {pixels} pixels are black",
+        black(&first)
+    );
+    // Not vacuous: one bounce lights the walls (all but the sphere's shadow).
+    let one = at(1, DirectLight::Light);
+    assert!(
+        black(&one) < pixels / 4,
+        "at max_depth 1, {} of {pixels} pixels are still black",
+        black(&one)
+    );
 }
 
 #[test]

@@ -1,5 +1,5 @@
 //! Tests of the scene format (`src/render/format.rs`, checked by `src/render/validate/`;
-//! chapter *The reference renderer*):
+//! chapter *Reference scenes and interop*):
 //! every canonical scene reads; every malformed scene is refused with the file, the line
 //! and the reason; random corruptions of real scenes never panic; and `raylemma render`
 //! refuses a bad scene before it writes anything, leaving earlier outputs untouched.
@@ -237,6 +237,51 @@ fn degenerate_geometry_is_refused() {
     // A camera looking along its up direction has no image plane.
     refused_at("up = [0, 1, 0]", "up = [0, 0, 1]", &["parallel"]);
     refused_at("look_at = [0, 0, 0]", "look_at = [0, 0, -5]", &["look_at"]);
+}
+
+#[test]
+fn a_camera_or_light_inside_glass_is_refused() {
+    // The path tracer leaves out the radiance factor η² of refraction, which cancels only for
+    // paths that leave every dielectric they enter: a camera or a light inside glass would be
+    // rendered wrong by η², so the scene is refused (chapter *The path tracer*).
+    let line = |text: &str, start: &str| {
+        text.lines()
+            .position(|l| l.starts_with(start))
+            .unwrap_or_else(|| panic!("no line {start:?}"))
+            + 1
+    };
+    let glass = GOOD.replacen("material = \"grey\"", "material = \"glass\"", 1);
+    assert!(
+        parse(&glass).is_ok(),
+        "a glass sphere with everything outside"
+    );
+    let eye = glass.replace("position = [0, 0, -5]", "position = [0, 0.5, -0.2]");
+    let e = parse(&eye).map(|_| ()).unwrap_err();
+    assert_eq!(e.line, line(&eye, "position"), "{e}");
+    assert!(
+        e.problem
+            .contains("camera is inside shape 1, a dielectric sphere")
+            && e.problem.contains("η²"),
+        "{e}"
+    );
+    // A quad light with one corner inside, and a sphere light whose centre is inside.
+    let quad = glass.replace("corner = [-1, 3, -1]", "corner = [-0.2, 0.5, -0.2]");
+    let e = parse(&quad).map(|_| ()).unwrap_err();
+    assert_eq!(e.line, line(&quad, "corner = [-0.2"), "{e}");
+    assert!(e.problem.contains("light 1 is inside shape 1"), "{e}");
+    let sphere = glass.replace(
+        "type = \"quad\"\ncorner = [-1, 3, -1]\nedge1 = [2, 0, 0]\nedge2 = [0, 0, 2]",
+        "type = \"sphere\"\ncenter = [0, 0.3, 0]\nradius = 0.2",
+    );
+    let e = parse(&sphere).map(|_| ()).unwrap_err();
+    assert_eq!(e.line, line(&sphere, "center = [0, 0.3"), "{e}");
+    assert!(e.problem.contains("light 1 is inside shape 1"), "{e}");
+    // Only a dielectric needs it: the same camera inside the Lambertian sphere is accepted.
+    let lambert = GOOD.replace("position = [0, 0, -5]", "position = [0, 0.5, -0.2]");
+    assert!(
+        parse(&lambert).is_ok(),
+        "a camera inside a Lambertian sphere"
+    );
 }
 
 #[test]
