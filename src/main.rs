@@ -19,8 +19,9 @@ use clap::{Parser, Subcommand};
 #[derive(Parser, Debug)]
 #[command(name = "raylemma", version, about, long_about = None)]
 struct Cli {
-    /// Fewer samples and shorter timings (for CI); figures keep their shape.
-    #[arg(long, global = true)]
+    /// With no subcommand: fewer samples and shorter timings (for CI); figures keep their
+    /// shape. (`figures` and `references` take it too.)
+    #[arg(long)]
     quick: bool,
     #[command(subcommand)]
     command: Option<Cmd>,
@@ -59,18 +60,24 @@ enum Cmd {
     Export(cmd::export::ExportArgs),
 }
 
+/// Parses the command line and runs the subcommand; its result becomes the exit status by
+/// the one rule of [`cmd::exit`] (0 success, 1 a negative verdict, 2 bad input or usage).
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let quick = cli.quick;
-    match &cli.command {
-        None => cmd::figures::everything(quick),
-        Some(Cmd::Figures(args)) => cmd::finish(cmd::figures::figures(args, quick)),
-        Some(Cmd::References(args)) => cmd::finish(cmd::figures::references(args, quick)),
-        Some(Cmd::Book) => cmd::finish(cmd::book::build()),
+    if cli.quick && cli.command.is_some() {
+        return cmd::exit(Err(cmd::Failure::BadInput(
+            "--quick goes after `figures` or `references` (raylemma figures --quick), or alone for everything".into(),
+        )));
+    }
+    cmd::exit(match &cli.command {
+        None => cmd::figures::everything(cli.quick),
+        Some(Cmd::Figures(args)) => cmd::figures::figures(args),
+        Some(Cmd::References(args)) => cmd::figures::references(args),
+        Some(Cmd::Book) => cmd::book::build(),
         Some(Cmd::Render(args)) => cmd::render::run(args),
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
         Some(Cmd::Check { command }) => cmd::check::run(command),
         Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
         Some(Cmd::Export(args)) => cmd::export::run(args),
-    }
+    })
 }

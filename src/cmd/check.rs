@@ -6,7 +6,6 @@
 //! early, fails or hangs).
 
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use std::time::Duration;
 
 use clap::{Args, Subcommand};
@@ -15,7 +14,7 @@ use raylemma::check::warp::Domain;
 use raylemma::check::{Options, Verdict};
 use raylemma::data::DataError;
 
-use super::fail;
+use super::{CmdResult, Failure, Outcome, done_or_bad_input};
 
 /// `raylemma check`.
 #[derive(Subcommand, Debug)]
@@ -157,8 +156,8 @@ fn program(command: &str, timeout: Option<Duration>) -> Program {
     Program::new(command).timeout(timeout.unwrap_or(external::TIMEOUT))
 }
 
-/// Runs `raylemma check`.
-pub fn run(command: &CheckCmd) -> ExitCode {
+/// Runs `raylemma check`: pass (0), fail (1), bad input (2).
+pub fn run(command: &CheckCmd) -> CmdResult {
     match command {
         CheckCmd::Sampler(args) => verdict(sampler(args)),
         CheckCmd::Fresnel(args) => {
@@ -183,18 +182,14 @@ pub fn run(command: &CheckCmd) -> ExitCode {
 }
 
 /// Prints the verdict: exit status 0 if it passes, 1 if not, 2 for bad input.
-fn verdict(result: Result<Verdict, DataError>) -> ExitCode {
-    match result {
-        Ok(verdict) => {
-            print!("{verdict}");
-            if verdict.passed() {
-                ExitCode::SUCCESS
-            } else {
-                ExitCode::from(1)
-            }
-        }
-        Err(e) => fail(2, e),
-    }
+fn verdict(result: Result<Verdict, DataError>) -> CmdResult {
+    let verdict = result.map_err(|e| Failure::BadInput(e.to_string()))?;
+    print!("{verdict}");
+    Ok(if verdict.passed() {
+        Outcome::Done
+    } else {
+        Outcome::Negative
+    })
 }
 
 fn sampler(args: &SamplerArgs) -> Result<Verdict, DataError> {
@@ -234,17 +229,22 @@ fn function(
     options: &Options,
     check: Check,
     questions: Questions,
-) -> ExitCode {
+) -> CmdResult {
     if let Some(out) = &args.questions {
-        return match write_questions(args.table.as_deref(), out, options, questions) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => fail(2, e),
-        };
+        return done_or_bad_input(write_questions(
+            args.table.as_deref(),
+            out,
+            options,
+            questions,
+        ));
     }
     let function = match (&args.program, &args.table) {
         (Some(command), _) => Function::Program(program(command, args.timeout)),
         (None, Some(path)) => Function::Table(path.clone()),
-        (None, None) => return fail(2, usage("--program, --table or --questions is needed")),
+        (None, None) => {
+            let e = usage("--program, --table or --questions is needed");
+            return Err(Failure::BadInput(e.to_string()));
+        }
     };
     verdict(check(&function, options))
 }

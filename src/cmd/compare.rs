@@ -5,13 +5,12 @@
 //! variance. Exit status 0 if they agree, 1 if they differ, 2 for bad input.
 
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 
 use clap::Args;
 use raylemma::render::compare::{self, Estimate};
 use raylemma::render::image::{ExrContents, Image};
 
-use super::fail;
+use super::{CmdResult, Failure, Outcome};
 
 /// `raylemma compare`.
 #[derive(Args, Debug)]
@@ -31,12 +30,12 @@ pub struct CompareArgs {
     pub diff: Option<PathBuf>,
 }
 
-/// Runs `raylemma compare`.
-pub fn run(args: &CompareArgs) -> ExitCode {
+/// Runs `raylemma compare`: agree (0), differ (1), bad input (2).
+pub fn run(args: &CompareArgs) -> CmdResult {
     match compare_files(args) {
-        Ok(true) => ExitCode::SUCCESS,
-        Ok(false) => ExitCode::from(1),
-        Err(e) => fail(2, e),
+        Ok(true) => Ok(Outcome::Done),
+        Ok(false) => Ok(Outcome::Negative),
+        Err(e) => Err(Failure::BadInput(e)),
     }
 }
 

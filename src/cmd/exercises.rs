@@ -5,12 +5,11 @@
 //! of a solution; nothing is written unless all of the edition is.
 
 use std::path::PathBuf;
-use std::process::ExitCode;
 
 use clap::Args;
 use raylemma::exercise::edition::{self, EditionError, Kind};
 
-use super::{fail, root};
+use super::{CmdResult, Failure, Outcome, root};
 
 /// `raylemma exercises`.
 #[derive(Args, Debug)]
@@ -28,9 +27,9 @@ pub struct ExercisesArgs {
     pub root: Option<PathBuf>,
 }
 
-/// Runs `raylemma exercises`: exit status 0; 2 for a refused DIR or a malformed marker;
-/// 1 for a leaked solution line or a file that could not be read or written.
-pub fn run(args: &ExercisesArgs) -> ExitCode {
+/// Runs `raylemma exercises`: a refused DIR or a malformed marker is bad input (2); a
+/// leaked solution line or a file that could not be read or written, a failed job (1).
+pub fn run(args: &ExercisesArgs) -> CmdResult {
     let root = args.root.clone().unwrap_or_else(root);
     let kind = if args.solutions {
         Kind::Solutions
@@ -52,9 +51,11 @@ pub fn run(args: &ExercisesArgs) -> ExitCode {
                 dir.display()
             );
             eprintln!("raylemma: cd {} && cargo test", dir.display());
-            ExitCode::SUCCESS
+            Ok(Outcome::Done)
         }
-        Err(e @ (EditionError::Refused(_) | EditionError::Marker(_))) => fail(2, e),
-        Err(e) => fail(1, e),
+        Err(e @ (EditionError::Refused(_) | EditionError::Marker(_))) => {
+            Err(Failure::BadInput(e.to_string()))
+        }
+        Err(e) => Err(Failure::Failed(e.to_string())),
     }
 }

@@ -5,12 +5,11 @@
 //! overwritten.
 
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 
 use clap::{Args, ValueEnum};
 use raylemma::render::export::{SceneFile, json, mitsuba};
 
-use super::fail;
+use super::{CmdResult, done_or_bad_input};
 
 /// The formats `export` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -34,12 +33,9 @@ pub struct ExportArgs {
     pub out: PathBuf,
 }
 
-/// Runs `raylemma export`: exit status 0, or 2 with the error.
-pub fn run(args: &ExportArgs) -> ExitCode {
-    match export(&args.scene, args.to, &args.out) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => fail(2, e),
-    }
+/// Runs `raylemma export`: what cannot be exported is bad input (exit status 2).
+pub fn run(args: &ExportArgs) -> CmdResult {
+    done_or_bad_input(export(&args.scene, args.to, &args.out))
 }
 
 fn export(scene: &Path, to: Target, out: &Path) -> Result<(), String> {

@@ -2,11 +2,9 @@
 //! (`tools/figures/`, the crate `raylemma-figures`), which draws every figure and table into
 //! `figures/` and renders the reference images into `figures/reference/`.
 
-use std::process::ExitCode;
-
 use clap::Args;
 
-use super::{finish, run_tool};
+use super::{CmdResult, Outcome, run_tool};
 
 /// `raylemma figures`.
 #[derive(Args, Debug)]
@@ -14,6 +12,9 @@ pub struct FiguresArgs {
     /// Only outputs whose file name contains this text (e.g. `sphere_speed`).
     #[arg(long)]
     pub only: Option<String>,
+    /// Fewer samples and shorter timings (for CI); figures keep their shape.
+    #[arg(long)]
+    pub quick: bool,
 }
 
 /// `raylemma references`.
@@ -26,22 +27,25 @@ pub struct ReferencesArgs {
     /// why, unless all are current (CI runs this).
     #[arg(long, conflicts_with = "force")]
     pub check: bool,
+    /// A 32nd of the samples (for CI).
+    #[arg(long)]
+    pub quick: bool,
 }
 
 /// Regenerates the figures (all, or those whose name contains `only`).
-pub fn figures(args: &FiguresArgs, quick: bool) -> Result<(), String> {
+pub fn figures(args: &FiguresArgs) -> CmdResult {
     let mut cmd = vec!["figures"];
     if let Some(name) = &args.only {
         cmd.extend(["--only", name]);
     }
-    if quick {
+    if args.quick {
         cmd.push("--quick");
     }
     run_tool("raylemma-figures", &cmd)
 }
 
 /// Renders the reference images that are out of date (or all, or checks them).
-pub fn references(args: &ReferencesArgs, quick: bool) -> Result<(), String> {
+pub fn references(args: &ReferencesArgs) -> CmdResult {
     let mut cmd = vec!["references"];
     if args.force {
         cmd.push("--force");
@@ -49,25 +53,20 @@ pub fn references(args: &ReferencesArgs, quick: bool) -> Result<(), String> {
     if args.check {
         cmd.push("--check");
     }
-    if quick {
+    if args.quick {
         cmd.push("--quick");
     }
     run_tool("raylemma-figures", &cmd)
 }
 
 /// With no subcommand: the figures, the references, then the book.
-pub fn everything(quick: bool) -> ExitCode {
-    finish(
-        figures(&FiguresArgs { only: None }, quick)
-            .and_then(|()| {
-                references(
-                    &ReferencesArgs {
-                        force: false,
-                        check: false,
-                    },
-                    quick,
-                )
-            })
-            .and_then(|()| super::book::build()),
-    )
+pub fn everything(quick: bool) -> CmdResult {
+    figures(&FiguresArgs { only: None, quick })?;
+    references(&ReferencesArgs {
+        force: false,
+        check: false,
+        quick,
+    })?;
+    super::book::build()?;
+    Ok(Outcome::Done)
 }

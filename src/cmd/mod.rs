@@ -1,9 +1,15 @@
 //! The subcommands of `raylemma`, one file each; `src/main.rs` parses the command line
 //! and calls the subcommand's `run`.
 //!
-//! Exit statuses: 0 success; 1 a negative verdict (`compare`: the images differ; `check`:
-//! the verdict is FAIL) or a failed job; 2 bad input (a file or argument that cannot be
-//! used, a program that cannot answer; usage errors are clap's, also 2).
+//! One exit-status rule, for every subcommand, applied in one place ([`exit`]): each `run`
+//! returns a [`CmdResult`]: either an [`Outcome`] or a [`Failure`], and `main.rs` maps it:
+//!
+//! - **0** success (the images agree, the checker passes, the files are written);
+//! - **1** a negative verdict (`compare`: the images differ; `check`: FAIL;
+//!   `references --check`: a reference is out of date), or a job that failed on good input
+//!   (a figure that could not be made);
+//! - **2** bad input or usage: a file, a flag or a program that cannot be used (clap's own
+//!   usage errors are 2 as well).
 
 pub mod book;
 pub mod check;
@@ -16,18 +22,50 @@ pub mod render;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
-/// Prints `raylemma: error: MESSAGE` and returns the exit status `status`.
-pub fn fail(status: u8, message: impl std::fmt::Display) -> ExitCode {
-    eprintln!("raylemma: error: {message}");
-    ExitCode::from(status)
+/// What a subcommand's work came to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// Done, or a positive verdict: exit status 0.
+    Done,
+    /// A negative verdict, already printed: exit status 1.
+    Negative,
 }
 
-/// Exit status 0 for `Ok`, else the error printed and exit status 1.
-pub fn finish(result: Result<(), String>) -> ExitCode {
+/// Why a subcommand could not do its work.
+#[derive(Debug)]
+pub enum Failure {
+    /// Bad input or usage (the message names the file, flag or program): exit status 2.
+    BadInput(String),
+    /// The work failed on good input (the message says what): exit status 1.
+    Failed(String),
+    /// A workspace tool ended with this status, having said why itself.
+    Tool(u8),
+}
+
+/// What every subcommand returns.
+pub type CmdResult = Result<Outcome, Failure>;
+
+/// The one exit-status rule (the module's documentation): prints a failure's message as
+/// `raylemma: error: MESSAGE`.
+pub fn exit(result: CmdResult) -> ExitCode {
     match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => fail(1, e),
+        Ok(Outcome::Done) => ExitCode::SUCCESS,
+        Ok(Outcome::Negative) => ExitCode::from(1),
+        Err(Failure::BadInput(e)) => {
+            eprintln!("raylemma: error: {e}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Failed(e)) => {
+            eprintln!("raylemma: error: {e}");
+            ExitCode::from(1)
+        }
+        Err(Failure::Tool(status)) => ExitCode::from(status),
     }
+}
+
+/// `Ok(())` as [`Outcome::Done`], an error as bad input.
+pub fn done_or_bad_input(result: Result<(), String>) -> CmdResult {
+    result.map(|()| Outcome::Done).map_err(Failure::BadInput)
 }
 
 /// The project root: this binary is built from it.
@@ -36,8 +74,9 @@ pub fn root() -> PathBuf {
 }
 
 /// Runs the workspace tool `package` (`raylemma-figures` or `raylemma-book`) with `args`,
-/// compiling it first if needed (cargo shows its own progress).
-pub fn run_tool(package: &str, args: &[&str]) -> Result<(), String> {
+/// compiling it first if needed (cargo shows its own progress). The tool follows the same
+/// exit-status rule: its status 1 or 2 is passed on ([`Failure::Tool`]).
+pub fn run_tool(package: &str, args: &[&str]) -> CmdResult {
     let root = root();
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let status = Command::new(&cargo)
@@ -47,10 +86,12 @@ pub fn run_tool(package: &str, args: &[&str]) -> Result<(), String> {
         .arg(&root)
         .current_dir(&root)
         .status()
-        .map_err(|e| format!("cannot start {}: {e}", Path::new(&cargo).display()))?;
-    if status.success() {
-        Ok(())
-    } else {
-        Err(format!("{package} failed ({status})"))
+        .map_err(|e| {
+            Failure::Failed(format!("cannot start {}: {e}", Path::new(&cargo).display()))
+        })?;
+    match status.code() {
+        Some(0) => Ok(Outcome::Done),
+        Some(code @ 1..=2) => Err(Failure::Tool(code as u8)),
+        _ => Err(Failure::Failed(format!("{package} failed ({status})"))),
     }
 }

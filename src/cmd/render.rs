@@ -3,12 +3,11 @@
 //! at all. A bad scene is refused with file, line and reason before anything is written.
 
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 
 use clap::Args;
 use raylemma::render;
 
-use super::finish;
+use super::{CmdResult, done_or_bad_input};
 
 /// `raylemma render`.
 #[derive(Args, Debug)]
@@ -29,9 +28,10 @@ pub struct RenderArgs {
     pub threads: Option<u32>,
 }
 
-/// Runs `raylemma render`: exit status 0, or 1 with the error.
-pub fn run(args: &RenderArgs) -> ExitCode {
-    finish(render_scene(
+/// Runs `raylemma render`: a scene that cannot be rendered, or an output folder that cannot
+/// be written, is bad input (exit status 2).
+pub fn run(args: &RenderArgs) -> CmdResult {
+    done_or_bad_input(render_scene(
         &args.scene,
         args.spp,
         args.seed,

@@ -406,7 +406,7 @@ fn render_refuses_a_bad_scene_and_keeps_earlier_outputs() {
         .arg(&dir)
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.contains(&format!("tiny.toml:{line}:")) && err.contains("radius"),
@@ -444,7 +444,7 @@ fn render_refuses_zero_spp_and_a_missing_scene() {
         .arg(&dir)
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no/such/scene.toml"));
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
 }
