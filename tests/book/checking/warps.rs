@@ -399,7 +399,8 @@ fn the_polar_disc_is_singular_at_the_edge_of_the_square() {
 }
 
 /// Exercise 1 of *Checking a sampler*: a uniform point of the triangle `x, y >= 0`,
-/// `x + y <= 1` of the unit square (density 2 there), from a point `u` of the square.
+/// `x + y <= 1` of the unit square (density 2 there), from a point `u` of the square, by a
+/// one-to-one warp.
 fn your_triangle(u: DVec2) -> DVec3 {
     let _ = u;
     unimplemented!("exercise 1 of Checking a sampler: a uniform point of the triangle")
@@ -416,13 +417,30 @@ fn exercise_1_your_triangle_sampler_passes() {
     let options = Options::default().cases(warp::TEST_SAMPLES);
     let yours = SquareWarp::new("your triangle", Domain::Square, your_triangle, triangle_pdf);
     warp::check(&yours, &options).assert_pass();
-    // Its planted twin: the point of the square without the fold back into the triangle.
+    // Its planted twin: the point of the square itself, half of it outside the triangle.
     let twin = SquareWarp::new(
-        "triangle without the fold",
+        "the square as a triangle",
         Domain::Square,
         |u: DVec2| DVec3::new(u.x, u.y, 0.0),
         triangle_pdf,
     );
     let v = warp::check(&twin, &options);
     assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+    // The fold u -> 1 - u of the other half is a correct sampler that is two-to-one: its
+    // samples pass chi-squared, and the local Jacobian claim, which holds for one-to-one
+    // warps, fails it with the product 2.
+    let fold = SquareWarp::new(
+        "triangle by folding",
+        Domain::Square,
+        |u: DVec2| {
+            if u.x + u.y > 1.0 {
+                DVec3::new(1.0 - u.x, 1.0 - u.y, 0.0)
+            } else {
+                DVec3::new(u.x, u.y, 0.0)
+            }
+        },
+        triangle_pdf,
+    );
+    let v = warp::check(&fold, &options);
+    assert!(!v.failed("chi_squared") && v.failed("jacobian"), "{v}");
 }
