@@ -129,8 +129,11 @@ pub fn orthonormality_error(t: DVec3, b: DVec3, n: DVec3) -> f64 {
 }
 // ANCHOR_END: error
 
-/// The common alternative, for the speed table: pick the coordinate axis least aligned
-/// with `n`, then two cross products and one normalisation (Hughes and Möller 1999).
+/// The common alternative, for the speed table: a helper vector orthogonal to `n`, the
+/// cross product of `n` with `e_z` when `|n_x| > |n_z|` and with `e_x` otherwise (its length²
+/// is then at least ½, so it is never close to zero), normalised, and a second cross product.
+/// Hughes and Möller (1999) zero the smallest component instead, which picks the axis least
+/// aligned with `n`; either choice is robust.
 pub fn cross_product_frame(n: V3) -> (V3, V3) {
     let helper = if n.x.abs() > n.z.abs() {
         V3::new(-n.y, n.x, 0.0)

@@ -31,7 +31,11 @@
 //! `a = 1 - (1 - SUITE_ALPHA)^(1/m)`.
 //!
 //! [`SUITE_TESTS`] is a budget, not a count: as long as the suite holds at most that many
-//! statistical tests, its family-wise false-failure rate is at most [`SUITE_ALPHA`]. (For
+//! statistical tests, its family-wise false-failure rate is at most [`SUITE_ALPHA`]. Nothing
+//! counts them automatically: a test file that holds many states its count in its opening
+//! comment, and a test whose real false-failure rate is above its nominal level (Pearson's
+//! test with cells expecting 5 to 10 samples is about twice as likely to fail at
+//! [`test_alpha`]) uses up more than one test of the budget. (For
 //! dependent tests Šidák's level is still valid for the usual positively dependent cases,
 //! and Bonferroni's `SUITE_ALPHA / m`, smaller still, is valid always.)
 

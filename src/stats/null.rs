@@ -88,15 +88,13 @@ impl NullCase {
     /// # Errors
     /// Only if a test rejects its input, which for these well-formed inputs is a bug.
     pub fn p_value(self, seed: u64) -> Result<f64, StatsError> {
-        let mut rng = rng::seeded(0x5747_0000_0000 + (self.index() << 32) + seed);
+        let mut rng = self.rng(seed);
         let normals = |rng: &mut Rng, n: usize| -> Vec<f64> {
             (0..n).map(|_| standard_normal(rng)).collect()
         };
         Ok(match self {
-            Self::Chi2 => {
-                let (observed, expected) = geometric_counts(&mut rng);
-                chi2::pearson(&observed, &expected, 5.0)?.p_value
-            }
+            // Cells expecting fewer than 5 samples pooled, as everywhere in the project.
+            Self::Chi2 => chi2_p_value(seed, 5.0)?,
             Self::KsExact => {
                 let xs: Vec<f64> = (0..100).map(|_| rng::uniform(&mut rng, 0.0, 1.0)).collect();
                 ks::one_sample(&xs, |x| x.clamp(0.0, 1.0))?.p_value
@@ -124,6 +122,11 @@ impl NullCase {
         })
     }
 
+    /// The generator of run `seed` of this experiment.
+    fn rng(self, seed: u64) -> Rng {
+        rng::seeded(0x5747_0000_0000 + (self.index() << 32) + seed)
+    }
+
     /// The p-values of runs `0..runs`, in parallel.
     ///
     /// # Errors
@@ -131,6 +134,28 @@ impl NullCase {
     pub fn p_values(self, runs: u64) -> Result<Vec<f64>, StatsError> {
         (0..runs).into_par_iter().map(|s| self.p_value(s)).collect()
     }
+}
+
+/// The p-value of run `seed` of the [`NullCase::Chi2`] experiment, with the cells that
+/// expect fewer than `min_expected` samples pooled ([`NullCase::p_value`] pools at 5; 0
+/// pools nothing).
+///
+/// # Errors
+/// As [`chi2::pearson`], which for these well-formed counts is a bug.
+pub fn chi2_p_value(seed: u64, min_expected: f64) -> Result<f64, StatsError> {
+    let (observed, expected) = geometric_counts(&mut NullCase::Chi2.rng(seed));
+    Ok(chi2::pearson(&observed, &expected, min_expected)?.p_value)
+}
+
+/// [`chi2_p_value`] of runs `0..runs`, in parallel.
+///
+/// # Errors
+/// As [`chi2_p_value`].
+pub fn chi2_p_values(runs: u64, min_expected: f64) -> Result<Vec<f64>, StatsError> {
+    (0..runs)
+        .into_par_iter()
+        .map(|s| chi2_p_value(s, min_expected))
+        .collect()
 }
 
 /// Counts of [`NullCase::Chi2`]: `CHI2_DRAWS` draws by inversion into cells with

@@ -104,11 +104,18 @@ fn phi01(x: f64, y: f64) -> f64 {
     (if phi < 0.0 { phi + TAU } else { phi }) / TAU
 }
 
+/// The `(rows, cols)` of a domain's grid at `resolution`. On the sphere the number of rows
+/// is odd (an even `resolution` is rounded up), so that the equator is never a cell
+/// boundary: a correct hemisphere sampler whose `z` rounds to `-1e-17` then lands in the
+/// straddling row, whose upper half has mass, instead of a row of `E = 0`.
 pub(super) fn grid(domain: Domain, resolution: usize) -> (usize, usize) {
     match domain {
         Domain::Interval { .. } => (resolution * resolution, 1),
         Domain::Square | Domain::Disc => (resolution, resolution),
-        Domain::Sphere => (resolution, 2 * resolution),
+        Domain::Sphere => {
+            let rows = resolution | 1;
+            (rows, 2 * rows)
+        }
     }
 }
 

@@ -13,8 +13,8 @@
 //! 3. **Round trip.** Where the warp has an inverse, `T^-1(T(u)) = u`.
 //!
 //! It fails loudly, saying why, on NaN or infinite samples, samples outside the domain,
-//! negative pdfs, samples in cells where the pdf integrates to zero, and pdfs whose
-//! integral is not 1. On a chi-squared failure it writes observed, expected and
+//! samples where the claimed pdf is zero or not finite, negative pdfs, samples in cells
+//! where the pdf integrates to zero, and pdfs whose integral is not 1. On a chi-squared failure it writes observed, expected and
 //! difference images a student can open.
 //!
 //! Called like every checker, `check(&warp, &options)` with the common
@@ -206,8 +206,9 @@ pub const FINE_GRID: (usize, usize) = (51, 10_000);
 pub struct WarpOptions {
     /// Samples for the chi-squared test (the cases of [`Options`]).
     pub samples: usize,
-    /// Cells along each axis of the domain (odd on the sphere: the cell rows of
-    /// `cos(theta)` then straddle the equator, and no hemisphere edge is a cell boundary).
+    /// Cells along each axis of the domain. On the sphere the rows of `cos(theta)` are made
+    /// odd (an even value is rounded up), so that a row straddles the equator and no
+    /// hemisphere's edge is a cell boundary.
     pub resolution: usize,
     /// Points for the Jacobian and round-trip checks.
     pub points: usize,
@@ -273,7 +274,8 @@ impl Default for WarpOptions {
 /// Draws the samples, bins them, and runs Pearson's test.
 ///
 /// # Errors
-/// A message naming the first invalid sample, a negative pdf, or what `pearson` rejects
+/// A message naming the first invalid sample (not finite, outside the domain, or where
+/// the claimed pdf is not positive and finite), a negative pdf, or what `pearson` rejects
 /// (samples in zero-probability cells, a pdf that does not integrate to 1).
 pub fn chi_squared(
     warp: &dyn Warp,
@@ -284,13 +286,31 @@ pub fn chi_squared(
     let (rows, cols) = grid(domain, options.resolution);
     let mut rng = rng::seeded(options.seed);
     let mut observed = vec![0u64; rows * cols];
+    // ANCHOR: support
     for k in 0..options.samples {
         let p = warp.sample(&mut rng);
         if let Some(why) = outside(domain, p) {
             return Err(format!("sample {k} = {p:?}: {why}"));
         }
+        // Every sample must lie where the claimed pdf is positive: a renderer divides by it.
+        // A cell's integral cannot see a few samples leaked just past a jump of the pdf,
+        // such as a hemisphere's horizon, which crosses the cells of its row.
+        let pdf = warp.pdf(p);
+        if !(pdf > 0.0 && pdf.is_finite()) {
+            let why = if !pdf.is_finite() {
+                "not finite"
+            } else if pdf < 0.0 {
+                "negative"
+            } else {
+                "zero"
+            };
+            return Err(format!(
+                "sample {k} = {p:?}: the claimed pdf is {pdf} there ({why}), and a renderer divides by it"
+            ));
+        }
         observed[cell_of(domain, p, rows, cols)] += 1;
     }
+    // ANCHOR_END: support
     let expected: Vec<f64> = cell_probabilities(warp, rows, cols)?
         .into_iter()
         .map(|p| p * options.samples as f64)
@@ -344,9 +364,11 @@ fn area_element(warp: &dyn Warp, u: DVec2, h: f64) -> Option<f64> {
 
 // ANCHOR: jacobian
 /// The Jacobian check: `p(T(u)) |dT/du| = 1` at `options.points` random points of the
-/// square (kept `1e-3` away from its edges, where warps may fold), to a relative error of
-/// `1e-4` (central differences with step `1e-6` are accurate to about `1e-8` for smooth
-/// warps, so the bound has margin).
+/// square (kept `1e-3` away from its edges, where warps may fold or be singular), to a
+/// relative error of `1e-4`. Central differences with step `1e-6` are accurate to about
+/// `1e-7` even `1e-3` from the edges, where warps like `sqrt(u1)` are steep (their
+/// truncation error grows like `u1^-2` there; rounding adds about `eps / h = 2e-10`), so
+/// the bound has margin.
 pub fn jacobian(warp: &dyn Warp, options: &impl ToWarpOptions) -> Option<Finding> {
     let options = options.to_warp_options();
     warp.warp(DVec2::splat(0.5))?;

@@ -21,7 +21,7 @@ use raylemma::optics::reflect::{Refraction, refract};
 use raylemma::sampling::cosine::{cosine_pdf, cosine_seed_cartesian};
 
 // ANCHOR: awk_cosine
-/// The seed's Cartesian cosine sampler (`cosine_seed_cartesian`), its density `z / pi`
+/// The source notes' Cartesian cosine sampler (`cosine_seed_cartesian`), its density `z / pi`
 /// and its inverse, in awk: the same arithmetic as the Rust functions, so the same bits.
 const COSINE: &str = r#"awk '
 $1 == "warp"   { r = sqrt($2); p = 6.283185307179586 * $3
@@ -42,6 +42,14 @@ const REFRACT: &str = r#"awk '{ d = -($2 * $5 + $3 * $6 + $4 * $7); s = 1
     if (c2 < 0) { print "tir"; next }
     k = e * d - sqrt(c2)
     printf "%.17g %.17g %.17g\n", e * $2 + k * s * $5, e * $3 + k * s * $6, e * $4 + k * s * $7 }'"#;
+
+/// The planted twin of `REFRACT`: the normal trusted to face the light and never flipped,
+/// with the arithmetic of `check::reflect::planted::refract_unflipped_normal`.
+const REFRACT_UNFLIPPED: &str = r#"awk '{ d = -($2 * $5 + $3 * $6 + $4 * $7); e = $8 / $9
+    c2 = 1 - e * e * (1 - d * d)
+    if (c2 < 0) { print "tir"; next }
+    k = e * d - sqrt(c2)
+    printf "%.17g %.17g %.17g\n", e * $2 + k * $5, e * $3 + k * $6, e * $4 + k * $7 }'"#;
 
 /// Schlick's approximation, in awk: a reflectance the Fresnel checker must reject.
 const SCHLICK: &str = r#"awk '{ c = $2 < 0 ? -$2 : $2; if (c > 1) c = 1
@@ -271,6 +279,46 @@ fn a_refraction_program_gets_the_verdict_of_the_same_routine_in_rust() {
         reflect::refraction(&refract, &options).to_string()
     );
     v.assert_pass();
+}
+
+#[test]
+fn an_unflipped_refraction_program_fails_as_in_rust() {
+    let options = Options::default().cases(4_000);
+    let v = external::refraction(&Function::Program(program(REFRACT_UNFLIPPED)), &options)
+        .expect("the program answers");
+    assert!(v.failed("normal_side") && v.failed("far_side"), "{v}");
+    let rust = reflect::refraction(
+        &raylemma::check::reflect::planted::refract_unflipped_normal,
+        &options,
+    );
+    assert_eq!(findings(&v), findings(&rust), "\n{v}\n{rust}");
+}
+
+/// Exercise 1's answer: the cosine sampler printed with `%f` (six decimals) fails every
+/// claim on the sphere, whose points must be unit to 1e-9; a disc sampler printed the same
+/// way still passes chi-squared, whose disc only asks `r² <= 1 + 1e-9`, and fails the
+/// Jacobian and the round trip.
+#[test]
+fn six_decimals_fail_every_claim_on_the_sphere() {
+    let cosine = COSINE.replace("%.17g", "%f");
+    let v = external::sampler(&sampler(&cosine, Target::CosineHemisphere, true), &small())
+        .expect("the program answers");
+    assert!(
+        v.failed("chi_squared") && v.failed("jacobian") && v.failed("round_trip"),
+        "{v}"
+    );
+    let message = v.finding("chi_squared").example.clone().unwrap_or_default();
+    assert!(message.contains("outside the domain"), "{message}");
+    // The polar disc, r = sqrt(u1), with its inverse, printed with %f.
+    let disc = r#"awk '
+$1 == "warp"   { r = sqrt($2); p = 6.283185307179586 * $3
+                 printf "%f %f\n", r * cos(p), r * sin(p) }
+$1 == "invert" { u = atan2($3, $2) / 6.283185307179586; if (u < 0) u += 1
+                 printf "%f %f\n", $2 * $2 + $3 * $3, u }'"#;
+    let v = external::sampler(&sampler(disc, Target::Disc, true), &small())
+        .expect("the program answers");
+    assert!(!v.failed("chi_squared"), "{v}");
+    assert!(v.failed("jacobian") && v.failed("round_trip"), "{v}");
 }
 
 #[test]
@@ -563,4 +611,43 @@ fn raylemma_check_fresnel_writes_questions_whole_or_not_at_all() {
         "t.csv",
     ]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercise 4 (`cargo test --test book checking::external::exercise_4 -- --ignored`).
+
+/// Exercise 4 of *Checks from any language*: how many rows of samples a file needs for the
+/// chi-squared claim to reject the cos^1.1 lobe of chapter *Checking a sampler*.
+const YOUR_ANSWER_4: Option<usize> = None;
+
+#[test]
+#[ignore = "exercise 4 of Checks from any language: fill in YOUR_ANSWER_4, then run it"]
+fn exercise_4_rows_to_reject_the_cos_1_1_lobe() {
+    let rows =
+        YOUR_ANSWER_4.expect("exercise 4 of Checks from any language: YOUR_ANSWER_4 is still None");
+    assert!(
+        rows <= 1_000_000,
+        "{rows} rows: the power table says far fewer will do"
+    );
+    let lobe = warp::planted::cosine_power_lobe;
+    // As a file of samples, with the grid the rule gives that many rows.
+    let options = WarpOptions::from(Options::default().cases(rows));
+    let file = Sampler::Samples {
+        path: samples_file("cos_1_1.csv", lobe, &options),
+        target: Target::CosineHemisphere,
+    };
+    let v = external::sampler(&file, &options).expect("the file is read");
+    assert!(v.failed("chi_squared"), "{rows} rows: {v}");
+    // And reliably: for 9 of 10 other seeds, drawn in Rust.
+    let w = SquareWarp::new("cos^1.1", Domain::Sphere, lobe, cosine_pdf);
+    let rejected = (1..=10u64)
+        .filter(|&seed| {
+            let o = WarpOptions { seed, ..options };
+            warp::chi_squared(&w, &o).is_ok_and(|(c, _, _)| c.p_value < o.alpha)
+        })
+        .count();
+    assert!(
+        rejected >= 9,
+        "{rows} rows: only {rejected} of 10 seeds rejected"
+    );
 }

@@ -8,6 +8,7 @@ use raylemma::check::{Options, Verdict};
 use raylemma::sampling::cosine::cosine_pdf;
 use raylemma::sampling::disc::{disc_pdf, disc_polar, disc_polar_invert};
 use raylemma::sampling::sphere::sphere_pdf;
+use raylemma::sampling::sphere::{SPHERE_PDF, hemisphere_pdf};
 
 /// 200 000 samples (21 rows by the rule) and 2 000 Jacobian points.
 fn opts() -> WarpOptions {
@@ -114,7 +115,31 @@ fn rejects_samples_where_the_pdf_is_zero() {
         disc_polar,
         planted::disc_pdf_upper_half,
     );
-    assert!(chi2_message(&v).contains("integrates to 0"), "{v}");
+    assert!(
+        chi2_message(&v).contains("the claimed pdf is 0 there"),
+        "{v}"
+    );
+}
+
+/// A few samples leaked just below the horizon, into the row of cells that straddles it:
+/// the cells' integrals are positive and chi-squared misses them, so the checker must ask
+/// the pdf at every sample.
+#[test]
+fn rejects_samples_leaked_below_the_horizon() {
+    let leak = SquareWarp::new(
+        "cosine leaking below the horizon",
+        Domain::Sphere,
+        planted::cosine_leaking_below_horizon,
+        cosine_pdf,
+    );
+    let v = warp::check(&leak, &Options::default().cases(warp::TEST_SAMPLES));
+    let message = chi2_message(&v);
+    assert!(
+        v.failed("chi_squared") && message.contains("the claimed pdf is 0 there"),
+        "{v}"
+    );
+    // The Jacobian's points stay 1e-3 away from the edges of the square: it cannot see it.
+    assert!(!v.failed("jacobian"), "{v}");
 }
 
 #[test]
@@ -276,4 +301,146 @@ fn the_grid_follows_the_samples() {
     assert_eq!((o.seed, o.alpha), (7, 0.01));
     assert_eq!(WarpOptions::default().seed, warp::SEED);
     assert_eq!(WarpOptions::default().alpha, raylemma::stats::test_alpha());
+}
+
+/// An even number of rows on the sphere is rounded up: a row always straddles the equator.
+#[test]
+fn sphere_rows_are_always_odd() {
+    let even = WarpOptions {
+        resolution: 20,
+        ..opts()
+    };
+    let w = SquareWarp::new(
+        "cosine",
+        Domain::Sphere,
+        raylemma::sampling::cosine::cosine_seed_cartesian,
+        cosine_pdf,
+    );
+    let (_, observed, _) = warp::chi_squared(&w, &even).unwrap();
+    assert_eq!(observed.len(), 21 * 42);
+}
+
+// ---------------------------------------------------------------------------------------
+// The answers of the derivation exercises, and the exercises' own checks.
+
+/// Exercise 2's answer. In the cells' own coordinates, `(z, phi)` on the sphere, the pdfs of
+/// the uniform sphere and hemisphere are constant and the cosine lobe is linear in `z`, so
+/// the midpoint rule is exact on every whole cell; what it gets wrong is the row that
+/// straddles the horizon, whose centre is on the jump: it gives the cosine lobe nothing
+/// there and the uniform hemisphere twice its share or nothing, at any number of samples.
+#[test]
+fn midpoint_cell_integrals_fail_only_across_the_horizon() {
+    use std::f64::consts::{PI, TAU};
+    for rows in [21usize, 51] {
+        let cols = 2 * rows;
+        let dz = 2.0 / rows as f64;
+        let dphi = TAU / cols as f64;
+        for i in 0..rows {
+            let (z0, z1) = (-1.0 + dz * i as f64, -1.0 + dz * (i + 1) as f64);
+            let mid = 0.5 * (z0 + z1);
+            let point = DVec3::new((1.0 - mid * mid).sqrt(), 0.0, mid);
+            let up = |z: f64| z.clamp(0.0, 1.0);
+            // Exact probabilities of one cell of the row, from the antiderivatives in z.
+            let cosine = (up(z1).powi(2) - up(z0).powi(2)) / 2.0 / PI * dphi;
+            let hemisphere = (up(z1) - up(z0)) / TAU * dphi;
+            let sphere = (z1 - z0) * SPHERE_PDF * dphi;
+            let midpoint = |pdf: f64| pdf * dz * dphi;
+            let cases = [
+                ("cosine", midpoint(cosine_pdf(point)), cosine),
+                (
+                    "hemisphere",
+                    midpoint(hemisphere_pdf(point, DVec3::Z)),
+                    hemisphere,
+                ),
+                ("sphere", midpoint(SPHERE_PDF), sphere),
+            ];
+            let straddles = z0 < 0.0 && z1 > 0.0;
+            for (name, mid, exact) in cases {
+                if straddles && name != "sphere" {
+                    // The centre is z = 0 up to rounding: the cosine lobe is 0 there, and the
+                    // hemisphere's density is its full value or 0, as the rounding falls.
+                    let ratio = mid / exact;
+                    assert!(
+                        ratio == 0.0 || (name == "hemisphere" && (ratio - 2.0).abs() <= 1e-9),
+                        "{rows} rows, {name}: the midpoint gives {ratio} times the cell's share"
+                    );
+                } else {
+                    assert!(
+                        (mid - exact).abs() <= 1e-12 * exact.max(1e-300) + 1e-300,
+                        "{rows} rows, row {i}, {name}: midpoint {mid:e}, exact {exact:e}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Exercise 3's answer: the polar disc's `r = sqrt(u1)` has an infinite derivative at
+/// `u1 = 0`. Central differences with the checker's step `1e-6` are off by percents at
+/// `u1 = 2e-6`, undefined below `1e-6` (they evaluate `sqrt` of a negative number), and
+/// right to about `1e-7` at the checker's margin `1e-3`.
+#[test]
+fn the_polar_disc_is_singular_at_the_edge_of_the_square() {
+    let h = 1e-6;
+    let area = |u1: f64| {
+        let u = DVec2::new(u1, 0.3);
+        let du =
+            (disc_polar(u + DVec2::new(h, 0.0)) - disc_polar(u - DVec2::new(h, 0.0))) / (2.0 * h);
+        let dv =
+            (disc_polar(u + DVec2::new(0.0, h)) - disc_polar(u - DVec2::new(0.0, h))) / (2.0 * h);
+        (du.x * dv.y - du.y * dv.x).abs()
+    };
+    // The exact area element is pi everywhere.
+    let error = |u1: f64| (area(u1) / std::f64::consts::PI - 1.0).abs();
+    assert!(error(2e-6) > 1e-2, "{}", error(2e-6));
+    assert!(area(0.5e-6).is_nan());
+    assert!(error(1e-3) < 5e-7, "{}", error(1e-3));
+    assert!(error(0.5) < 1e-8, "{}", error(0.5));
+}
+
+/// Exercise 1 of *Checking a sampler*: a uniform point of the triangle `x, y >= 0`,
+/// `x + y <= 1` of the unit square (density 2 there), from a point `u` of the square, by a
+/// one-to-one warp.
+fn your_triangle(u: DVec2) -> DVec3 {
+    let _ = u;
+    unimplemented!("exercise 1 of Checking a sampler: a uniform point of the triangle")
+}
+
+/// The triangle's density, 2 on it and 0 elsewhere.
+fn triangle_pdf(p: DVec3) -> f64 {
+    if p.x + p.y <= 1.0 { 2.0 } else { 0.0 }
+}
+
+#[test]
+#[ignore = "exercise 1 of Checking a sampler: fill in your_triangle, then run it"]
+fn exercise_1_your_triangle_sampler_passes() {
+    let options = Options::default().cases(warp::TEST_SAMPLES);
+    let yours = SquareWarp::new("your triangle", Domain::Square, your_triangle, triangle_pdf);
+    warp::check(&yours, &options).assert_pass();
+    // Its planted twin: the point of the square itself, half of it outside the triangle.
+    let twin = SquareWarp::new(
+        "the square as a triangle",
+        Domain::Square,
+        |u: DVec2| DVec3::new(u.x, u.y, 0.0),
+        triangle_pdf,
+    );
+    let v = warp::check(&twin, &options);
+    assert!(v.failed("chi_squared") && v.failed("jacobian"), "{v}");
+    // The fold u -> 1 - u of the other half is a correct sampler that is two-to-one: its
+    // samples pass chi-squared, and the local Jacobian claim, which holds for one-to-one
+    // warps, fails it with the product 2.
+    let fold = SquareWarp::new(
+        "triangle by folding",
+        Domain::Square,
+        |u: DVec2| {
+            if u.x + u.y > 1.0 {
+                DVec3::new(1.0 - u.x, 1.0 - u.y, 0.0)
+            } else {
+                DVec3::new(u.x, u.y, 0.0)
+            }
+        },
+        triangle_pdf,
+    );
+    let v = warp::check(&fold, &options);
+    assert!(!v.failed("chi_squared") && v.failed("jacobian"), "{v}");
 }

@@ -117,6 +117,23 @@ fn frisvad_fails_near_the_south_pole() {
     }
     let e = worst32(ring(1e-7, 256), frame32::frisvad) * f64::from(f32::EPSILON);
     assert!(e > 0.1, "f32, z = -1 + 1e-7: error only {e}");
+    // And it grows like 1 / (1 + z): at least threefold per decade, and by five orders of
+    // magnitude over six decades (in f32, whose rings have about the same delta; in f64
+    // the delta of the normals varies too much from ring to ring for a ratio).
+    let at = |k: i32| worst32(ring(10f64.powi(-k), 256), frame32::frisvad);
+    for k in 2..=7 {
+        let ratio = at(k) / at(k - 1);
+        assert!(
+            ratio >= 3.0,
+            "f32: only {ratio} times from 1e-{} to 1e-{k}",
+            k - 1
+        );
+    }
+    assert!(
+        at(7) / at(1) >= 1e5,
+        "f32: only {} over six decades",
+        at(7) / at(1)
+    );
 }
 // ANCHOR_END: near_south_pole
 
@@ -132,6 +149,44 @@ fn frisvad_special_case_is_off_by_the_distance_to_the_pole() {
             (0.9..=1.1).contains(&ratio),
             "k = {k}: error {e:e}, ratio {ratio}"
         );
+    }
+}
+
+/// `z` mirrored: `(x, y, z) -> (x, y, -z)`.
+fn mirror(v: DVec3) -> DVec3 {
+    DVec3::new(v.x, v.y, -v.z)
+}
+
+/// Below the equator Duff et al.'s frame is Frisvad's frame of the mirror image, mirrored
+/// back, with `b` negated to restore the orientation (exercise 1's identities).
+#[test]
+fn duff_is_frisvad_mirrored_below_the_equator() {
+    for n in random_normals(9, 20_000).into_iter().filter(|n| n.z < 0.0) {
+        let (t, b) = duff(n);
+        let (t1, b1) = frisvad(mirror(n));
+        assert!((t - mirror(t1)).length() <= 4.0 * f64::EPSILON, "{n}");
+        assert!((b + mirror(b1)).length() <= 4.0 * f64::EPSILON, "{n}");
+    }
+}
+
+/// Duff et al.'s frame jumps between `z = +0` and `z = -0`: `t` by `(0, 0, -2x)` and `b` by
+/// `(-2xy, 2 - 2y², 0)`, both of length `2|x|` on the equator (exercise 4).
+#[test]
+fn duff_jumps_across_the_equator() {
+    for k in 0..64 {
+        let phi = TAU * (f64::from(k) + 0.5) / 64.0;
+        let (x, y) = (phi.cos(), phi.sin());
+        let (up, down) = (duff(DVec3::new(x, y, 0.0)), duff(DVec3::new(x, y, -0.0)));
+        let (dt, db) = (up.0 - down.0, up.1 - down.1);
+        assert!((dt - DVec3::new(0.0, 0.0, -2.0 * x)).length() <= 4.0 * f64::EPSILON);
+        let want = DVec3::new(-2.0 * x * y, 2.0 - 2.0 * y * y, 0.0);
+        assert!((db - want).length() <= 4.0 * f64::EPSILON, "{db} {want}");
+        for jump in [dt.length(), db.length()] {
+            assert!(
+                (jump - 2.0 * x.abs()).abs() <= 4.0 * f64::EPSILON,
+                "{jump} at {phi}"
+            );
+        }
     }
 }
 
@@ -341,4 +396,92 @@ fn vec3_and_dvec3_frames_are_the_same_type_of_thing() {
     assert_eq!((f.t, f.b, f.n), (Vec3::X, Vec3::Y, Vec3::Z));
     let g: Frame = Frame::from_normal(-DVec3::Z);
     assert_eq!((g.t, g.b, g.n), (DVec3::X, -DVec3::Y, -DVec3::Z));
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises: each is ignored until you fill in its scaffold
+// (`cargo test --test book sampling::frame::exercise_ -- --ignored`).
+
+/// Exercise 2 of *Tangent frames*: your prediction of the worst error of Frisvad's frame,
+/// in `f32`, on the ring `1 + z = 1e-4`, in units of `f32::EPSILON`.
+const YOUR_ANSWER_2: Option<f64> = None;
+
+#[test]
+#[ignore = "exercise 2 of Tangent frames: put your prediction in YOUR_ANSWER_2, then run it"]
+fn exercise_2_predict_the_figure() {
+    let measured = worst32(ring(1e-4, 256), frame32::frisvad);
+    let yours = YOUR_ANSWER_2.expect("exercise 2 of Tangent frames: YOUR_ANSWER_2 is still None");
+    assert!(
+        (yours / measured - 1.0).abs() <= 0.1,
+        "you predict {yours:.4e} eps; the ring's worst error is {measured:.4e} eps"
+    );
+}
+
+/// Exercise 3 of *Tangent frames*: the value of `1 + z` below which your Frisvad uses the
+/// fixed frame `((0, -1, 0), (-1, 0, 0))` (Frisvad's own is `1e-7`).
+fn your_threshold() -> f64 {
+    unimplemented!("exercise 3 of Tangent frames: the threshold that minimises the worst error")
+}
+
+/// The worst error, in f64 epsilons, of Frisvad's construction with the fixed frame below
+/// `1 + z = threshold`, over rings from `1 + z = 1e-1` to `1e-15`, eight per decade.
+fn worst_with_threshold(threshold: f64) -> f64 {
+    max_abs(
+        (8..=120)
+            .flat_map(|k| ring(10f64.powf(-f64::from(k) / 8.0), 64))
+            .map(|n| {
+                let (t, b) = if 1.0 + n.z < threshold {
+                    (DVec3::new(0.0, -1.0, 0.0), DVec3::new(-1.0, 0.0, 0.0))
+                } else {
+                    frisvad(n)
+                };
+                Frame { t, b, n }.error() / f64::EPSILON
+            }),
+    )
+}
+
+#[test]
+#[ignore = "exercise 3 of Tangent frames: fill in your_threshold, then run it"]
+fn exercise_3_move_the_threshold() {
+    let best = (0..=60)
+        .map(|j| worst_with_threshold(10f64.powf(-4.0 - f64::from(j) / 6.0)))
+        .fold(f64::INFINITY, f64::min);
+    let yours = worst_with_threshold(your_threshold());
+    assert!(
+        yours <= 2.0 * best,
+        "your threshold's worst error is {yours:.3e} eps; the best of the sweep is {best:.3e} eps"
+    );
+    // Why it is still far above Duff et al.'s: the two errors it balances, the rounding of
+    // the normal divided by 1 + z above and the distance to the pole below, meet far above.
+    assert!(best >= 1e10, "best {best:e}");
+}
+
+/// Exercise 5 of *Tangent frames*: `(t, b)` for the unit normal `n` by the helper-axis
+/// method: a helper vector orthogonal to `n`, normalised, and a second cross product.
+fn your_helper_axis_frame(n: DVec3) -> (DVec3, DVec3) {
+    let _ = n;
+    unimplemented!("exercise 5 of Tangent frames: a frame by the helper-axis method")
+}
+
+#[test]
+#[ignore = "exercise 5 of Tangent frames: fill in your_helper_axis_frame, then run it"]
+fn exercise_5_your_own_frame() {
+    let normals: Vec<DVec3> = random_normals(10, 100_000)
+        .into_iter()
+        .chain((1..=15).flat_map(|k| ring(10f64.powi(-k), 256)))
+        .chain(signed_zero_normals())
+        .collect();
+    let e = worst64(normals.iter().copied(), your_helper_axis_frame);
+    assert!(e <= ORTHO_BOUND, "worst error {e} eps");
+    let mut r = rng::seeded(11);
+    for n in normals {
+        let f = Frame::with(n, your_helper_axis_frame);
+        assert!(f.t.cross(f.b).dot(n) > 0.0, "{n}: left-handed {f:?}");
+        let v = sphere_uniform(&mut r) * rng::log_uniform(&mut r, 1e-3, 1e3);
+        let back = f.to_world(f.to_local(v));
+        assert!(
+            (back - v).length() <= 8.0 * f64::EPSILON * v.length(),
+            "{n}: {v} -> {back}"
+        );
+    }
 }
