@@ -40,13 +40,39 @@ impl fmt::Display for DataError {
 
 impl std::error::Error for DataError {}
 
-/// Reads the text file at `path`; an unreadable file is a [`DataError`] on line 0.
+/// The largest text file read (a scene, a table, a file of samples or answers): 32 MiB.
+pub const MAX_TEXT: u64 = 32 << 20;
+
+/// Reads the text file at `path`, at most [`MAX_TEXT`] bytes of it (a device such as
+/// `/dev/zero` or a runaway file is refused once that much is read); an unreadable file is
+/// a [`DataError`] on line 0.
 ///
 /// # Errors
-/// If the file cannot be read or is not UTF-8.
+/// If the file cannot be read, is larger than [`MAX_TEXT`] or is not UTF-8.
 pub fn read_text(path: &Path) -> Result<(String, String), DataError> {
+    use std::io::Read as _;
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| DataError::new(&name, 0, format!("cannot read the file: {e}")))?;
+    let cannot = |e: std::io::Error| DataError::new(&name, 0, format!("cannot read the file: {e}"));
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_TEXT + 1).read_to_end(&mut bytes))
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_TEXT {
+        return Err(DataError::new(
+            &name,
+            0,
+            format!(
+                "larger than {} MiB, the most read of a text file",
+                MAX_TEXT >> 20
+            ),
+        ));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
+        DataError::new(&name, line, "not UTF-8 text")
+    })?;
     Ok((text, name))
 }

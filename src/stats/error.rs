@@ -6,6 +6,11 @@
 
 use std::fmt;
 
+/// What the chi-squared test's message says when every cell expects too few samples to
+/// test (the remedy is more samples, not another sampler); `raylemma check` reads it as bad
+/// input.
+pub const DRAW_MORE: &str = "draw more samples";
+
 /// Why a statistical test could not be carried out.
 #[derive(Debug, Clone, PartialEq)]
 pub enum StatsError {
@@ -136,7 +141,7 @@ impl fmt::Display for StatsError {
                 min_expected,
             } => write!(
                 f,
-                "{cells} cell(s) left after pooling cells expecting fewer than {min_expected}: the test needs at least 2 (draw more samples)"
+                "{cells} cell(s) left after pooling cells expecting fewer than {min_expected}: the test needs at least 2 ({DRAW_MORE})"
             ),
             Self::CdfOutOfRange { x, value } => {
                 write!(f, "cdf({x}) = {value}: a CDF takes values in [0, 1]")

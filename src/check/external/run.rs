@@ -12,6 +12,59 @@ use std::time::{Duration, Instant};
 use super::Program;
 use crate::data::DataError;
 
+/// The longest answer line read (bytes, without the newline): an answer is at most a few
+/// numbers, which need fewer than 100 characters even with every digit of a double.
+pub const MAX_ANSWER_LINE: usize = 1024;
+
+/// Why an output was not read to its end.
+struct Overflow {
+    /// The line of the output where it went wrong (from 1).
+    line: usize,
+    problem: String,
+}
+
+/// Reads `out` to its end, but no further than its limits allow: at most
+/// [`MAX_ANSWER_LINE`] bytes in a line and one line more than the `expected` answers (so
+/// that a program writing without end, such as `yes`, or one endless line, costs at most
+/// `expected` short lines of memory). An overflow stops the reading.
+fn read_bounded(
+    out: &mut impl Read,
+    expected: usize,
+) -> std::io::Result<Result<Vec<u8>, Overflow>> {
+    let mut bytes = Vec::new();
+    let mut chunk = [0u8; 1 << 16];
+    let (mut lines, mut line_len) = (0usize, 0usize);
+    loop {
+        let n = out.read(&mut chunk)?;
+        if n == 0 {
+            return Ok(Ok(bytes));
+        }
+        for &b in &chunk[..n] {
+            if b == b'\n' {
+                lines += 1;
+                line_len = 0;
+                if lines > expected {
+                    return Ok(Err(Overflow {
+                        line: lines,
+                        problem: format!("it wrote more than {expected} answers"),
+                    }));
+                }
+            } else {
+                line_len += 1;
+                if line_len > MAX_ANSWER_LINE {
+                    return Ok(Err(Overflow {
+                        line: lines + 1,
+                        problem: format!(
+                            "a line longer than {MAX_ANSWER_LINE} bytes (an answer is a few numbers)"
+                        ),
+                    }));
+                }
+            }
+        }
+        bytes.extend_from_slice(&chunk[..n]);
+    }
+}
+
 impl Program {
     /// Runs the program once on `questions` (one line each, without the newline) and
     /// returns its answers, exactly one line per question (a `\r` before the newline is
@@ -49,10 +102,9 @@ impl Program {
             let _ = stdin.write_all(input.as_bytes());
         });
         let (sender, receiver) = mpsc::channel();
+        let expected = questions.len();
         thread::spawn(move || {
-            let mut bytes = Vec::new();
-            let read = stdout.read_to_end(&mut bytes).map(|_| bytes);
-            let _ = sender.send(read);
+            let _ = sender.send(read_bounded(&mut stdout, expected));
         });
         let started = Instant::now();
         let deadline = started + self.timeout;
@@ -65,7 +117,17 @@ impl Program {
             ))
         };
         let bytes = match receiver.recv_timeout(self.timeout) {
-            Ok(Ok(bytes)) => bytes,
+            Ok(Ok(Ok(bytes))) => bytes,
+            Ok(Ok(Err(Overflow { line, problem }))) => {
+                kill(&mut child);
+                return Err(DataError::new(
+                    &self.output_name(),
+                    line,
+                    format!(
+                        "{problem}, in run {run} ({expected} questions): stopped reading and killed it"
+                    ),
+                ));
+            }
             Ok(Err(e)) => {
                 kill(&mut child);
                 return Err(whole(format!("cannot read its standard output: {e}")));

@@ -367,7 +367,25 @@ pub fn sampler(sampler: &Sampler, options: &impl ToWarpOptions) -> Result<Verdic
                 alpha: options.alpha,
                 ..rule
             };
-            Ok(warp::check(&table, &options))
+            let verdict = warp::check(&table, &options);
+            let too_few = verdict.findings.iter().any(|f| {
+                f.name == "chi_squared"
+                    && f.example
+                        .as_deref()
+                        .is_some_and(|e| e.contains(crate::stats::error::DRAW_MORE))
+            });
+            if too_few {
+                return Err(DataError::new(
+                    &path.display().to_string(),
+                    0,
+                    format!(
+                        "{} samples are too few to test: every cell of the chi-squared grid expects fewer than 5 of them; write more samples (a few thousand at least, {} by default)",
+                        table.samples.len(),
+                        super::SAMPLES
+                    ),
+                ));
+            }
+            Ok(verdict)
         }
     }
 }

@@ -651,3 +651,34 @@ fn exercise_4_rows_to_reject_the_cos_1_1_lobe() {
         "{rows} rows: only {rejected} of 10 seeds rejected"
     );
 }
+
+/// Reads are bounded (chapter *Checks from any language*, bad input): a program that
+/// writes without end, one endless line, a file that never ends. Each is refused with
+/// exit status 2 and the reason, after reading no more than its limits.
+#[test]
+fn endless_output_and_endless_files_are_refused_not_read_to_the_end() {
+    let e = program_error("yes 0.5,0.5");
+    assert!(
+        e.problem.contains("more than") && e.problem.contains("answers"),
+        "{e}"
+    );
+    let e = program_error("head -c 5000 /dev/zero | tr '\\0' x");
+    assert!(
+        e.line == 1 && e.problem.contains("longer than 1024 bytes"),
+        "{e}"
+    );
+    let out = raylemma(&[
+        "check",
+        "sampler",
+        "--target",
+        "disc",
+        "--samples",
+        "/dev/zero",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("/dev/zero") && err.contains("larger than 32 MiB"),
+        "{err}"
+    );
+}
