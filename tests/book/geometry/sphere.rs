@@ -201,7 +201,7 @@ fn checker_rejects_the_textbook_form() {
 
 #[test]
 fn checker_rejects_the_seeds_t_greater_than_zero_rule() {
-    // The seed: "the smallest value that is still greater than 0", ignoring t_min.
+    // The source notes: "the smallest value that is still greater than 0", ignoring t_min.
     let verdict = verdict_f64(planted::t_greater_than_zero);
     assert!(verdict.failed("surface_origin"), "{verdict}");
     assert!(verdict.failed("nearest_root"), "{verdict}");
@@ -288,7 +288,7 @@ fn far_checker_rejects_a_sphere_that_is_never_hit() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The seed's claims, one by one.
+// The source notes' claims, one by one.
 
 /// The source notes: "the value of t corresponding to the first intersection is the
 /// smallest value that is still greater than 0". In floating point, a ray leaving a surface

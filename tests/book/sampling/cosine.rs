@@ -35,7 +35,7 @@ fn malley_with_the_concentric_disc_passes() {
     check("cosine, malley", cosine_malley, cosine_pdf).assert_pass();
 }
 
-/// The seed's two forms are the same map, not only the same distribution.
+/// The source's two forms are the same map, not only the same distribution.
 #[test]
 fn seed_angles_and_cartesian_agree_pointwise() {
     let mut rng = raylemma::rng::seeded(3);

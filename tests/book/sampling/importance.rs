@@ -88,15 +88,15 @@ fn a_proposal_missing_part_of_the_support_is_biased() {
     );
 }
 
-/// The seed requires q to be non-zero "wherever f(x) p_X(x) is nonzero". With
-/// p = HALF_SUPPORT's density (the seed's starting estimator E_p[f/p] is then already
+/// The source notes require q to be non-zero "wherever f(x) p_X(x) is nonzero". With
+/// p = HALF_SUPPORT's density (the source's starting estimator E_p[f/p] is then already
 /// biased) the half-support q satisfies that condition, yet estimates 1/24, not 1/3.
 /// The condition that makes the estimator unbiased is q > 0 wherever f != 0.
 #[test]
 fn the_seeds_support_condition_is_not_enough() {
     let p = HALF_SUPPORT.pdf;
     let q = HALF_SUPPORT.pdf;
-    // The seed's condition holds on a fine grid: f p != 0 implies q != 0 ...
+    // The source's condition holds on a fine grid: f p != 0 implies q != 0 ...
     let grid = (0..=10_000).map(|k| k as f64 / 10_000.0);
     assert!(grid.clone().all(|x| square(x) * p(x) == 0.0 || q(x) != 0.0));
     // ... the correct one does not: f != 0 but q = 0 on (1/2, 1].

@@ -175,7 +175,7 @@ fn inverse_cdf_is_accurate_at_the_poles() {
     // half an ulp), so the source's sqrt(1 - z^2) is 2 sqrt(u), wrong by u/2 relative:
     // about 2.3e5 eps at u = 1e-10. The exact radius 2 sqrt(u (1 - u)) is
     // 2^-52 sqrt(k (2^53 - k)), computed here in integers: r 2^72 = sqrt(k (2^53 - k) 2^40).
-    for (target, seed_at_least) in [(1e-10, 1e5), (1e-8, 1e6)] {
+    for (target, source_at_least) in [(1e-10, 1e5), (1e-8, 1e6)] {
         let k = (target * 2f64.powi(53)).round() as u128;
         let u = k as f64 * 2f64.powi(-53);
         let exact = ((k * ((1u128 << 53) - k)) << 40).isqrt(); // r 2^72, to 1 part in 1e17
@@ -191,7 +191,7 @@ fn inverse_cdf_is_accurate_at_the_poles() {
             "u = {u:e}: the code's radius is off by {code} eps"
         );
         assert!(
-            source.abs() >= seed_at_least,
+            source.abs() >= source_at_least,
             "u = {u:e}: the source's radius is off by only {source} eps"
         );
     }
