@@ -4,11 +4,13 @@
 //! Substituting the ray `P(t) = O + tD` into the sphere `|P - C|^2 = r^2` gives, with
 //! `f = O - C`, the quadratic `(D.D) t^2 + 2 (D.f) t + (f.f - r^2) = 0`.
 //!
-//! * [`intersect_textbook`] solves it with the school formula, as the seed notes do.
+//! * [`intersect_textbook`] solves it with the school formula, as the source notes do.
 //! * [`intersect_stable`] is the rewrite of Haines, Günther and Akenine-Möller
 //!   (*Ray Tracing Gems*, 2019, ch. 7), which avoids both cancellations of the school
 //!   formula: the discriminant from the distance of the centre to the ray, and the
-//!   smaller root from Vieta's formula instead of a difference of nearly equal numbers.
+//!   smaller root from Vieta's formula instead of a difference of nearly equal numbers
+//!   (which gains relative accuracy only where `c` itself is exact: `c = f.f - r^2`
+//!   cancels near the surface too).
 //!
 //! Both return the smallest root strictly greater than the caller's `t_min`, or `None`.
 //! Neither ever returns NaN: a NaN discriminant or root counts as a miss.
@@ -37,7 +39,7 @@ impl Sphere {
 }
 
 // ANCHOR: textbook
-/// The seed's quadratic, solved by the school formula.
+/// The source notes' quadratic, solved by the school formula.
 ///
 /// With `f = O - C`, `a = D.D`, `b = D.f` (half the linear coefficient) and
 /// `c = f.f - r^2`, the roots are `t = (-b -+ sqrt(b^2 - a c)) / a`.

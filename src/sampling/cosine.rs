@@ -2,7 +2,7 @@
 //! (`chapters/sampling/cosine.md`).
 //!
 //! Density `p(w) = cos(theta) / pi` on the hemisphere `z >= 0`. Three constructions, shown
-//! to be the same distribution: the seed's inverse CDF in angles, its Cartesian form, and
+//! to be the same distribution: the source's inverse CDF in angles, its Cartesian form, and
 //! Malley's method (lift a uniform disc sample onto the hemisphere), here with the
 //! concentric disc map.
 //!
@@ -14,7 +14,7 @@ use super::disc::disc_concentric;
 use super::precision::{Float, V2, V3, consts};
 
 // ANCHOR: seed_angles
-/// The seed's inverse CDF in angles: `F(theta) = (1 - cos 2 theta) / 2`, so
+/// The source's inverse CDF in angles: `F(theta) = (1 - cos 2 theta) / 2`, so
 /// `theta = acos(1 - 2 u1) / 2`, and `phi = 2 pi u2`.
 pub fn cosine_seed_angles(u: V2) -> V3 {
     let theta = (1.0 - 2.0 * u.x).acos() / 2.0;
@@ -28,7 +28,7 @@ pub fn cosine_seed_angles(u: V2) -> V3 {
 // ANCHOR_END: seed_angles
 
 // ANCHOR: seed_cartesian
-/// The seed's Cartesian form, from the half-angle identities: `sin theta = sqrt(u1)`,
+/// The source's Cartesian form, from the half-angle identities: `sin theta = sqrt(u1)`,
 /// `cos theta = sqrt(1 - u1)`. For `u1 < 1`, `z > 0`.
 pub fn cosine_seed_cartesian(u: V2) -> V3 {
     let (s, phi) = (u.x.sqrt(), consts::TAU * u.y);

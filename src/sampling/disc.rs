@@ -27,8 +27,11 @@ pub fn disc_polar(u: V2) -> V3 {
 
 // ANCHOR: concentric
 // EXERCISE sampling/disc disc_concentric: Shirley and Chiu's concentric map from the unit square to the disc
-/// Shirley and Chiu's concentric map (1997): concentric squares of `[-1, 1]^2` go to
-/// concentric circles, each square's wedge to a sector of equal angle.
+/// Shirley and Chiu's concentric map (*A Low Distortion Map Between Disk and Square*,
+/// JGT 1997): concentric squares of `[-1, 1]^2` go to concentric circles, each square's
+/// wedge to a sector of equal angle. Written in the two-wedge form with negative radii
+/// that Shirley posted in 2011 (crediting Dave Cline), as pbrt has it; with the second
+/// wedge's angle written `pi/2 - psi` it is the same map as the paper's four regions.
 /// With `a = 2u - 1`: if `|a.x| > |a.y|`, `r = a.x` and `phi = (pi/4) a.y / a.x`; otherwise
 /// `r = a.y` and `phi = pi/2 - (pi/4) a.x / a.y`, whose cosine and sine are the sine and
 /// cosine of `psi = (pi/4) a.x / a.y`. Either way the angle to take the sine and cosine of
@@ -50,14 +53,29 @@ pub fn disc_concentric(u: V2) -> V3 {
 // ANCHOR_END: concentric
 
 // ANCHOR: sin_cos_quarter
-/// `(sin x, cos x)` for `|x| <= pi/4`, by their Taylor series to `x^17` and `x^18`: the
-/// first omitted terms, `x^19 / 19!` and `x^20 / 20!`, are below `1e-19` there, far under
-/// the rounding of `f64`, so the error is the sums' rounding, within `2 eps` of the value
-/// (a test measures it against the standard library's). No range reduction and no branch;
-/// outside `[-pi/4, pi/4]` it is not accurate. Each series is a polynomial of degree 7 in
-/// `z = x^2`, summed by Estrin's scheme (pairs, then pairs of pairs with `z^2` and `z^4`)
-/// rather than Horner's: the same number of operations in three dependent steps instead
-/// of eight.
+/// How many coefficients each series of [`sin_cos_quarter`] sums in this precision: 8 in
+/// `f64` (the sine to `x^17`, the cosine to `x^18`), 4 in `f32` (to `x^9` and `x^10`).
+///
+/// At `|x| = pi/4` the first omitted terms are `x^19/19! = 8.3e-20` and
+/// `x^20/20! = 3.3e-21` in `f64`, `x^11/11! = 1.8e-9` and `x^12/12! = 1.2e-10` in `f32`:
+/// each under a tenth of half an ulp of `cos(pi/4) = 0.707` (`5.6e-17` and `3.0e-8`). One
+/// coefficient fewer would leave the sine's `x^17/17! = 4.6e-17`, resp. `x^9/9! = 3.1e-7`,
+/// which is not. The precision's mantissa decides, so the one source serves both twins.
+pub const QUARTER_TERMS: usize = if Float::MANTISSA_DIGITS > f32::MANTISSA_DIGITS {
+    8
+} else {
+    4
+};
+
+/// `(sin x, cos x)` for `|x| <= pi/4`, by their Taylor series, summed only as far as the
+/// precision needs ([`QUARTER_TERMS`]): what is left is the sums' rounding, within
+/// `2 eps` of the value (a test measures it against the standard library's). No range
+/// reduction and no branch; outside `[-pi/4, pi/4]` it is not accurate. Each series is a
+/// polynomial in `z = x^2` (of degree 7 in `f64`, 3 in `f32`), summed by Estrin's scheme
+/// rather than Horner's: pairs `k0 + k1 z`, then pairs of pairs with `z^2`, then (in
+/// `f64`) the two halves with `z^4`. That is Horner's multiplications and additions plus
+/// the one multiplication for `z^4`, in three dependent steps instead of seven (two
+/// instead of three in `f32`).
 #[inline]
 pub fn sin_cos_quarter(x: Float) -> (Float, Float) {
     // sin x = x - x z (1/3! - z/5! + z^2/7! - ... - z^7/17!)
@@ -84,11 +102,15 @@ pub fn sin_cos_quarter(x: Float) -> (Float, Float) {
     ];
     let z = x * x;
     let z2 = z * z;
-    let z4 = z2 * z2;
+    // The first QUARTER_TERMS coefficients of k (a constant: the other branch is not
+    // compiled into the twin).
     let estrin = |k: &[Float; 8]| {
         let low = (k[0] + k[1] * z) + z2 * (k[2] + k[3] * z);
+        if QUARTER_TERMS == 4 {
+            return low;
+        }
         let high = (k[4] + k[5] * z) + z2 * (k[6] + k[7] * z);
-        low + z4 * high
+        low + (z2 * z2) * high
     };
     (x - x * z * estrin(&SIN), 1.0 - 0.5 * z + z2 * estrin(&COS))
 }

@@ -23,7 +23,7 @@ pub const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
 // ANCHOR: inverse_cdf
 /// Inverse-CDF sampling: `z = cos(theta) = 1 - 2 u1`, `phi = 2 pi u2`.
 ///
-/// The seed writes `sqrt(1 - z^2)` for the radius of the circle at height `z`; near the
+/// The source notes write `sqrt(1 - z^2)` for the radius of the circle at height `z`; near the
 /// poles that subtracts two nearly equal numbers. Since `1 - (1 - 2u)^2 = 4 u (1 - u)`,
 /// the radius is computed as `2 sqrt(u (1 - u))`, accurate everywhere.
 pub fn sphere_inverse_cdf(u: V2) -> V3 {

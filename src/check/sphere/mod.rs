@@ -2,10 +2,10 @@
 //! (`chapters/geometry/sphere.md`).
 //!
 //! * [`intersection`]: six claims on constructed rays, in either precision;
-//! * [`far`]: the hard case, a unit sphere `1e2` to `1e4` radii away, in `f32`
-//!   ([`far_row`] measures one distance, for the chapter's table and figure);
+//! * [`far`]: the hard case, a unit sphere `1e2` to `1e4` radii away, in either
+//!   precision ([`far_row`] measures one distance, for the chapter's table and figure);
 //! * [`self_hit_rate`]: how often a ray leaving the surface finds its own sphere with
-//!   `t_min = 0` (the seed's rule);
+//!   `t_min = 0` (the source notes' rule);
 //! * [`planted`]: the intersectors with the classic mistakes, which the checker must
 //!   reject.
 //!
@@ -22,7 +22,6 @@ use glam::DVec3;
 
 use super::{Finding, Options, Real, Verdict};
 use crate::rng::{self, Rng, log_uniform, uniform};
-use crate::single::geometry::{Ray, Sphere};
 
 /// Anything that intersects a ray with a sphere: returns the smallest `t > t_min` with
 /// `|O + tD - C| = r`, or `None`.
@@ -93,8 +92,9 @@ impl<R: Real> Case<R> {
     }
 }
 
-/// A random scene of scale `r` placed anywhere within `10 r` of the origin, with a ray
-/// direction of random length in `[0.01, 100]`: inputs span eight decades.
+/// A random scene: a radius `r` log-uniform in `[0.01, 100]` (four decades), a centre
+/// uniform in the cube of half-side `10 r` around the origin, and a ray direction of
+/// log-uniform length in `[0.01, 100]` (four decades).
 fn random_frame(rng: &mut Rng) -> (DVec3, f64, DVec3) {
     let radius = log_uniform(rng, 1e-2, 1e2);
     let center = DVec3::new(
@@ -337,7 +337,8 @@ fn direction_scale<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usi
 
 // ANCHOR: far_row
 /// What one form does to a unit sphere seen from `distance` away by a bundle of parallel
-/// rays (f32 inputs, answers from an `f64` computation on the same inputs).
+/// rays (inputs in the form's precision, answers from an `f64` computation on the same
+/// inputs).
 #[derive(Clone, Copy, Debug)]
 pub struct FarRow {
     /// Distance from the ray origins to the centre, in radii.
@@ -358,20 +359,25 @@ pub struct FarRow {
 /// The centre of the far-sphere test's unit sphere (exact in f32).
 const FAR_CENTER: DVec3 = DVec3::new(1.25, -0.5, 2.0);
 
-/// Shoots a `grid x grid` bundle of parallel f32 rays at a unit sphere `distance` radii
-/// away, over offsets in `[-1.25, 1.25]^2` across the direction, and counts wrong
-/// answers and the worst `t` error. The grid is [`far_grid`]`(options)` (default
-/// [`FAR_GRID`]); the bundle's direction is drawn from the seed (default [`SEED`]) and
-/// the distance.
+/// Shoots a `grid x grid` bundle of parallel rays, in `f`'s precision, at a unit sphere
+/// `distance` radii away, over offsets in `[-1.25, 1.25]^2` across the direction, and
+/// counts wrong answers and the worst `t` error. The grid is [`far_grid`]`(options)`
+/// (default [`FAR_GRID`]); the bundle's direction is drawn from the seed (default
+/// [`SEED`]) and the distance.
 ///
-/// The answers are computed in `f64` from the f32 inputs (exactly representable in
-/// `f64`): the f64 rounding errors are about 1e-9 of the f32 ones.
-pub fn far_row(f: &impl SphereIntersector<f32>, distance: f64, options: &Options) -> FarRow {
+/// The answers are computed in `f64` from the rounded inputs (exactly representable in
+/// `f64`), from the distance `h` of the centre to the line: its error is a few
+/// `eps_64 (distance + r)`. For an `f32` routine that is about 1e-9 of the routine's own
+/// errors. For an `f64` routine it is still well inside the silhouette band, so the
+/// hit/miss answers are right at any distance; the `t` reference is only as good as the
+/// stable form in `f64`, enough to measure errors far above it (the textbook form's),
+/// not to judge the stable form's.
+pub fn far_row<R: Real>(f: &impl SphereIntersector<R>, distance: f64, options: &Options) -> FarRow {
     let grid = far_grid(options);
     let mut rng = rng::seeded(options.seed_or(SEED) ^ distance.to_bits());
     let d_hat = sphere_uniform(&mut rng);
     let (e1, e2) = d_hat.any_orthonormal_pair();
-    let sphere = Sphere::new(FAR_CENTER.as_vec3(), 1.0);
+    let sphere = R::sphere(FAR_CENTER, 1.0);
     let c = FAR_CENTER;
     let mut row = FarRow {
         distance,
@@ -385,18 +391,15 @@ pub fn far_row(f: &impl SphereIntersector<f32>, distance: f64, options: &Options
         for j in 0..grid {
             let x = -1.25 + 2.5 * (i as f64 + 0.5) / grid as f64;
             let y = -1.25 + 2.5 * (j as f64 + 0.5) / grid as f64;
-            let ray = Ray::new(
-                (c - d_hat * distance + e1 * x + e2 * y).as_vec3(),
-                d_hat.as_vec3(),
-            );
+            let ray = R::ray(c - d_hat * distance + e1 * x + e2 * y, d_hat);
             // The exact geometry of the rounded ray, in f64.
-            let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+            let (o, d) = (R::wide3(R::origin(&ray)), R::wide3(R::dir(&ray)));
             let fo = o - c;
             let a = d.dot(d);
             let t_c = -fo.dot(d) / a;
             let h = (fo + d * t_c).length();
-            let unit = f64::from(f32::EPSILON) * (fo.length() + 1.0);
-            let got = f.intersect(&ray, &sphere, 0.0);
+            let unit = R::EPSILON.wide() * (fo.length() + 1.0);
+            let got = f.intersect(&ray, &sphere, R::ZERO);
             if (h - 1.0).abs() <= SILHOUETTE_BAND * unit {
                 continue; // grazing the silhouette: either answer is acceptable
             }
@@ -408,7 +411,7 @@ pub fn far_row(f: &impl SphereIntersector<f32>, distance: f64, options: &Options
             }
             if let (Some(t), true) = (got, h <= 0.9) {
                 let t_star = t_c - ((1.0 - h * h) / a).sqrt();
-                let err = (f64::from(t) - t_star).abs() * a.sqrt();
+                let err = (t.wide() - t_star).abs() * a.sqrt();
                 let err = if err.is_nan() { f64::INFINITY } else { err };
                 row.worst_t_error = row.worst_t_error.max(err);
                 row.worst_t_units = row.worst_t_units.max(err / unit);
@@ -441,8 +444,11 @@ pub fn far_grid(options: &Options) -> usize {
 /// outside the silhouette band and the `t` error within [`T_ERROR_BOUND`]. `options`
 /// sets the rays per distance (default [`FAR_RAYS`], see [`far_grid`]) and the seed
 /// (default [`SEED`]).
-pub fn far(f: &impl SphereIntersector<f32>, options: &Options) -> Verdict {
-    let mut verdict = Verdict::new("ray-sphere intersection, far-away unit sphere (f32)");
+pub fn far<R: Real>(f: &impl SphereIntersector<R>, options: &Options) -> Verdict {
+    let mut verdict = Verdict::new(format!(
+        "ray-sphere intersection, far-away unit sphere ({})",
+        R::NAME
+    ));
     for &distance in &FAR_DISTANCES {
         let row = far_row(f, distance, options);
         let mut finding = Finding::new(
@@ -467,8 +473,8 @@ pub fn far(f: &impl SphereIntersector<f32>, options: &Options) -> Verdict {
     verdict
 }
 
-/// Rays leaving a sphere from a point on its surface, with `t_min = 0` as the seed
-/// prescribes: the fraction that "hits" the sphere again at a tiny `t`. `options` sets
+/// Rays leaving a sphere from a point on its surface, with `t_min = 0` as the source
+/// notes prescribe: the fraction that "hits" the sphere again at a tiny `t`. `options` sets
 /// the number of rays (default [`SELF_HIT_RAYS`]) and their seed (default
 /// [`SELF_HIT_SEED`]).
 pub fn self_hit_rate<R: Real>(f: &impl SphereIntersector<R>, options: &Options) -> f64 {

@@ -59,17 +59,39 @@ fn concentric_with_a_wrong_wedge_angle_is_rejected() {
     assert!(v.failed("chi_squared"), "{v}");
 }
 
+/// The anisotropy (ratio of the Jacobian's singular values) over a grid of the square,
+/// against its closed forms. Polar: `max(4 pi u1, 1 / (4 pi u1))`, unbounded as
+/// `u1 -> 0`. Concentric: in the wedge `|a_x| > |a_y|` (`a = 2u - 1`, `t = a_y / a_x`) the
+/// Jacobian in the disc's polar frame is `2 [[1, 0], [-(pi/4) t, pi/4]]`, whose ratio grows
+/// with `|t|` from `4/pi` on the wedge's centre line to its supremum at the diagonals
+/// (`t = +-1`), computed here from the matrix.
 #[test]
 fn concentric_map_distorts_less_than_polar() {
-    // Anisotropy (ratio of the Jacobian's singular values) over a grid of the square.
     let grid = || {
         (1..100).flat_map(|i| (1..100).map(move |j| DVec2::new(i as f64 / 100.0, j as f64 / 100.0)))
     };
     let worst = |f: fn(DVec2) -> DVec3| max_abs(grid().map(|u| anisotropy(f, u)));
     let (polar, concentric) = (worst(disc_polar), worst(disc_concentric));
-    // Polar: ratio 4 pi u1 or its inverse, 1/(4 pi 0.01) ~ 8 at u1 = 0.01 and 4 pi ~ 12.6 at u1 = 1.
+    // Polar, pointwise: 4 pi u1 or its inverse (~12.4 at u1 = 0.99, ~8 at u1 = 0.01).
+    for u in grid() {
+        let ratio = 4.0 * std::f64::consts::PI * u.x;
+        let exact = ratio.max(1.0 / ratio);
+        let measured = anisotropy(disc_polar, u);
+        assert!(
+            (measured / exact - 1.0).abs() <= 1e-6,
+            "polar at {u}: {measured}, closed form {exact}"
+        );
+    }
     assert!(polar >= 10.0, "polar {polar}");
-    // Concentric: bounded by about 1.9 (wedge corners), well below polar.
+    // Concentric: the supremum, the singular-value ratio of [[1, 0], [-pi/4, pi/4]].
+    let c = std::f64::consts::FRAC_PI_4;
+    let (trace, det) = (1.0 + 2.0 * c * c, c * c); // of J J^T
+    let root = (trace * trace - 4.0 * det).sqrt();
+    let sup = ((trace + root) / (trace - root)).sqrt(); // 2.433
+    assert!(
+        concentric <= sup * (1.0 + 1e-6) && concentric >= 0.98 * sup,
+        "concentric {concentric}, supremum {sup}"
+    );
     assert!(concentric <= 2.5, "concentric {concentric}");
 }
 
@@ -149,4 +171,157 @@ fn the_quarter_range_sine_and_cosine_are_within_two_eps() {
             "at u = {u}: {p} against the libm form's {q}"
         );
     }
+}
+
+/// The sine and cosine series sum only the coefficients their precision needs: at
+/// `|x| = pi/4` the first omitted terms lie below a tenth of half an ulp of
+/// `cos(pi/4) = 0.707`, and with one coefficient fewer the sine's would not. `f64` needs
+/// 8 coefficients per series, `f32` 4 (its twin once summed all 8, sized for `f64`).
+#[test]
+fn the_quarter_series_sum_only_the_terms_their_precision_needs() {
+    use raylemma::single::sampling::disc as single;
+    let x = std::f64::consts::FRAC_PI_4;
+    // x^k / k!
+    let term = |k: i32| (1..=k).fold(1.0, |t: f64, i| t * x / f64::from(i));
+    // With n coefficients the sine is summed to x^(2n+1), the cosine to x^(2n+2).
+    let omitted = |n: usize| {
+        let k = 2 * i32::try_from(n).unwrap();
+        (term(k + 3), term(k + 4))
+    };
+    for (name, n, eps) in [
+        ("f64", QUARTER_TERMS, f64::EPSILON),
+        ("f32", single::QUARTER_TERMS, f64::from(f32::EPSILON)),
+    ] {
+        let half_ulp = eps / 4.0; // of a value in [1/2, 1)
+        let (sin, cos) = omitted(n);
+        assert!(
+            sin <= 0.1 * half_ulp && cos <= 0.1 * half_ulp,
+            "{name}: {n} coefficients omit {sin:e} and {cos:e}, against half an ulp {half_ulp:e}"
+        );
+        let (sin, _) = omitted(n - 1);
+        assert!(
+            sin > 0.1 * half_ulp,
+            "{name}: {n} coefficients, but {} would do (the sine then omits {sin:e})",
+            n - 1
+        );
+    }
+    assert_eq!((QUARTER_TERMS, single::QUARTER_TERMS), (8, 4));
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises: each test is ignored until the exercise is done; run one with
+// `cargo test --test book sampling::disc::exercise_2 -- --ignored`.
+
+/// Exercise 2 of *The unit disc*: your inverse of the concentric map, from a point of the
+/// disc back to the unit square.
+fn your_concentric_invert(p: DVec3) -> DVec2 {
+    let _ = p;
+    unimplemented!("exercise 2 of The unit disc: write the inverse of the concentric map")
+}
+
+#[test]
+#[ignore = "exercise 2 of The unit disc: fill in your_concentric_invert, then run it"]
+fn exercise_2_concentric_inverse() {
+    // The checker's round trip T^-1(T(u)) = u within 1e-9 at 5 000 points, with the
+    // chi-squared and Jacobian checks of the map itself.
+    let v = check(
+        "concentric, your inverse",
+        disc_concentric,
+        your_concentric_invert,
+    );
+    v.assert_pass();
+    assert!(v.findings.iter().any(|f| f.name == "round_trip"), "{v}");
+    // And the corners, edges and centre of the square, where the wedges meet.
+    for u in [0.0, 0.25, 0.5, 0.75, 1.0 - 1e-12]
+        .into_iter()
+        .flat_map(|a| [0.0, 0.25, 0.5, 0.75, 1.0 - 1e-12].map(|b| DVec2::new(a, b)))
+    {
+        let back = your_concentric_invert(disc_concentric(u));
+        assert!(
+            max_abs((back - u).to_array()) <= 1e-9,
+            "u = {u} came back as {back}"
+        );
+    }
+}
+
+/// Exercise 3 of *The unit disc*: one stratified estimate of the area of the half-disc
+/// `x cos(0.3) + y sin(0.3) > 0`: one uniform sample in each cell of a 16 x 16 grid of the
+/// square, mapped to the disc by `map`, and the area as `pi` times the share of the 256
+/// points that fall in the half-disc.
+fn your_stratified_area(map: fn(DVec2) -> DVec3, rng: &mut raylemma::rng::Rng) -> f64 {
+    let _ = (map, rng);
+    unimplemented!("exercise 3 of The unit disc: write the stratified estimate")
+}
+
+/// Exercise 3 of *The unit disc*: which map gives the smaller variance, `"polar"` or
+/// `"concentric"`?
+const YOUR_SMALLER_VARIANCE: Option<&str> = None;
+
+#[test]
+#[ignore = "exercise 3 of The unit disc: fill in your_stratified_area and YOUR_SMALLER_VARIANCE, then run it"]
+fn exercise_3_stratified_half_disc() {
+    use raylemma::rng::{seeded, uniform};
+    use raylemma::stats::{test_alpha, ttest};
+    use std::f64::consts::PI;
+    const REPLICATES: usize = 500;
+    let alpha: f64 = 0.3;
+    // The test's own estimator, to compare the variances with.
+    let reference = |map: fn(DVec2) -> DVec3, rng: &mut raylemma::rng::Rng| {
+        let mut inside = 0;
+        for i in 0..16 {
+            for j in 0..16 {
+                let u = DVec2::new(
+                    (f64::from(i) + uniform(rng, 0.0, 1.0)) / 16.0,
+                    (f64::from(j) + uniform(rng, 0.0, 1.0)) / 16.0,
+                );
+                let p = map(u);
+                if p.x * alpha.cos() + p.y * alpha.sin() > 0.0 {
+                    inside += 1;
+                }
+            }
+        }
+        PI * f64::from(inside) / 256.0
+    };
+    let mut variances = Vec::new();
+    for (seed, name, map) in [
+        (31, "polar", disc_polar as fn(DVec2) -> DVec3),
+        (32, "concentric", disc_concentric),
+    ] {
+        let mut rng = seeded(seed);
+        let yours = raylemma::stats::ttest::Summary::of(
+            (0..REPLICATES).map(|_| your_stratified_area(map, &mut rng)),
+        );
+        let mut rng = seeded(seed + 100);
+        let theirs =
+            raylemma::stats::ttest::Summary::of((0..REPLICATES).map(|_| reference(map, &mut rng)));
+        // Unbiased: the half-disc's area is pi/2.
+        let t = ttest::one_sample(&yours, PI / 2.0).expect("finite estimates");
+        assert!(
+            t.p_value >= test_alpha(),
+            "{name}: mean {} against pi/2 (p = {:.2e})",
+            yours.mean,
+            t.p_value
+        );
+        // Stratified: the variance of the test's own estimator within 30 % (500 replicates
+        // leave the ratio of two sample variances a standard deviation of about 9 %); one
+        // sample per cell of the whole square would have pi^2 / 4 / 256 = 9.6e-3.
+        let ratio = yours.variance() / theirs.variance();
+        assert!(
+            (0.7..=1.3).contains(&ratio),
+            "{name}: variance {:.3e}, the test's stratified estimator {:.3e}",
+            yours.variance(),
+            theirs.variance()
+        );
+        variances.push((name, theirs.variance()));
+    }
+    let smaller = if variances[0].1 < variances[1].1 {
+        variances[0].0
+    } else {
+        variances[1].0
+    };
+    assert_eq!(
+        YOUR_SMALLER_VARIANCE,
+        Some(smaller),
+        "variances: {variances:?}"
+    );
 }

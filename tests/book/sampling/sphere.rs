@@ -170,8 +170,33 @@ fn inverse_cdf_is_accurate_at_the_poles() {
             "u = {u}: {w:?}"
         );
     }
-    // Near the pole the radius 2 sqrt(u(1-u)) keeps its relative precision; the seed's
-    // sqrt(1 - z^2) returns 0 there.
+    // At inputs the project's generator produces (multiples of 2^-53), near the pole: with
+    // u = k 2^-53, z = 1 - 2u is exact and z^2 rounds to 1 - 4u (the 4u^2 it drops is below
+    // half an ulp), so the source's sqrt(1 - z^2) is 2 sqrt(u), wrong by u/2 relative:
+    // about 2.3e5 eps at u = 1e-10. The exact radius 2 sqrt(u (1 - u)) is
+    // 2^-52 sqrt(k (2^53 - k)), computed here in integers: r 2^72 = sqrt(k (2^53 - k) 2^40).
+    for (target, source_at_least) in [(1e-10, 1e5), (1e-8, 1e6)] {
+        let k = (target * 2f64.powi(53)).round() as u128;
+        let u = k as f64 * 2f64.powi(-53);
+        let exact = ((k * ((1u128 << 53) - k)) << 40).isqrt(); // r 2^72, to 1 part in 1e17
+        let rel = |r: f64| ((r * 2f64.powi(72)) as i128 - exact as i128) as f64 / exact as f64;
+        let w = sphere_inverse_cdf(DVec2::new(u, 0.0));
+        let z: f64 = 1.0 - 2.0 * u;
+        let (code, source) = (
+            rel(w.x) / f64::EPSILON,
+            rel((1.0 - z * z).sqrt()) / f64::EPSILON,
+        );
+        assert!(
+            code.abs() <= 2.0,
+            "u = {u:e}: the code's radius is off by {code} eps"
+        );
+        assert!(
+            source.abs() >= source_at_least,
+            "u = {u:e}: the source's radius is off by only {source} eps"
+        );
+    }
+    // Smaller u still, as other generators (low-discrepancy points) produce: at u = 1e-20
+    // the source's sqrt(1 - z^2) returns 0, and the code's radius keeps its precision.
     let u = 1e-20;
     let w = sphere_inverse_cdf(DVec2::new(u, 0.0));
     assert!((w.x / (2.0 * u.sqrt()) - 1.0).abs() <= 1e-12);
@@ -209,4 +234,115 @@ fn single_precision_directions_are_unit() {
         (w.as_dvec3().length() - 1.0) / f64::from(f32::EPSILON)
     }));
     assert!(worst <= 2.0, "normalize_robust: worst norm error {worst} ε");
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises: each test is ignored until the exercise is done; run one with
+// `cargo test --test book sampling::sphere::exercise_1 -- --ignored`.
+
+/// Exercise 1 of *Uniform sphere and hemisphere*: a uniform direction on the hemisphere
+/// around `z` by inverting its CDF, `z = u1`, `phi = 2 pi u2`, with the radius of the
+/// circle at height `z` computed without cancellation near the pole.
+fn your_hemisphere_inverse_cdf(u: DVec2) -> DVec3 {
+    let _ = u;
+    unimplemented!("exercise 1 of Uniform sphere and hemisphere: invert the hemisphere's CDF")
+}
+
+#[test]
+#[ignore = "exercise 1 of Uniform sphere and hemisphere: fill in your_hemisphere_inverse_cdf, then run it"]
+fn exercise_1_hemisphere_inverse_cdf() {
+    let w = SquareWarp::new(
+        "hemisphere, your inverse CDF",
+        Domain::Sphere,
+        your_hemisphere_inverse_cdf,
+        |w: DVec3| hemisphere_pdf(w, DVec3::Z),
+    );
+    let v = warp::check(&w, &opts());
+    v.assert_pass();
+    assert_eq!(v.findings.len(), 2, "chi-squared and the Jacobian: {v}");
+    // Near the pole, z -> 1: the radius sqrt((1 - z)(1 + z)), where 1 - z is exact.
+    for k in (1..=1000)
+        .map(f64::from)
+        .chain([2f64.powi(20), 2f64.powi(40)])
+    {
+        let u1 = 1.0 - k * f64::EPSILON / 2.0;
+        let w = your_hemisphere_inverse_cdf(DVec2::new(u1, 0.1));
+        let radius = w.x.hypot(w.y);
+        let exact = ((1.0 - w.z) * (1.0 + w.z)).sqrt();
+        assert!(
+            w.z == u1 && (radius / exact - 1.0).abs() <= 4.0 * f64::EPSILON,
+            "u1 = {u1}: z = {}, radius {radius:e}, want {exact:e}",
+            w.z
+        );
+    }
+}
+
+/// Exercise 2 of *Uniform sphere and hemisphere*: the first dimension `d` in which
+/// rejection from the cube `[-1, 1]^d` accepts fewer than 1 % of its draws.
+const YOUR_DIMENSION: Option<u32> = None;
+
+#[test]
+#[ignore = "exercise 2 of Uniform sphere and hemisphere: set YOUR_DIMENSION, then run it"]
+fn exercise_2_rejection_in_d_dimensions() {
+    let d = YOUR_DIMENSION.expect("set YOUR_DIMENSION");
+    assert!(d >= 2, "d = {d}");
+    // The acceptance rate, counted: 400 000 draws in d and in d - 1 dimensions. At a rate
+    // near 1 % the count's relative standard deviation is about 1.6 %.
+    let mut rng = rng::seeded(0xD1);
+    let mut rate = |d: u32| {
+        let draws = 400_000;
+        let inside = (0..draws)
+            .filter(|_| {
+                (0..d)
+                    .map(|_| raylemma::rng::uniform(&mut rng, -1.0, 1.0).powi(2))
+                    .sum::<f64>()
+                    <= 1.0
+            })
+            .count();
+        inside as f64 / f64::from(draws)
+    };
+    let (here, before) = (rate(d), rate(d - 1));
+    assert!(
+        here < 0.01 * 0.9 && before > 0.01 * 1.1,
+        "accepted: {:.3} % in {d} dimensions, {:.3} % in {}",
+        100.0 * here,
+        100.0 * before,
+        d - 1
+    );
+}
+
+/// Exercise 3 of *Uniform sphere and hemisphere*: the length of the shortest non-zero
+/// vector `sphere_rejection` can draw from the cube.
+const YOUR_SHORTEST_CUBE_DRAW: Option<f64> = None;
+
+#[test]
+#[ignore = "exercise 3 of Uniform sphere and hemisphere: set YOUR_SHORTEST_CUBE_DRAW, then run it"]
+fn exercise_3_the_shortest_cube_draw() {
+    // rand's uniform f64 is (64 random bits >> 11) 2^-53, a multiple of 2^-53 in [0, 1):
+    // check it on the generator itself, then take the coordinate -1 + 2x nearest to zero
+    // (but not zero) over that grid, at x = 1/2 plus one step.
+    let mut rng = rng::seeded(0x5407);
+    for _ in 0..100_000 {
+        let x: f64 = rand::RngExt::random(&mut rng);
+        assert_eq!((x * 2f64.powi(53)).fract(), 0.0, "{x} is not on the grid");
+    }
+    let step = 2f64.powi(-53);
+    let shortest = (-1.0 + 2.0 * (0.5 + step)).abs();
+    let answer = YOUR_SHORTEST_CUBE_DRAW.expect("set YOUR_SHORTEST_CUBE_DRAW");
+    assert!(
+        (answer / shortest - 1.0).abs() <= 1e-3,
+        "your shortest draw {answer:e}; the grid's is {shortest:e}"
+    );
+    // So glam's plain normalize is exact on every vector the cube can give: the shortest,
+    // along an axis or a diagonal, normalise as well as normalize_robust does.
+    for v in [
+        DVec3::new(shortest, 0.0, 0.0),
+        DVec3::new(-shortest, shortest, shortest),
+    ] {
+        let (plain, robust) = (v.normalize(), normalize_robust(v).unwrap());
+        assert!(
+            max_abs((plain - robust).to_array()) <= 2.0 * f64::EPSILON,
+            "{v:?}: {plain:?} against {robust:?}"
+        );
+    }
 }
