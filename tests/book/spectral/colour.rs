@@ -7,7 +7,7 @@
 //! Stefan-Boltzmann's constants, the CIE's own formula for illuminant A, and M. Krystek
 //! (1985) for the Planckian locus. Two statistical tests (fixed seeds, level
 //! `raylemma::stats::test_alpha()`): the uniform-wavelength estimator of Y, and its
-//! planted-bug twin, the seed's plain average, which must be rejected. Every other planted
+//! planted-bug twin, the source's plain average, which must be rejected. Every other planted
 //! bug is a deterministic twin (`*_rejects_*`).
 
 use glam::{DMat3, DVec2, DVec3};
@@ -386,7 +386,7 @@ fn out_of_gamut_rejects_clamping() {
     assert!(in_srgb_triangle(p), "the clamped colour is in gamut: {p}");
 }
 
-/// The seed converts to colour at every surface (in the BSDF) and multiplies colours
+/// The source notes convert to colour at every surface (in the BSDF) and multiply colours
 /// along the path. Colour matching is a linear functional of the *final* spectrum: the
 /// colour of a product of spectra is not the product of their colours. Two green filters
 /// with disjoint pass bands (500-520 nm and 540-560 nm) in series pass nothing; the product
@@ -702,10 +702,10 @@ fn wyman_fit_rejects_swapped_widths() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Monte Carlo colour: what the seed does.
+// Monte Carlo colour: what the source notes do.
 
 /// Estimates of the Y of D65 (as `xyz` normalises it) by uniform wavelengths: each sample is S(λ) ȳ(λ) / (p(λ) ∫ȳ) with p = 1/(830 − 360). `seed_average` drops
-/// the 1/p and the 1/∫ȳ and averages S(λ) ȳ(λ) as the spectral-rendering seed does.
+/// the 1/p and the 1/∫ȳ and averages S(λ) ȳ(λ) as the spectral-rendering source notes do.
 fn y_estimates(seed_average: bool, n: usize, seed: u64) -> Summary {
     let t = builtin("cie_illuminant_D65.csv");
     let mut r = rng::seeded(seed);
@@ -730,7 +730,7 @@ fn uniform_wavelength_estimate_of_y_is_unbiased() {
     assert!(p >= test_alpha(), "mean {} vs {exact}: p = {p:.2e}", s.mean);
 }
 
-/// Planted bug (the seed's "averaging their RGB contributions"): without the pdf and the
+/// Planted bug (the source's "averaging their RGB contributions"): without the pdf and the
 /// ∫ȳ normaliser the estimate is off by the factor ∫ȳ / (830 − 360) ≈ 0.23.
 #[test]
 fn uniform_wavelength_estimate_rejects_the_seed_average() {

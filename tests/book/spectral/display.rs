@@ -43,7 +43,7 @@ fn check_anchors(f: fn(f64) -> f64) -> Result<(), String> {
     Ok(())
 }
 
-/// Planted bug: the seed's exponent the wrong way round (x^2.2 instead of x^(1/2.2)).
+/// Planted bug: the source's exponent the wrong way round (x^2.2 instead of x^(1/2.2)).
 fn planted_gamma_inverted(x: f64) -> f64 {
     gamma_decode(x, 2.2)
 }
@@ -100,7 +100,7 @@ fn published_anchor_values() {
     // 18 % grey encodes to 0.4614 (before rounding).
     let v = srgb_encode(0.18);
     assert!((v - 0.46135).abs() <= 1e-4, "0.18 encodes to {v}");
-    // The seed's curve: 0.5^(1/2.2) = 0.7297 → 186, two codes darker than sRGB.
+    // The source's curve: 0.5^(1/2.2) = 0.7297 → 186, two codes darker than sRGB.
     assert_eq!(gamma8(0.5, 2.2), 186);
 }
 
@@ -108,7 +108,7 @@ fn published_anchor_values() {
 fn planted_gamma_applied_the_wrong_way_is_rejected() {
     let e = check_anchors(planted_gamma_inverted).unwrap_err();
     assert!(e.contains("0.5 gives code 55"), "{e}");
-    // The seed's own curve fails the sRGB anchors too, but only by 2 codes at 0.5.
+    // The source's own curve fails the sRGB anchors too, but only by 2 codes at 0.5.
     assert!(check_anchors(gamma22).is_err());
 }
 
@@ -261,7 +261,7 @@ fn luminance_weights_match_the_srgb_primaries() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Over-bright colours: the seed's claims about clipping and desaturation.
+// Over-bright colours: the source's claims about clipping and desaturation.
 
 /// A saturated orange, over-exposed by `k`.
 fn orange(k: f64) -> DVec3 {
@@ -295,7 +295,7 @@ fn seed_desaturation_keeps_the_xy_hue() {
 #[test]
 fn seed_desaturation_does_not_keep_luminance() {
     // Blue at twice full scale has luminance 2 × 0.0722 = 0.144, displayable without any
-    // clipping of luminance; the seed's mix with white shows it at Y = 1 − 0.9278/2 = 0.536
+    // clipping of luminance; the source's mix with white shows it at Y = 1 − 0.9278/2 = 0.536
     // (from the formula c/m² + 1 − 1/m with m = 2: (0.5, 0.5, 1)), 3.7 times too bright.
     let blue = DVec3::new(0.0, 0.0, 2.0);
     let seed = desaturate_seed(blue);

@@ -491,7 +491,7 @@ fn hero_balance_is_unbiased() {
 /// Single wavelengths: uniform on D65 and visible on the blackbody (statistical tests 6, 7);
 /// hero lanes on the low-pressure sodium lamp, whose light is one line at 589 nm
 /// (statistical test 8: the hardest case, relative standard deviation ≈ 3 per path).
-/// Planted bugs, one per estimator, on the same samples: the uniform density of the seed's
+/// Planted bugs, one per estimator, on the same samples: the uniform density of the source's
 /// 380–780 nm (`1/400`) claimed for wavelengths uniform on 360–830 nm; the uniform weight
 /// `1/470` on a wavelength drawn from the visible pdf; and the same uniform weight on the
 /// hero lanes that meet the sodium line.
@@ -826,12 +826,12 @@ fn rough_dispersion_wilkie_weights_beat_termination_and_the_hero_pdf() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The seed's band.
+// The source's band.
 
-/// The seed's estimator converges to `∫ w f` with the weight [`seed_band_weight`], not to
+/// The source's estimator converges to `∫ w f` with the weight [`seed_band_weight`], not to
 /// `∫ f`. Read with the range 400–700 nm, its Z of D65 is measurably low: rejected against
 /// the exact Z, accepted against `∫ w f` (statistical test 11: this checks the derivation
-/// of what the seed computes). Quadrature gives the bias for every reading
+/// of what the source's band computes). Quadrature gives the bias for every reading
 /// (`figures/wavelength_seed_bias.md`).
 #[test]
 fn seed_band_is_biased() {
@@ -854,7 +854,7 @@ fn seed_band_is_biased() {
     assert_rejected("seed band against the exact Z", &s, exact);
 }
 
-/// The seed claims its band "decreases noise". Its lanes lie within 15 nm of each other,
+/// The source notes claim their band "decreases noise". Its lanes lie within 15 nm of each other,
 /// so they see almost the same integrand: per path, the variance of Y of D65 is within a
 /// factor 2 of one uniform wavelength's, while hero lanes spread over the range cut it by
 /// more than 20 (both measured on 200 000 paths; the figure tables give the numbers).
@@ -939,7 +939,7 @@ fn uniform_pdf_is_normalised_and_termination_is_reported() {
     assert!(Wavelengths::single(500.0, 1.0 / RANGE).is_terminated());
 }
 
-/// The seed band's weight has the shape its derivation gives: lane `j` covers
+/// The band's weight has the shape its derivation gives: lane `j` covers
 /// `[lo + 5j, hi + 5j]`, so `w` steps up by `1/N` at 380, 385, 390, 395 nm, is 1 up to
 /// 780 nm, and steps down by `1/N` after 780, 785, 790, 795 nm (found by mutation
 /// testing: the bias t-test alone cannot tell lanes 5 nm apart from lanes 1 nm apart).
