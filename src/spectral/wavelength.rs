@@ -109,7 +109,7 @@ impl Wavelengths {
         if self.is_terminated() {
             return;
         }
-        if !(path_pdf[0] > 0.0) {
+        if path_pdf[0].is_nan() || path_pdf[0] <= 0.0 {
             self.pdf = [f64::NAN; N];
             return;
         }

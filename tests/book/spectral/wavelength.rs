@@ -245,8 +245,11 @@ fn wavelength_space_offset_is_nearly_uniform() {
     assert!(spread > 17.0, "the visible pdf varies by {spread}");
 }
 
+/// A named spectrum.
+type Named = (&'static str, Box<dyn Fn(f64) -> f64>);
+
 /// The spectra of the efficiency table (`figures/wavelength_efficiency.md`).
-fn efficiency_spectra() -> Vec<(&'static str, Box<dyn Fn(f64) -> f64>)> {
+fn efficiency_spectra() -> Vec<Named> {
     let table = |file: &'static str| {
         let t = builtin(file);
         Box::new(move |nm: f64| t.eval(nm)) as Box<dyn Fn(f64) -> f64>
@@ -781,6 +784,9 @@ fn rough_dispersion_wilkie_weights_are_unbiased() {
 fn rough_dispersion_wilkie_weights_beat_termination_and_the_hero_pdf() {
     let d = d65();
     let n = 200_000;
+    // The spread of the refraction angles, about 0.7° (the chapter's figure).
+    let spread = dispersion_spread().to_degrees();
+    assert!((0.65..=0.75).contains(&spread), "spread {spread}°");
     for ratio in [0.01, 0.1, 0.3, 10.0] {
         let sigma = ratio * dispersion_spread();
         let exact = rough_exact(sigma, &d);
@@ -1055,8 +1061,8 @@ fn exercise_2_stratified_hero() {
             means.push(image.iter().sum::<f64>() / 64.0);
         }
         (
-            Summary::of(pixels.into_iter()).variance(),
-            Summary::of(means.into_iter()).variance(),
+            Summary::of(pixels).variance(),
+            Summary::of(means).variance(),
         )
     };
     let mut gains = Vec::new();
