@@ -188,6 +188,22 @@ pub fn colour_proposal(spectrum: &Table) -> Table {
 }
 // ANCHOR_END: product
 
+/// A proposal for the lamp's full colour: the table of
+/// `L(λ) (x̄/X + ȳ/Y + z̄/Z)(λ)` at every whole nanometre of 380-830 nm, linear in between,
+/// with `X, Y, Z = ∫L x̄, ∫L ȳ, ∫L z̄`: the equal mixture of the three channels' own proposals
+/// `L x̄ / X`, `L ȳ / Y`, `L z̄ / Z`, so that no channel is starved. Positive wherever
+/// [`colour_proposal`] is, so [`xyz_estimate`] stays unbiased with it. (Not yet in the
+/// chapter's gain table.)
+pub fn balanced_proposal(spectrum: &Table) -> Table {
+    let c = cie::xyz(|l| spectrum.eval(l));
+    let nm = image_wavelengths();
+    let values = nm
+        .iter()
+        .map(|&l| (spectrum.eval(l) * cie::cmf(l) / c).element_sum())
+        .collect();
+    Table::new(nm, values).unwrap_or_else(|e| panic!("products of valid tables: {e}"))
+}
+
 /// The uniform proposal the gains are measured against: `λ = 380 + 450 u` nm, pdf
 /// `1/450` per nm, over the image range.
 pub fn uniform_wavelength(u: f64) -> WavelengthSample {

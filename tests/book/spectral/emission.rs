@@ -508,6 +508,25 @@ fn colour_proposal_improves_only_luminance_everywhere() {
     }
 }
 
+/// The channel-balanced proposal `L (x̄/X + ȳ/Y + z̄/Z)` gains over uniform sampling on every
+/// channel of every lamp (by quadrature), where the colour proposal loses on Z for the warm
+/// lamps; and it is positive wherever the integrand is.
+#[test]
+fn balanced_proposal_gains_on_every_channel() {
+    for l in lamps() {
+        let b = sampler(&balanced_proposal(&l.spectrum));
+        let gain = predicted_variance(&l.spectrum, |_| 1.0 / 450.0)
+            / predicted_variance(&l.spectrum, |nm| b.pdf(nm));
+        eprintln!("{}: gains with the balanced proposal {gain}", l.name);
+        assert!(gain.min_element() > 1.0, "{}: {gain}", l.name);
+        for i in 0..45_000 {
+            let nm = 380.0 + (f64::from(i) + 0.5) * 0.01;
+            let f = l.spectrum.eval(nm) * cie::cmf(nm).element_sum();
+            assert!(f == 0.0 || b.pdf(nm) > 0.0, "{} at {nm}: f = {f}", l.name);
+        }
+    }
+}
+
 /// The colour proposal is positive wherever a lamp's `L (x̄ + ȳ + z̄)` is (0.01 nm
 /// grid): the condition for the estimator to stay unbiased with it.
 #[test]
