@@ -479,7 +479,8 @@ fn variance_gain_over_uniform_sampling() {
 /// it beats `p ∝ L` for every lamp; on X it loses to `p ∝ L` for exactly the two narrowest
 /// lamps (amber LED, low-pressure sodium); on Z it is still worse than uniform sampling for
 /// the incandescent and high-pressure sodium lamps, whose blue is a small share of their
-/// `X + Y + Z`. Only Y improves everywhere (`figures/emission_gain.md` has the values).
+/// `X + Y + Z`. Only Y improves everywhere (`figures/emission_gain.md` has the values), and
+/// for Y alone `L ȳ` does better still.
 #[test]
 fn colour_proposal_improves_only_luminance_everywhere() {
     for l in lamps() {
@@ -505,6 +506,15 @@ fn colour_proposal_improves_only_luminance_everywhere() {
         );
         let warm = l.name.starts_with("incandescent") || l.name.starts_with("high-pressure");
         assert_eq!(g_colour.z < 1.0, warm, "{}: Z gain {}", l.name, g_colour.z);
+        // For luminance alone, L ȳ (tabulated the same way) does better still.
+        let nm = image_wavelengths();
+        let values = nm
+            .iter()
+            .map(|&x| l.spectrum.eval(x) * cie::cmf(x).y)
+            .collect();
+        let luminance = sampler(&Table::new(nm, values).unwrap());
+        let g_lum = uniform / predicted_variance(&l.spectrum, |nm| luminance.pdf(nm));
+        assert!(g_lum.y > g_colour.y, "{}: Y with L ȳ {g_lum}", l.name);
     }
 }
 
