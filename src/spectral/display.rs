@@ -1,5 +1,5 @@
 //! From linear sRGB to the bytes of a PNG: exposure, over-bright and out-of-gamut colours,
-//! the transfer function (gamma 2.2 of the seed and the exact sRGB curve), 8-bit
+//! the transfer function (gamma 2.2 of the source notes and the exact sRGB curve), 8-bit
 //! quantisation and PNG writing. Chapter: *From spectrum to display*
 //! (`chapters/spectral/display.md`).
 //!
@@ -18,8 +18,8 @@ use crate::output::{self, FileError};
 // Transfer functions.
 
 // ANCHOR: gamma
-/// The seed's display encoding: a display shows `L_o = V^γ`, so the value to store for a
-/// linear intensity `x` is `V = x^(1/γ)` (γ = 2.2 in the seed). Negative and NaN inputs
+/// The source's display encoding: a display shows `L_o = V^γ`, so the value to store for a
+/// linear intensity `x` is `V = x^(1/γ)` (γ = 2.2 in the source notes). Negative and NaN inputs
 /// give 0; values above 1 are not clipped here (see [`quantise`]).
 pub fn gamma_encode(x: f64, gamma: f64) -> f64 {
     if x > 0.0 { x.powf(1.0 / gamma) } else { 0.0 }
@@ -162,8 +162,8 @@ pub fn clip(rgb: DVec3) -> DVec3 {
 // ANCHOR_END: clip
 
 // ANCHOR: desaturate_seed
-/// The seed's desaturation: "interpolate between the computed radiance and pure white using
-/// the peak as the interpolating variable". The seed gives no formula; this is the reading
+/// The source's desaturation: "interpolate between the computed radiance and pure white using
+/// the peak as the interpolating variable". The source gives no formula; this is the reading
 /// that stays in range. Negative and NaN components count as 0. With the peak `m = max(r, g, b) > 1`, the colour scaled to peak 1,
 /// `c / m`, is mixed with white `(1, 1, 1)` with the weight `t = 1 − 1/m` of white:
 /// `(1 − t) c / m + t = c / m² + 1 − 1/m`. Colours with `m ≤ 1` are unchanged. The peak of

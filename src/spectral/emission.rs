@@ -39,7 +39,8 @@ pub const AMBER_WIDTH_NM: f64 = 18.0;
 ///
 /// `S(λ) = (g + 2 g⁵) / 3`, `g = exp(−((λ − λ₀) / Δλ₀.₅)²)`,
 ///
-/// a Gaussian with flattened shoulders, peak 1 at `λ₀` (Y. Ohno, "Spectral design
+/// a narrow Gaussian core (`g⁵`) on a broad Gaussian base (`g`): a sharper top and heavier
+/// skirts than a Gaussian of the same width, peak 1 at `λ₀` (Y. Ohno, "Spectral design
 /// considerations for white LED color rendering", *Optical Engineering* 44(11), 111302,
 /// 2005). `λ₀ = 592 nm` and `Δλ₀.₅ = 18 nm` are typical of an AlInGaP amber LED.
 pub fn amber_led(nm: f64) -> f64 {
@@ -67,7 +68,7 @@ pub struct Lamp {
     pub spectrum: Table,
 }
 
-/// The five lamps of the chapter, in the seed's order: the amber LED (Ohno's model), and
+/// The five lamps of the chapter, in the source's order: the amber LED (Ohno's model), and
 /// the incandescent, cool white fluorescent, low-pressure sodium and high-pressure sodium
 /// lamps measured by the NIST CQS data set (`data/lamp_*.csv`, 380-780 nm at 5 nm).
 pub fn lamps() -> Vec<Lamp> {
@@ -187,6 +188,22 @@ pub fn colour_proposal(spectrum: &Table) -> Table {
 }
 // ANCHOR_END: product
 
+/// A proposal for the lamp's full colour: the table of
+/// `L(λ) (x̄/X + ȳ/Y + z̄/Z)(λ)` at every whole nanometre of 380-830 nm, linear in between,
+/// with `X, Y, Z = ∫L x̄, ∫L ȳ, ∫L z̄`: the equal mixture of the three channels' own proposals
+/// `L x̄ / X`, `L ȳ / Y`, `L z̄ / Z`, so that no channel is starved. Positive wherever
+/// [`colour_proposal`] is, so [`xyz_estimate`] stays unbiased with it. (Not yet in the
+/// chapter's gain table.)
+pub fn balanced_proposal(spectrum: &Table) -> Table {
+    let c = cie::xyz(|l| spectrum.eval(l));
+    let nm = image_wavelengths();
+    let values = nm
+        .iter()
+        .map(|&l| (spectrum.eval(l) * cie::cmf(l) / c).element_sum())
+        .collect();
+    Table::new(nm, values).unwrap_or_else(|e| panic!("products of valid tables: {e}"))
+}
+
 /// The uniform proposal the gains are measured against: `λ = 380 + 450 u` nm, pdf
 /// `1/450` per nm, over the image range.
 pub fn uniform_wavelength(u: f64) -> WavelengthSample {
@@ -206,7 +223,7 @@ pub const IMAGE_FIRST_NM: f64 = 380.0;
 pub const IMAGE_LAST_NM: f64 = 830.0;
 /// Columns of a spectrum image: one per whole nanometre, 380..=830.
 pub const IMAGE_WIDTH: u32 = 451;
-/// Height of the images [`write_image`] draws (the seed's drawings are 256 tall).
+/// Height of the images [`write_image`] draws (the source's drawings are 256 tall).
 pub const IMAGE_HEIGHT: u32 = 256;
 /// A pixel is dark when its luma (Rec. 601 weights, 0-255) is below this.
 pub const DARK_BELOW: u8 = 128;

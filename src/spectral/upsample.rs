@@ -4,7 +4,8 @@
 //! (`chapters/spectral/upsample.md`).
 //!
 //! A reflectance is `r(λ) = S(c₀ t² + c₁ t + c₂)` with `t = (λ − 360) / (830 − 360)` and the
-//! algebraic sigmoid `S(x) = 1/2 + x / (2 √(1 + x²))`, which stays strictly inside (0, 1).
+//! algebraic sigmoid `S(x) = 1/2 + x / (2 √(1 + x²))`, which stays strictly inside (0, 1)
+//! mathematically (in floating point it rounds to 0 or 1 for huge `|x|`).
 //! The three coefficients are found per colour by Levenberg-Marquardt on the CIE 1976 colour
 //! difference ΔE between the target colour and the colour of `r` under D65:
 //! `XYZ = ∫ r D65 (x̄, ȳ, z̄) dλ / ∫ D65 ȳ dλ`.
@@ -19,8 +20,13 @@ use super::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
 // ANCHOR: sigmoid
 /// The algebraic sigmoid `S(x) = 1/2 + x / (2 √(1 + x²))`: from 0 at −∞ to 1 at +∞, never
-/// reaching either. `hypot` keeps `√(1 + x²)` finite for huge `x`.
+/// reaching either mathematically; in floating point it rounds to exactly 1 (or 0) once
+/// `|x|` passes about 10⁸. `hypot` keeps `√(1 + x²)` finite for huge `x`, and the infinities,
+/// where `x / hypot` would be `∞ / ∞`, give the limits 0 and 1.
 pub fn sigmoid(x: f64) -> f64 {
+    if x.is_infinite() {
+        return if x > 0.0 { 1.0 } else { 0.0 };
+    }
     0.5 + 0.5 * x / x.hypot(1.0)
 }
 
@@ -96,7 +102,7 @@ pub struct Fit {
     pub iterations: u32,
 }
 
-/// The fit stops when ΔE is below this (a thousandth of a just-noticeable difference).
+/// The fit stops when ΔE is below this (far below a just-noticeable difference, about 1–2.3).
 pub const DELTA_E_GOAL: f64 = 1e-3;
 
 // ANCHOR: fitter
@@ -299,8 +305,6 @@ pub fn upsample(rgb: DVec3) -> Result<Fit, UpsampleError> {
     Fitter::d65().fit(rgb)
 }
 
-/// The linear sRGB of the reflectance `r` lit by D65, as the renderer would see it: the XYZ
-/// of [`Fitter::d65`] through the sRGB matrix.
 /// Linear sRGB of the reflectance `r` under D65 by [`cie::xyz`]'s quadrature (4 Gauss
 /// points per nm): the XYZ of `r · D65` divided by the Y of D65. Independent of the
 /// fitter's own 1 nm trapezoid grid, so the round-trip tests and table use it as the check.
@@ -310,6 +314,8 @@ pub fn srgb_under_d65(r: impl Fn(f64) -> f64) -> DVec3 {
     super::cie::xyz_to_linear_srgb(super::cie::xyz(|nm| r(nm) * d65.eval(nm)) / norm)
 }
 
+/// The linear sRGB of the reflectance `r` lit by D65, as the renderer would see it: the XYZ
+/// of [`Fitter::d65`] through the sRGB matrix.
 pub fn reflectance_to_srgb(r: &Reflectance) -> DVec3 {
     cie::xyz_to_linear_srgb(Fitter::d65().xyz(r))
 }

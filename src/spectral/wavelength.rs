@@ -1,6 +1,9 @@
 //! Wavelength sampling: uniform, a visible-range importance pdf, hero wavelengths (Wilkie et
-//! al. 2014) in two forms, the termination of secondary wavelengths at a dispersive event,
-//! and the seed's "random wavelength and a small band of nearby ones" for comparison.
+//! al. 2014) rotated in sample space and in wavelength space, the termination of secondary
+//! wavelengths at a dispersive delta event, Wilkie et al.'s multiple importance sampling
+//! over which lane was the hero (for a path whose sampling depends on wavelength without
+//! being a delta), and the source notes' "random wavelength and a small band of nearby
+//! ones" for comparison.
 //! Chapter: *Wavelength sampling and hero wavelengths* (`chapters/spectral/wavelength.md`).
 //!
 //! A path carries [`N`] wavelengths ("lanes") at once. Every strategy fills a
@@ -9,7 +12,8 @@
 //! `⟨∫ f dλ⟩ = (1/N) Σ_j f(λ_j) / pdf_j`, summed over the lanes with `pdf_j > 0`,
 //!
 //! where `pdf_j` is the *weighting* density the strategy assigns to lane `j` (the lane's own
-//! density for per-lane estimators, the lanes' mean density for the balance heuristic).
+//! density for per-lane estimators, the lanes' mean density for the balance heuristic over
+//! the rotations of a wavelength-space hero).
 
 use std::sync::LazyLock;
 
@@ -17,7 +21,7 @@ use glam::DVec3;
 
 use super::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
-/// The number of wavelengths a path carries (as in pbrt-v4 and Wilkie et al. 2014).
+/// The number of wavelengths a path carries (as in pbrt-v4 and in Wilkie et al. 2014).
 pub const N: usize = 4;
 
 /// The width of the sampled range, 830 − 360 = 470 nm.
@@ -81,6 +85,40 @@ impl Wavelengths {
         self.pdf[0] = self.hero_pdf / N as f64;
     }
     // ANCHOR_END: terminate
+
+    // ANCHOR: balance_path
+    /// Wilkie et al.'s multiple importance sampling over which lane was the hero, for a path
+    /// `X̄` whose sampling depends on wavelength without being a delta (a rough dispersive
+    /// interface, a chromatic medium). `path_pdf[k]` is `p(X̄ | λ_k)`, the density with which
+    /// the path's sampling would have produced `X̄` had lane `k` been the hero: `path_pdf[0]`
+    /// is the one actually used, and the caller's throughput of lane `j` is
+    /// `f(X̄, λ_j) / p(X̄ | λ_0)`. Every live lane's weighting density is multiplied by
+    /// `(1/N) Σ_k p(X̄ | λ_k) / p(X̄ | λ_0)`, so that the estimate becomes the balance heuristic
+    /// `Σ_j f(X̄, λ_j) / (p(λ_j) Σ_k p(X̄ | λ_k))`.
+    ///
+    /// The densities are those of the whole path (products over its vertices), applied once:
+    /// the mean of products is not the product of means. Right for lanes that carry their
+    /// own density ([`hero_uniform`], Wilkie et al.'s, and [`hero_visible`]): there every
+    /// lane is equally likely to have been the hero. Not for [`hero_balance`]'s lanes, whose
+    /// weight would be `(1/N) Σ_k p(λ_k) p(X̄ | λ_k) / p(X̄ | λ_0)`. A terminated path is left
+    /// as it is (its estimator is already the hero's alone). At a delta event only the hero
+    /// has `p(X̄ | λ_k) > 0`, and the rule gives lane 0 the density `p(λ_0) / N`:
+    /// [`Wavelengths::terminate_secondary`] is its limit. A `path_pdf[0]` that is not positive
+    /// makes every density NaN, so the estimate is NaN, never a silent zero.
+    pub fn balance_path_pdfs(&mut self, path_pdf: [f64; N]) {
+        if self.is_terminated() {
+            return;
+        }
+        if path_pdf[0].is_nan() || path_pdf[0] <= 0.0 {
+            self.pdf = [f64::NAN; N];
+            return;
+        }
+        let mean = path_pdf.iter().map(|&p| p / path_pdf[0]).sum::<f64>() / N as f64;
+        for p in &mut self.pdf {
+            *p *= mean;
+        }
+    }
+    // ANCHOR_END: balance_path
 
     /// Whether the secondary lanes are terminated (all have `pdf = 0`).
     pub fn is_terminated(&self) -> bool {
@@ -226,11 +264,17 @@ pub fn hero_visible(u: f64) -> Wavelengths {
 // ANCHOR_END: hero_visible
 
 // ANCHOR: hero_balance
-/// Hero wavelengths as Wilkie et al. (2014) place them: the hero `λ_0 = P⁻¹(u)` from the
-/// visible pdf, the others rotated in *wavelength space*,
+/// Hero wavelengths rotated in *wavelength space* from a non-uniform hero: the hero
+/// `λ_0 = P⁻¹(u)` from the visible pdf, the others
 /// `λ_j = λ_min + ((λ_0 − λ_min)/R + j/N mod 1) R`, and every lane weighted by the balance
-/// heuristic over the N rotations: `f(λ_j) / Σ_k p(λ_k)`, stored as the weighting density
-/// `pdf_j = (1/N) Σ_k p(λ_k)`.
+/// heuristic over the N rotations of `p`: `f(λ_j) / Σ_k p(λ_k)`, stored as the weighting
+/// density `pdf_j = (1/N) Σ_k p(λ_k)`.
+///
+/// This is not Wilkie et al.'s method: their hero is uniform (then this is [`hero_uniform`]),
+/// and their balance heuristic is over the wavelength-dependent *path* densities
+/// ([`Wavelengths::balance_path_pdfs`]). Here the lanes are always an equally spaced rule whose
+/// offset has the folded density `R Σ_k p(λ_k)`, within 7 % of uniform for the visible pdf:
+/// [`hero_uniform`] with slightly reshuffled weights.
 pub fn hero_balance(u: f64) -> Wavelengths {
     let (hero, hero_pdf) = sample_visible_pdf(u);
     let s = (hero - LAMBDA_MIN) / RANGE;
@@ -251,21 +295,21 @@ pub fn hero_balance(u: f64) -> Wavelengths {
 // ANCHOR_END: hero_balance
 
 // ANCHOR: seed_band
-/// The seed's strategy (project page 003, `sample_lambda`): "a random wavelength within
-/// the visible range and then a small band of nearby wavelengths", the contributions
+/// The source notes' strategy (project page 003, `sample_lambda`): "a random wavelength
+/// within the visible range and then a small band of nearby wavelengths", the contributions
 /// averaged. `lo`, `hi`: the range the random wavelength is drawn from; `spacing`: the
-/// distance between the band's wavelengths. The seed gives neither number.
+/// distance between the band's wavelengths. The source gives neither number.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SeedBand {
-    /// Start of the seed's "visible range", nm.
+    /// Start of the source's "visible range", nm.
     pub lo: f64,
-    /// End of the seed's "visible range", nm.
+    /// End of the source's "visible range", nm.
     pub hi: f64,
     /// Spacing of the band, nm.
     pub spacing: f64,
 }
 
-/// The reading of the seed used in the chapter: the CIE's conventional visible range
+/// The reading of the source notes used in the chapter: the CIE's conventional visible range
 /// 380–780 nm, and a band of 5 nm steps.
 pub const SEED_BAND: SeedBand = SeedBand {
     lo: 380.0,
@@ -273,7 +317,7 @@ pub const SEED_BAND: SeedBand = SeedBand {
     spacing: 5.0,
 };
 
-/// The seed's lanes: `λ_0 = lo + u (hi − lo)` and `λ_j = λ_0 + j · spacing`, each weighted
+/// The source's lanes: `λ_0 = lo + u (hi − lo)` and `λ_j = λ_0 + j · spacing`, each weighted
 /// by the density of the random wavelength, `1 / (hi − lo)`, and averaged.
 pub fn seed_band(u: f64, band: &SeedBand) -> Wavelengths {
     let hero = band.lo + u * (band.hi - band.lo);
@@ -285,10 +329,12 @@ pub fn seed_band(u: f64, band: &SeedBand) -> Wavelengths {
     }
 }
 
-/// What the seed's estimator converges to: lane `j` is uniform on
+/// What the source's estimator converges to: lane `j` is uniform on
 /// `[lo + j·spacing, hi + j·spacing]`, so the average over lanes integrates `f` with the
 /// weight `w(λ) = (1/N) · #{j : lo + j·spacing ≤ λ ≤ hi + j·spacing}` instead of 1 on
-/// 360–830 nm: 0 below `lo`, a ramp up over `(N−1)·spacing`, 1, a ramp down past `hi`.
+/// 360–830 nm: a staircase, 0 below `lo`, up by `1/N` at each of `lo + j·spacing`
+/// (`j = 0 … N−1`), 1 from `lo + (N−1)·spacing` to `hi`, and down by `1/N` past each of
+/// `hi + j·spacing`.
 pub fn seed_band_weight(nm: f64, band: &SeedBand) -> f64 {
     (0..N)
         .filter(|&j| {
@@ -311,9 +357,10 @@ pub enum Strategy {
     HeroUniform,
     /// N hero lanes from the visible pdf, rotated in sample space ([`hero_visible`]).
     HeroVisible,
-    /// N hero lanes rotated in wavelength space, balance heuristic ([`hero_balance`]).
+    /// N hero lanes from the visible pdf rotated in wavelength space, balance heuristic over
+    /// the rotations ([`hero_balance`]; not Wilkie et al.'s method, whose hero is uniform).
     HeroBalance,
-    /// The seed's band ([`seed_band`] with [`SEED_BAND`]).
+    /// The source notes' band ([`seed_band`] with [`SEED_BAND`]).
     SeedBand,
 }
 
@@ -335,7 +382,7 @@ impl Strategy {
             Strategy::Visible => "visible pdf, 1 λ",
             Strategy::HeroUniform => "hero, uniform",
             Strategy::HeroVisible => "hero, visible pdf (sample space)",
-            Strategy::HeroBalance => "hero, visible pdf (Wilkie, balance)",
+            Strategy::HeroBalance => "hero, visible pdf (wavelength space, balance)",
             Strategy::SeedBand => "seed's band",
         }
     }

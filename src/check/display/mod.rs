@@ -11,7 +11,7 @@
 //! * `monotone`: non-decreasing on a fine grid of `[0, 1]`;
 //! * `clamps`: negative and NaN inputs give 0.
 //!
-//! Planted bugs that it must reject are in [`planted`], beside the seed's pure power law
+//! Planted bugs that it must reject are in [`planted`], beside the source's pure power law
 //! ([`crate::spectral::display::gamma_encode`] with `γ = 2.2`).
 
 pub mod planted;

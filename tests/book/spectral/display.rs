@@ -43,7 +43,7 @@ fn check_anchors(f: fn(f64) -> f64) -> Result<(), String> {
     Ok(())
 }
 
-/// Planted bug: the seed's exponent the wrong way round (x^2.2 instead of x^(1/2.2)).
+/// Planted bug: the source's exponent the wrong way round (x^2.2 instead of x^(1/2.2)).
 fn planted_gamma_inverted(x: f64) -> f64 {
     gamma_decode(x, 2.2)
 }
@@ -100,7 +100,7 @@ fn published_anchor_values() {
     // 18 % grey encodes to 0.4614 (before rounding).
     let v = srgb_encode(0.18);
     assert!((v - 0.46135).abs() <= 1e-4, "0.18 encodes to {v}");
-    // The seed's curve: 0.5^(1/2.2) = 0.7297 → 186, two codes darker than sRGB.
+    // The source's curve: 0.5^(1/2.2) = 0.7297 → 186, two codes darker than sRGB.
     assert_eq!(gamma8(0.5, 2.2), 186);
 }
 
@@ -108,7 +108,7 @@ fn published_anchor_values() {
 fn planted_gamma_applied_the_wrong_way_is_rejected() {
     let e = check_anchors(planted_gamma_inverted).unwrap_err();
     assert!(e.contains("0.5 gives code 55"), "{e}");
-    // The seed's own curve fails the sRGB anchors too, but only by 2 codes at 0.5.
+    // The source's own curve fails the sRGB anchors too, but only by 2 codes at 0.5.
     assert!(check_anchors(gamma22).is_err());
 }
 
@@ -242,6 +242,67 @@ fn exposure_is_in_stops() {
     );
 }
 
+/// Scaling *encoded* values by `k` is not the exposure `k`. On a pure power-law display it is
+/// exactly an exposure, but of `k^γ`: `decode(k · encode(x)) = k^2.2 x`. On sRGB the factor on
+/// the light depends on the level: within 15 % of `k^2.4` at full scale, and nearer 1 in the
+/// shadows (at linear 0.01), where the offset and the linear toe bend the curve.
+#[test]
+fn scaling_encoded_values_is_not_an_exposure() {
+    for k in [0.5_f64, 2.0] {
+        for i in 1..=100 {
+            let x = f64::from(i) / 100.0 / k.max(1.0);
+            let back = gamma_decode(k * gamma_encode(x, 2.2), 2.2);
+            assert!(
+                (back / (k.powf(2.2) * x) - 1.0).abs() <= 1e-12,
+                "power law, k = {k}, x = {x}: {back}"
+            );
+        }
+        let factor = |x: f64| srgb_decode(k * srgb_encode(x)) / x;
+        let top = if k < 1.0 { 1.0 } else { 0.4 };
+        assert!(
+            (factor(top) / k.powf(2.4) - 1.0).abs() <= 0.15,
+            "sRGB, k = {k}: factor {} at {top}, k^2.4 = {}",
+            factor(top),
+            k.powf(2.4)
+        );
+        let (low, mid) = (factor(0.01), k.powf(2.4));
+        assert!(
+            (low - 1.0).abs() < (mid - 1.0).abs() * 0.8,
+            "sRGB, k = {k}: factor {low} in the shadows against k^2.4 = {mid}"
+        );
+    }
+}
+
+/// The least-squares single exponent for sRGB: `γ` minimising `∫₀¹ (x^(1/γ) − srgb(x))² dx`
+/// (on encoded values) is about 2.22, and on decoded values (`∫₀¹ (V^γ − srgb⁻¹(V))² dV`)
+/// about 2.23: 2.2 is close, not the optimum.
+#[test]
+fn least_squares_exponent_of_srgb() {
+    let fit = |err: &dyn Fn(f64, f64) -> f64| {
+        let cost = |g: f64| {
+            (0..=20_000)
+                .map(|i| err(f64::from(i) / 20_000.0, g).powi(2))
+                .sum::<f64>()
+        };
+        let (mut lo, mut hi) = (1.8_f64, 2.6_f64);
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..100 {
+            let (a, b) = (hi - r * (hi - lo), lo + r * (hi - lo));
+            if cost(a) < cost(b) {
+                hi = b;
+            } else {
+                lo = a;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let encoded = fit(&|x, g| gamma_encode(x, g) - srgb_encode(x));
+    let decoded = fit(&|v, g| gamma_decode(v, g) - srgb_decode(v));
+    eprintln!("least-squares exponents: {encoded:.4} (encoded), {decoded:.4} (decoded)");
+    assert!((encoded - 2.216).abs() <= 0.005, "encoded: {encoded}");
+    assert!((decoded - 2.233).abs() <= 0.005, "decoded: {decoded}");
+}
+
 #[test]
 fn luminance_weights_match_the_srgb_primaries() {
     // BT.709's published Y row vs the one derived from the primaries and D65 in `cie`.
@@ -261,7 +322,7 @@ fn luminance_weights_match_the_srgb_primaries() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Over-bright colours: the seed's claims about clipping and desaturation.
+// Over-bright colours: the source's claims about clipping and desaturation.
 
 /// A saturated orange, over-exposed by `k`.
 fn orange(k: f64) -> DVec3 {
@@ -290,12 +351,17 @@ fn seed_desaturation_keeps_the_xy_hue() {
     }
     // Below the peak of 1 nothing changes.
     assert_eq!(desaturate_seed(orange(1.0)), orange(1.0));
+    // A negative component is set to 0 first, which moves the hue before the mixture: the
+    // xy hue is kept only for colours with no negative component.
+    let out_of_gamut = DVec3::new(2.0, 0.6, -0.3);
+    let shift = xy_hue_shift(out_of_gamut, desaturate_seed(out_of_gamut));
+    assert!(shift > 1.0, "a negative blue kept its hue: {shift}°");
 }
 
 #[test]
 fn seed_desaturation_does_not_keep_luminance() {
     // Blue at twice full scale has luminance 2 × 0.0722 = 0.144, displayable without any
-    // clipping of luminance; the seed's mix with white shows it at Y = 1 − 0.9278/2 = 0.536
+    // clipping of luminance; the source's mix with white shows it at Y = 1 − 0.9278/2 = 0.536
     // (from the formula c/m² + 1 − 1/m with m = 2: (0.5, 0.5, 1)), 3.7 times too bright.
     let blue = DVec3::new(0.0, 0.0, 2.0);
     let seed = desaturate_seed(blue);
@@ -410,4 +476,128 @@ fn failed_png_writes_name_the_path_and_leave_the_old_file() {
     // Zero size.
     assert!(write_png(&dir.join("z.png"), 0, 1, &[]).is_err());
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises (ignored until the student fills in the answers; each test fails until then).
+
+/// Exercise 1 of *From spectrum to display*: the names of the claims of
+/// `check::display::srgb_encode` that the source's curve `x^(1/2.2)` fails.
+const YOUR_FAILED_CLAIMS: Option<&[&str]> = None;
+/// Exercise 1: `x^(1/2.2)` minus the sRGB encoding at `x = 0.001`.
+const YOUR_GAP_AT_0_001: Option<f64> = None;
+/// Exercise 1: how many of the 256 sRGB codes a gamma-2.2 writer stores differently.
+const YOUR_CODES_THAT_DIFFER: Option<usize> = None;
+
+/// Checks exercise 1 against the checker's own verdict, the two curves at 0.001 (to 1e-4) and
+/// the exhaustive count over the codes.
+#[test]
+#[ignore = "exercise 1 of From spectrum to display: fill in the three answers, then run it"]
+fn exercise_1_the_sources_gamma() {
+    let v = raylemma::check::display::srgb_encode(
+        &|x| gamma_encode(x, 2.2),
+        &raylemma::check::Options::default(),
+    );
+    eprintln!("{v}");
+    let mut failed: Vec<&str> = v
+        .findings
+        .iter()
+        .filter(|f| !f.passed())
+        .map(|f| f.name.as_str())
+        .collect();
+    let mut yours = YOUR_FAILED_CLAIMS
+        .expect("fill in YOUR_FAILED_CLAIMS")
+        .to_vec();
+    failed.sort_unstable();
+    yours.sort_unstable();
+    assert_eq!(yours, failed, "the claims the source's curve fails");
+    let gap = gamma_encode(0.001, 2.2) - srgb_encode(0.001);
+    let answer = YOUR_GAP_AT_0_001.expect("fill in YOUR_GAP_AT_0_001");
+    assert!((answer - gap).abs() <= 1e-4, "{answer} vs {gap}");
+    let differ = (0..=255u8)
+        .filter(|&c| gamma8(srgb_decode(f64::from(c) / 255.0), 2.2) != c)
+        .count();
+    assert_eq!(YOUR_CODES_THAT_DIFFER, Some(differ));
+}
+
+/// Exercise 2 of *From spectrum to display*: `(sRGB, gamma 2.2)`, the numbers of codes
+/// `c` in 0..=255 that do not come back from decoding `c / 255` and encoding to 8 bits again.
+const YOUR_ROUND_TRIP_FAILURES: Option<(usize, usize)> = None;
+
+/// Checks exercise 2 against the exhaustive count for each curve.
+#[test]
+#[ignore = "exercise 2 of From spectrum to display: fill in YOUR_ROUND_TRIP_FAILURES, then run it"]
+fn exercise_2_round_trip_through_8_bits() {
+    let srgb = (0..=255u8)
+        .filter(|&c| srgb8(srgb_decode(f64::from(c) / 255.0)) != c)
+        .count();
+    let gamma = (0..=255u8)
+        .filter(|&c| gamma8(gamma_decode(f64::from(c) / 255.0, 2.2), 2.2) != c)
+        .count();
+    assert_eq!(YOUR_ROUND_TRIP_FAILURES, Some((srgb, gamma)));
+}
+
+/// Exercise 3 of *From spectrum to display*: a gamut rule that keeps the CIELAB hue and
+/// lightness (white = sRGB (1, 1, 1)) and reduces the chroma until the colour fits in
+/// `[0, 1]³`; white when `L* > 100`.
+fn your_lab_gamut_rule(rgb: DVec3) -> DVec3 {
+    let _ = rgb;
+    unimplemented!("exercise 3 of From spectrum to display: a CIELAB gamut rule")
+}
+
+/// Checks exercise 3 on the chapter's colours (the orange, a blue and a green, twice and four
+/// times over-exposed) and two out-of-gamut colours (a 520 nm line and a sodium yellow at
+/// Y = 0.5): the result lies in `[0, 1]³`; brighter than white gives white; otherwise `L*` is
+/// kept (to 1e-6, and so `Y`, to 1e-6), the CIELAB hue within 0.5°, and the colour is on the
+/// gamut's boundary (a component at 0 or 1, to 1e-6). It reports the xy hue shift of both
+/// rules, and asserts that the CIELAB rule moves the orange's xy hue where `fit_to_gamut` does not.
+#[test]
+#[ignore = "exercise 3 of From spectrum to display: fill in your_lab_gamut_rule, then run it"]
+fn exercise_3_cielab_gamut_rule() {
+    let white = cie::linear_srgb_to_xyz(DVec3::ONE);
+    let lab_of = |c: DVec3| lab(cie::linear_srgb_to_xyz(c), white);
+    let line = cie::xyz_to_linear_srgb(cie::cmf(520.0));
+    let sodium = cie::xyz_to_linear_srgb(cie::cmf(589.0));
+    let mut colours = vec![];
+    for k in [2.0, 4.0] {
+        colours.push(orange(k));
+        colours.push(k * DVec3::new(0.05, 0.1, 0.5));
+        colours.push(k * DVec3::new(0.1, 0.5, 0.15));
+    }
+    colours.push(line * 0.5 / luminance(line));
+    colours.push(sodium * 0.5 / luminance(sodium));
+    for c in colours {
+        let out = your_lab_gamut_rule(c);
+        assert!(
+            out.min_element() >= -1e-9 && out.max_element() <= 1.0 + 1e-9,
+            "{c} -> {out}"
+        );
+        if luminance(c) >= 1.0 {
+            assert!(
+                (out - DVec3::ONE).abs().max_element() <= 1e-9,
+                "{c} -> {out}"
+            );
+            continue;
+        }
+        let (a, b) = (lab_of(c), lab_of(out));
+        assert!((a.x - b.x).abs() <= 1e-6, "{c}: L* {} -> {}", a.x, b.x);
+        let y = |c: DVec3| cie::linear_srgb_to_xyz(c).y;
+        assert!((y(c) - y(out)).abs() <= 1e-6, "{c}: Y changed");
+        let dh = hue_difference(b.z.atan2(b.y).to_degrees(), a.z.atan2(a.y).to_degrees());
+        assert!(dh.abs() <= 0.5, "{c}: CIELAB hue moved {dh}°");
+        let boundary = out.min_element().abs().min((out.max_element() - 1.0).abs());
+        assert!(
+            boundary <= 1e-6,
+            "{c} -> {out} is not on the gamut's boundary"
+        );
+        let ours = fit_to_gamut(c);
+        eprintln!(
+            "{c}: xy hue shift, CIELAB rule {:.2}°, fit_to_gamut {:.2}°",
+            xy_hue_shift(c, out),
+            xy_hue_shift(c, ours)
+        );
+    }
+    let o = orange(2.0);
+    assert!(xy_hue_shift(o, your_lab_gamut_rule(o)) > 1.0);
+    assert!(xy_hue_shift(o, fit_to_gamut(o)) <= 1e-9);
 }

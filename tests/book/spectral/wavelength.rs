@@ -5,7 +5,7 @@
 //! seeds. The exact values come from `cie::xyz` (Gauss-Legendre quadrature, a different
 //! method from Monte Carlo), the visible pdf's constants from pbrt-v4's source. Every
 //! estimator test has planted-bug twins, run on the same samples, that must be rejected.
-//! Statistical tests in this file (correct code that must pass): 11.
+//! Statistical tests in this file (correct code that must pass): 13.
 
 use glam::DVec3;
 use raylemma::check::Options;
@@ -218,6 +218,105 @@ fn sample_space_lanes_each_have_the_pdf() {
     );
 }
 
+/// Rotating in wavelength space a hero from the visible pdf places the lanes as an equally
+/// spaced rule whose offset `s ∈ [0, 1/N)` has the folded density `R Σ_k p(λ_min + (s + k/N) R)`
+/// (per unit `s`, against `N` for `hero_uniform`'s uniform offset). The visible pdf varies by
+/// more than 17 times over the range, but the folded density stays within 7 % of uniform:
+/// between 0.93 and 1.03 of `N`.
+#[test]
+fn wavelength_space_offset_is_nearly_uniform() {
+    let m = 10_000;
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0_f64);
+    for i in 0..=m {
+        let s = f64::from(i) / f64::from(m) / N as f64;
+        let q: f64 = (0..N)
+            .map(|k| RANGE * visible_pdf(LAMBDA_MIN + (s + k as f64 / N as f64) * RANGE))
+            .sum::<f64>()
+            / N as f64;
+        lo = lo.min(q);
+        hi = hi.max(q);
+    }
+    eprintln!("folded density / uniform: {lo:.4} to {hi:.4}");
+    assert!(
+        lo >= 0.93 && hi <= 1.03,
+        "folded density from {lo} to {hi} of uniform"
+    );
+    let spread = visible_pdf(VISIBLE_C) / visible_pdf(LAMBDA_MAX);
+    assert!(spread > 17.0, "the visible pdf varies by {spread}");
+}
+
+/// A named spectrum.
+type Named = (&'static str, Box<dyn Fn(f64) -> f64>);
+
+/// The spectra of the efficiency table (`figures/wavelength_efficiency.md`).
+fn efficiency_spectra() -> Vec<Named> {
+    let table = |file: &'static str| {
+        let t = builtin(file);
+        Box::new(move |nm: f64| t.eval(nm)) as Box<dyn Fn(f64) -> f64>
+    };
+    vec![
+        ("incandescent", table("lamp_incandescent.csv")),
+        ("cool white fl.", table("lamp_cool_white_fluorescent.csv")),
+        ("LED (YAG)", table("lamp_phosphor_led_yag.csv")),
+        ("high-pr. sodium", table("lamp_high_pressure_sodium.csv")),
+        ("low-pr. sodium", table("lamp_low_pressure_sodium.csv")),
+        ("D65", table("cie_illuminant_D65.csv")),
+        ("A", table("cie_illuminant_A.csv")),
+        ("blackbody 5000 K", Box::new(blackbody)),
+    ]
+}
+
+/// The exact relative variances per path of a strategy's X, Y and Z (`Var / exact²` of each):
+/// each strategy is a deterministic function of `u`, so the variance is an integral over `u`,
+/// here by the midpoint rule on `m` points.
+fn exact_relative_variances(
+    lanes: &dyn Fn(f64) -> Wavelengths,
+    s: &dyn Fn(f64) -> f64,
+    m: u32,
+) -> DVec3 {
+    let exact = cie::xyz(s);
+    let (mut first, mut second) = (DVec3::ZERO, DVec3::ZERO);
+    for i in 0..m {
+        let e = lanes((f64::from(i) + 0.5) / f64::from(m)).xyz(s);
+        first += e;
+        second += e * e;
+    }
+    let (first, second) = (first / f64::from(m), second / f64::from(m));
+    let mean_err = ((first - exact) / exact).abs().max_element();
+    assert!(mean_err <= 1e-4, "the grid's mean is off by {mean_err:.1e}");
+    (second - first * first) / (exact * exact)
+}
+
+/// The mean over X, Y, Z of [`exact_relative_variances`]: the measure of the efficiency table.
+fn exact_relative_variance(lanes: fn(f64) -> Wavelengths, s: &dyn Fn(f64) -> f64, m: u32) -> f64 {
+    exact_relative_variances(&lanes, s, m).element_sum() / 3.0
+}
+
+/// The balance heuristic over the rotations of the visible pdf is no better than uniform hero
+/// lanes: its exact relative variance per path is larger on every spectrum of the
+/// efficiency table (its lanes are the same equally spaced rule, with weights reshuffled by a
+/// folded density within 7 % of uniform). Computed by quadrature over `u`, not measured.
+#[test]
+fn wavelength_space_balance_is_no_better_than_hero_uniform() {
+    for (name, s) in efficiency_spectra() {
+        let uniform = exact_relative_variance(hero_uniform, &s, 200_000);
+        let balance = exact_relative_variance(hero_balance, &s, 200_000);
+        let sample_space = exact_relative_variance(hero_visible, &s, 200_000);
+        eprintln!(
+            "{name}: relative variance, hero uniform {uniform:.4}, wavelength-space balance \
+             {balance:.4}, sample space {sample_space:.4}"
+        );
+        assert!(
+            balance > uniform,
+            "{name}: balance {balance} vs uniform {uniform}"
+        );
+        assert!(
+            sample_space < uniform,
+            "{name}: sample space {sample_space} vs uniform {uniform}"
+        );
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Edge cases.
 
@@ -395,7 +494,7 @@ fn hero_balance_is_unbiased() {
 /// Single wavelengths: uniform on D65 and visible on the blackbody (statistical tests 6, 7);
 /// hero lanes on the low-pressure sodium lamp, whose light is one line at 589 nm
 /// (statistical test 8: the hardest case, relative standard deviation ≈ 3 per path).
-/// Planted bugs, one per estimator, on the same samples: the uniform density of the seed's
+/// Planted bugs, one per estimator, on the same samples: the uniform density of the source's
 /// 380–780 nm (`1/400`) claimed for wavelengths uniform on 360–830 nm; the uniform weight
 /// `1/470` on a wavelength drawn from the visible pdf; and the same uniform weight on the
 /// hero lanes that meet the sodium line.
@@ -553,12 +652,192 @@ fn terminating_secondaries_stays_unbiased() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The seed's band.
+// A rough dispersive interface: Wilkie et al.'s weights over which lane was the hero.
 
-/// The seed's estimator converges to `∫ w f` with the weight [`seed_band_weight`], not to
+/// The refraction angle into N-BK7 of light arriving at 60°, radians: `asin(sin 60° / n(λ))`.
+fn refracted(nm: f64) -> f64 {
+    let n = raylemma::optics::dispersion::material(raylemma::optics::dispersion::N_BK7).index(nm);
+    (60f64.to_radians().sin() / n).asin()
+}
+
+/// The spread of the refraction angles over the range, `θ_t(830) − θ_t(360)` (about 0.7°).
+fn dispersion_spread() -> f64 {
+    refracted(LAMBDA_MAX) - refracted(LAMBDA_MIN)
+}
+
+/// The normal density of `x` with mean `m` and standard deviation `s`.
+fn gauss(x: f64, m: f64, s: f64) -> f64 {
+    (-0.5 * ((x - m) / s).powi(2)).exp() / (s * (2.0 * std::f64::consts::PI).sqrt())
+}
+
+/// What a rough dispersive vertex does with the secondary lanes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Secondaries {
+    /// Terminate them, as at a delta event (pbrt-v4 does so at every dispersive dielectric).
+    Terminate,
+    /// Keep them, each lane's throughput divided by the hero's path density.
+    HeroPathPdf,
+    /// Keep them, with Wilkie et al.'s balance heuristic over which lane was the hero.
+    Wilkie,
+    /// Planted bug: each lane divided by its *own* path density, though the path was drawn
+    /// with the hero's.
+    OwnPathPdf,
+}
+
+// ANCHOR: rough
+/// A toy rough dispersive interface. Light arriving at 60° refracts into N-BK7 at
+/// `θ_t(λ)`, and the rough surface spreads it into a normal lobe of directions
+/// `g(θ; θ_t(λ), σ)`. The path draws `θ = θ_t(λ_0) + σ z` from the hero's lobe, `z` standard
+/// normal; the light (D65) is seen in the directions `W` refracted for 450–650 nm. So
+/// `f(θ, λ) = D65(λ) g(θ; θ_t(λ), σ) 1[θ ∈ W]`, and each lane's throughput is
+/// `f(θ, λ_j) / g(θ; θ_t(λ_0), σ)`. Returns the estimate of `X + Y + Z`.
+fn rough_path(mut w: Wavelengths, z: f64, sigma: f64, how: Secondaries, d65: &Table) -> f64 {
+    let theta = refracted(w.lambda[0]) + sigma * z;
+    let seen = (refracted(450.0)..=refracted(650.0)).contains(&theta);
+    // p(θ | λ_k) for every lane: the lobe the path would have been drawn from had lane k
+    // been the hero.
+    let path_pdf = w.lambda.map(|l| gauss(theta, refracted(l), sigma));
+    match how {
+        Secondaries::Terminate => w.terminate_secondary(),
+        Secondaries::Wilkie => w.balance_path_pdfs(path_pdf),
+        Secondaries::HeroPathPdf | Secondaries::OwnPathPdf => {}
+    }
+    let lobe = |l: f64| match how {
+        Secondaries::OwnPathPdf => 1.0,
+        _ => gauss(theta, refracted(l), sigma) / path_pdf[0],
+    };
+    sum(w.xyz(|l| if seen { d65.eval(l) * lobe(l) } else { 0.0 }))
+}
+// ANCHOR_END: rough
+
+/// The exact pixel of the toy, by quadrature over λ of D65 times the lobe's mass in `W`.
+fn rough_exact(sigma: f64, d65: &Table) -> f64 {
+    use statrs::function::erf::erfc;
+    let phi = |x: f64| 0.5 * erfc(-x / std::f64::consts::SQRT_2);
+    let (a, b) = (refracted(450.0), refracted(650.0));
+    sum(cie::xyz(|l| {
+        let t = refracted(l);
+        d65.eval(l) * (phi((b - t) / sigma) - phi((a - t) / sigma))
+    }))
+}
+
+/// `n` estimates of the toy, the same random numbers for every choice (`u` for the lanes,
+/// `z` for the direction).
+fn rough_estimates(
+    n: usize,
+    seed: u64,
+    lanes: fn(f64) -> Wavelengths,
+    sigma: f64,
+    how: Secondaries,
+    d65: &Table,
+) -> Summary {
+    let mut r = rng::seeded(seed);
+    Summary::of((0..n).map(|_| {
+        let u = rng::uniform(&mut r, 0.0, 1.0);
+        let z = raylemma::stats::null::standard_normal(&mut r);
+        rough_path(lanes(u), z, sigma, how, d65)
+    }))
+}
+
+/// Wilkie et al.'s weights keep the estimate unbiased on Wilkie's own uniform lanes
+/// (statistical test 12) and on sample-space lanes (statistical test 13), with a lobe 0.3
+/// times the spread of the refraction angles. Planted bugs: each lane divided by its own
+/// path density, and the same weights on wavelength-space balance lanes (`hero_balance`,
+/// whose techniques have the densities `p(λ_k)`, not one common density).
+#[test]
+fn rough_dispersion_wilkie_weights_are_unbiased() {
+    let d = d65();
+    let sigma = 0.3 * dispersion_spread();
+    let exact = rough_exact(sigma, &d);
+    let n = 200_000;
+    assert_unbiased(
+        "rough interface, uniform lanes, Wilkie",
+        &rough_estimates(n, 13, hero_uniform, sigma, Secondaries::Wilkie, &d),
+        exact,
+    );
+    assert_unbiased(
+        "rough interface, sample-space lanes, Wilkie",
+        &rough_estimates(n, 14, hero_visible, sigma, Secondaries::Wilkie, &d),
+        exact,
+    );
+    assert_rejected(
+        "own path pdf per lane",
+        &rough_estimates(n, 13, hero_uniform, sigma, Secondaries::OwnPathPdf, &d),
+        exact,
+    );
+    assert_rejected(
+        "Wilkie's weights on wavelength-space balance lanes",
+        &rough_estimates(n, 15, hero_balance, sigma, Secondaries::Wilkie, &d),
+        exact,
+    );
+}
+
+/// Where Wilkie et al.'s multiple importance sampling helps. With the lobe much narrower
+/// than the spread of the refraction angles (σ = 0.01 of it) the other lanes' lobes miss the
+/// path and the weights give what termination gives (variance within 2 %); with a lobe ten
+/// times wider than the spread the lanes' lobes overlap, the weights tend to 1/N, and
+/// Wilkie's weights and the hero's path density agree (within 2 %). In between (σ = 0.1 and
+/// 0.3 of the spread) Wilkie's variance is below both: termination wastes the secondaries,
+/// and the hero's density for every lane makes fireflies where a lane's lobe is far from the
+/// hero's. The same random numbers for every choice; uniform lanes, as in Wilkie et al.
+#[test]
+fn rough_dispersion_wilkie_weights_beat_termination_and_the_hero_pdf() {
+    let d = d65();
+    let n = 200_000;
+    // The spread of the refraction angles, about 0.7° (the chapter's figure).
+    let spread = dispersion_spread().to_degrees();
+    assert!((0.65..=0.75).contains(&spread), "spread {spread}°");
+    for ratio in [0.01, 0.1, 0.3, 10.0] {
+        let sigma = ratio * dispersion_spread();
+        let exact = rough_exact(sigma, &d);
+        let var =
+            |how| rough_estimates(n, 16, hero_uniform, sigma, how, &d).variance() / (exact * exact);
+        let (terminate, hero_pdf, wilkie) = (
+            var(Secondaries::Terminate),
+            var(Secondaries::HeroPathPdf),
+            var(Secondaries::Wilkie),
+        );
+        eprintln!(
+            "σ = {ratio} × spread: relative variance, terminate {terminate:.4}, \
+             hero pdf {hero_pdf:.4}, Wilkie {wilkie:.4}"
+        );
+        if ratio < 0.05 {
+            assert!(
+                (wilkie / terminate - 1.0).abs() <= 0.02,
+                "{wilkie} vs {terminate}"
+            );
+        } else if ratio > 5.0 {
+            assert!(
+                (wilkie / hero_pdf - 1.0).abs() <= 0.02,
+                "{wilkie} vs {hero_pdf}"
+            );
+        } else {
+            assert!(
+                wilkie < 0.9 * terminate && wilkie < 0.9 * hero_pdf,
+                "σ = {ratio} × spread: Wilkie {wilkie}, terminate {terminate}, hero pdf {hero_pdf}"
+            );
+        }
+    }
+    // The delta limit: at a smooth interface only the hero's lobe contains the path, and
+    // Wilkie's weights give lane 0 what termination gives it, `p(λ_0) / N`.
+    let mut w = hero_visible(0.3);
+    let mut t = w;
+    w.balance_path_pdfs([2.0, 0.0, 0.0, 0.0]);
+    t.terminate_secondary();
+    assert!((w.pdf[0] / t.pdf[0] - 1.0).abs() <= 1e-15, "{w:?} vs {t:?}");
+    // A path density that is not positive for the hero is a broken sampler: NaN, not 0.
+    let mut w = hero_uniform(0.3);
+    w.balance_path_pdfs([0.0, 1.0, 1.0, 1.0]);
+    assert!(w.estimate(|_| DVec3::ONE).is_nan());
+}
+
+// ---------------------------------------------------------------------------------------
+// The source's band.
+
+/// The source's estimator converges to `∫ w f` with the weight [`seed_band_weight`], not to
 /// `∫ f`. Read with the range 400–700 nm, its Z of D65 is measurably low: rejected against
 /// the exact Z, accepted against `∫ w f` (statistical test 11: this checks the derivation
-/// of what the seed computes). Quadrature gives the bias for every reading
+/// of what the source's band computes). Quadrature gives the bias for every reading
 /// (`figures/wavelength_seed_bias.md`).
 #[test]
 fn seed_band_is_biased() {
@@ -581,7 +860,7 @@ fn seed_band_is_biased() {
     assert_rejected("seed band against the exact Z", &s, exact);
 }
 
-/// The seed claims its band "decreases noise". Its lanes lie within 15 nm of each other,
+/// The source notes claim their band "decreases noise". Its lanes lie within 15 nm of each other,
 /// so they see almost the same integrand: per path, the variance of Y of D65 is within a
 /// factor 2 of one uniform wavelength's, while hero lanes spread over the range cut it by
 /// more than 20 (both measured on 200 000 paths; the figure tables give the numbers).
@@ -666,7 +945,7 @@ fn uniform_pdf_is_normalised_and_termination_is_reported() {
     assert!(Wavelengths::single(500.0, 1.0 / RANGE).is_terminated());
 }
 
-/// The seed band's weight has the shape its derivation gives: lane `j` covers
+/// The band's weight has the shape its derivation gives: lane `j` covers
 /// `[lo + 5j, hi + 5j]`, so `w` steps up by `1/N` at 380, 385, 390, 395 nm, is 1 up to
 /// 780 nm, and steps down by `1/N` after 780, 785, 790, 795 nm (found by mutation
 /// testing: the bias t-test alone cannot tell lanes 5 nm apart from lanes 1 nm apart).
@@ -688,4 +967,187 @@ fn seed_band_weight_ramps_by_quarters() {
     for (nm, want) in expected {
         assert_eq!(w(nm), want, "w({nm})");
     }
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises (ignored until the student fills in the scaffolds; each test fails on the stub).
+
+/// Exercise 1 of *Wavelength sampling*: hero lanes rotated in sample space through the CDF of
+/// the lamp's spectrum times ȳ (tabulate `S ȳ` at every whole nanometre of 360–830 nm and draw
+/// from it with the piecewise-linear sampler of *Tabulated distributions*,
+/// `raylemma::spectral::emission::EmissionSampler`); every lane weighted by its own density.
+fn your_light_lanes(spectrum: &Table) -> Box<dyn Fn(f64) -> Wavelengths> {
+    let _ = spectrum;
+    unimplemented!("exercise 1 of Wavelength sampling: hero lanes through the CDF of S ȳ")
+}
+
+/// Checks exercise 1: sampling `S ȳ` makes the low-pressure sodium lamp almost noise-free
+/// (exact relative variance per path of its XYZ below 1e-3, against about 8.7 for the
+/// visible pdf), and makes the Z of the incandescent lamp worse than the visible pdf does
+/// (`S ȳ` starves the blue, where z̄ lives). Exact variances, by quadrature over `u`.
+#[test]
+#[ignore = "exercise 1 of Wavelength sampling: fill in your_light_lanes, then run it"]
+fn exercise_1_light_sampling_lanes() {
+    let lps = builtin("lamp_low_pressure_sodium.csv");
+    let lanes = your_light_lanes(&lps);
+    let v = exact_relative_variances(&*lanes, &|nm| lps.eval(nm), 200_000);
+    eprintln!("low-pressure sodium, light sampling: relative variances {v}");
+    assert!(v.element_sum() / 3.0 < 1e-3, "low-pressure sodium: {v}");
+    let inc = builtin("lamp_incandescent.csv");
+    let lanes = your_light_lanes(&inc);
+    let v = exact_relative_variances(&*lanes, &|nm| inc.eval(nm), 200_000);
+    let visible = exact_relative_variances(&hero_visible, &|nm| inc.eval(nm), 200_000);
+    eprintln!("incandescent: light sampling {v}, visible pdf {visible}");
+    assert!(
+        v.z > visible.z,
+        "incandescent Z: light sampling {} vs visible {}",
+        v.z,
+        visible.z
+    );
+    assert!(
+        v.y < visible.y,
+        "incandescent Y: light sampling {} vs visible {}",
+        v.y,
+        visible.y
+    );
+}
+
+/// Exercise 2 of *Wavelength sampling*: `n` values of `u` stratified over `[0, 1)`, one
+/// uniform point in each of the strata `[i/n, (i + 1)/n)`, in a random order (a shuffled
+/// grid), so that the pixels of an image each get one.
+fn your_shuffled_grid(n: usize, r: &mut rng::Rng) -> Vec<f64> {
+    let _ = (n, r);
+    unimplemented!("exercise 2 of Wavelength sampling: a shuffled stratified grid of u")
+}
+
+/// Checks exercise 2 on a flat field of 64 pixels lit by D65, 4000 images per case: the
+/// grid has one point per stratum; the variance of each pixel is unchanged (each pixel still
+/// has one uniform `u`: within 10 %); the variance of the image's mean falls by more than 4
+/// times for one uniform wavelength, and by less for uniform hero lanes, whose four lanes are
+/// already stratified.
+#[test]
+#[ignore = "exercise 2 of Wavelength sampling: fill in your_shuffled_grid, then run it"]
+fn exercise_2_stratified_hero() {
+    let mut r = rng::seeded(0x57A7);
+    let g = your_shuffled_grid(64, &mut r);
+    let mut strata: Vec<usize> = g.iter().map(|&u| (u * 64.0) as usize).collect();
+    strata.sort_unstable();
+    assert_eq!(
+        strata,
+        (0..64).collect::<Vec<_>>(),
+        "one u per stratum: {g:?}"
+    );
+    assert!(
+        g.windows(2).any(|w| w[0] > w[1]),
+        "the grid is not shuffled"
+    );
+    let d = d65();
+    let images = 4000;
+    // (variance of a pixel, variance of the image's mean) for independent or stratified u.
+    let measure = |s: Strategy, stratified: bool| {
+        let mut r = rng::seeded(0xF1A7);
+        let (mut pixels, mut means) = (Vec::new(), Vec::new());
+        for _ in 0..images {
+            let us: Vec<f64> = if stratified {
+                your_shuffled_grid(64, &mut r)
+            } else {
+                (0..64).map(|_| rng::uniform(&mut r, 0.0, 1.0)).collect()
+            };
+            let image: Vec<f64> = us
+                .iter()
+                .map(|&u| sum(s.sample(u).xyz(|l| d.eval(l))))
+                .collect();
+            pixels.push(image[17]);
+            means.push(image.iter().sum::<f64>() / 64.0);
+        }
+        (
+            Summary::of(pixels).variance(),
+            Summary::of(means).variance(),
+        )
+    };
+    let mut gains = Vec::new();
+    for s in [Strategy::Uniform, Strategy::HeroUniform] {
+        let (pixel, mean) = measure(s, false);
+        let (pixel_s, mean_s) = measure(s, true);
+        eprintln!(
+            "{}: pixel variance {pixel:.4e} -> {pixel_s:.4e}, image-mean variance {mean:.4e} -> {mean_s:.4e}",
+            s.name()
+        );
+        assert!(
+            (pixel_s / pixel - 1.0).abs() <= 0.1,
+            "{}: pixel variance changed",
+            s.name()
+        );
+        gains.push(mean / mean_s);
+    }
+    assert!(
+        gains[0] > 4.0,
+        "one uniform wavelength gains only {}",
+        gains[0]
+    );
+    assert!(
+        gains[1] < gains[0],
+        "hero lanes gain {} against {}",
+        gains[1],
+        gains[0]
+    );
+}
+
+/// The prism toy with the prism covering a fraction `q` of the pixel (the chapter's toy has
+/// `q = 1/2`): the estimate of `X + Y + Z` of `(1 − q) 0.8 D65 + q D65 1[480, 520]`.
+fn prism_path_covering(w: Wavelengths, coin: f64, q: f64, d65: &Table) -> f64 {
+    // `prism_path` takes the wall below 0.5 and the prism above.
+    let branch = if coin < q { 0.75 } else { 0.25 };
+    prism_path(w, branch, d65, Wavelengths::terminate_secondary)
+}
+
+/// Exercise 3 of *Wavelength sampling*: the variance per path of the prism toy's estimate
+/// when the prism covers a fraction `q` of the pixel, predicted (not measured) from the two
+/// branches: `(1 − q) E[w²] + q E[p²] − ((1 − q) W + q P)²`, with `w` the wall's estimate
+/// (all lanes live), `p` the prism's (the hero alone), `W`, `P` their means, and the second
+/// moments by quadrature over `u` (each branch is a deterministic function of `u`).
+fn your_prism_variance(q: f64, lanes: fn(f64) -> Wavelengths) -> f64 {
+    let _ = (q, lanes);
+    unimplemented!("exercise 3 of Wavelength sampling: the prism toy's variance as a function of q")
+}
+
+/// Checks exercise 3: the predicted variance against the measured one (400 000 paths, within
+/// four standard errors of the sample variance) at q = 0.25, 0.5, 0.75, for sample-space hero
+/// lanes and for one wavelength from the visible pdf; and at q = 1, where both are the
+/// one-wavelength estimator, a variance ratio of 1.
+#[test]
+#[ignore = "exercise 3 of Wavelength sampling: fill in your_prism_variance, then run it"]
+fn exercise_3_mixed_terminations() {
+    let d = d65();
+    let single = |u: f64| Strategy::Visible.sample(u);
+    for (name, lanes) in [
+        ("hero visible", hero_visible as fn(f64) -> Wavelengths),
+        ("visible, 1 λ", single),
+    ] {
+        for q in [0.25, 0.5, 0.75] {
+            let mut r = rng::seeded(0x9215);
+            let xs: Vec<f64> = (0..400_000)
+                .map(|_| {
+                    let u = rng::uniform(&mut r, 0.0, 1.0);
+                    prism_path_covering(lanes(u), rng::uniform(&mut r, 0.0, 1.0), q, &d)
+                })
+                .collect();
+            let n = xs.len() as f64;
+            let mean = xs.iter().sum::<f64>() / n;
+            let m2 = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n;
+            let m4 = xs.iter().map(|x| (x - mean).powi(4)).sum::<f64>() / n;
+            let se = ((m4 - m2 * m2) / n).sqrt();
+            let predicted = your_prism_variance(q, lanes);
+            eprintln!("{name}, q = {q}: measured {m2:.5} ± {se:.5}, predicted {predicted:.5}");
+            assert!(
+                (predicted - m2).abs() <= 4.0 * se,
+                "{name}, q = {q}: {predicted} vs {m2} ± {se}"
+            );
+        }
+    }
+    let ratio = your_prism_variance(1.0, hero_visible) / your_prism_variance(1.0, single);
+    assert!(
+        (ratio - 1.0).abs() <= 1e-9,
+        "at q = 1 the variance ratio is {ratio}"
+    );
 }
