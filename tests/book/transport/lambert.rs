@@ -51,7 +51,7 @@ fn planted_brdf_without_one_over_pi_has_albedo_pi_rho() {
     assert!((a - RHO).abs() > 1.0);
 }
 
-/// The seed's chain rho0 int int cos sin = (rho0/2) int int sin 2theta
+/// The source notes' chain rho0 int int cos sin = (rho0/2) int int sin 2theta
 /// = (rho0/4) int [-cos 2theta]_0^{pi/2} dphi = (rho0/2) int dphi = rho0 pi, line by line.
 #[test]
 fn seed_normalisation_steps_agree() {
@@ -133,7 +133,7 @@ fn environments_exact_answers_match_quadrature() {
     }
 }
 
-/// The seed takes L_i out of the integral, which is only right for a constant L_i. Under
+/// The source notes take L_i out of the integral, which is only right for a constant L_i. Under
 /// the sky max(z,0)^3 the reflected radiance is 2 rho / 5, while rho times any single value
 /// of L_i, or rho times its hemispherical average 1/4, is not.
 #[test]
@@ -173,7 +173,7 @@ fn reflected_radiance_estimators_are_unbiased() {
     }
 }
 
-/// The seed's simplified forms 2 rho L cos and rho L equal the general f L cos / pdf.
+/// The source notes' simplified forms 2 rho L cos and rho L equal the general f L cos / pdf.
 #[test]
 fn seed_simplified_forms_match_the_general_estimator() {
     let mut r = rng::seeded(15);

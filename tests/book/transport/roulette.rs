@@ -90,7 +90,7 @@ fn planted_single_step_without_division_is_rejected() {
     }
 }
 
-/// The seed's `u <= p` survives `u = 0` at `p = 0` and divides by zero; `u < p` does not.
+/// The source notes' `u <= p` survives `u = 0` at `p = 0` and divides by zero; `u < p` does not.
 #[test]
 fn seed_comparison_divides_by_zero_at_p_zero() {
     assert!(!roulette_seed(1.0, 0.0, 0.0).is_finite());
