@@ -111,12 +111,12 @@ pub fn estimate_cosine(rho: f64, radiance: impl Fn(DVec3) -> f64, u: DVec2) -> f
 // ANCHOR_END: estimators
 
 // ANCHOR: seed_forms
-/// The seed's simplification for uniform directions: `2 rho L cos`.
+/// The source notes' simplification for uniform directions: `2 rho L cos`.
 pub fn seed_uniform(rho: f64, radiance: f64, cos: f64) -> f64 {
     2.0 * rho * radiance * cos
 }
 
-/// The seed's simplification for cosine-weighted directions: `rho L`.
+/// The source notes' simplification for cosine-weighted directions: `rho L`.
 pub fn seed_cosine(rho: f64, radiance: f64) -> f64 {
     rho * radiance
 }
@@ -154,7 +154,10 @@ pub fn sky_variances(rho: f64, k: i32) -> (f64, f64) {
 /// plays Russian roulette with survival probability `p = min(1, T)` (dividing `T` by `p`
 /// on survival; chapter *Russian roulette*). With cosine-weighted directions the weight
 /// is exactly `a`, so this is the walk that continues with probability `a` and counts
-/// vertices. Returns the estimate and the number of vertices.
+/// vertices. With uniform directions the weight `2 a cos` exceeds 1 for `a > 1/2`, and the
+/// roulette never reduces a throughput above 1: unbiased still, but with a heavy tail
+/// ([`furnace_tail_index`]) and, for `a >= sqrt(3)/2`, infinite variance
+/// ([`furnace_uniform_variance`]). Returns the estimate and the number of vertices.
 pub fn furnace_walk(emission: f64, bounce: impl Fn(DVec2) -> f64, rng: &mut Rng) -> (f64, u32) {
     let (mut radiance, mut throughput, mut vertices) = (0.0, 1.0, 0);
     loop {
@@ -170,6 +173,67 @@ pub fn furnace_walk(emission: f64, bounce: impl Fn(DVec2) -> f64, rng: &mut Rng)
     }
 }
 // ANCHOR_END: furnace
+
+// ANCHOR: furnace_tail
+/// `E[w^s]` of the uniform furnace bounce's weight `w = 2 a cos(theta)`, `cos(theta)`
+/// uniform on `[0, 1]` for directions uniform on the hemisphere: `(2a)^s / (s + 1)`.
+pub fn uniform_weight_moment(a: f64, s: f64) -> f64 {
+    (2.0 * a).powf(s) / (s + 1.0)
+}
+
+/// The tail index of a walk whose throughput is multiplied by a weight `w` with moments
+/// `moment(s) = E[w^s]` and is never reduced above 1 by the roulette (as in
+/// [`furnace_walk`]): the root `kappa > 1` of `E[w^kappa] = 1`. The estimate's moments
+/// `E[X^s]` are infinite for every `s >= kappa` (and finite below it), so its variance is
+/// finite only if `kappa > 2`. Needs `E[w] < 1` (then `s -> E[w^s]`, log-convex and 1 at
+/// `s = 0`, is below 1 on `(0, kappa)` and above it beyond); infinity when `E[w^s]` never
+/// reaches 1 (a weight that never exceeds 1). Bisection to `1e-14` relative.
+pub fn tail_index(moment: impl Fn(f64) -> f64) -> f64 {
+    let (mut lo, mut hi) = (1.0, 2.0);
+    while moment(hi) < 1.0 {
+        lo = hi;
+        hi *= 2.0;
+        if hi > 1e6 {
+            return f64::INFINITY;
+        }
+    }
+    while hi - lo > 1e-14 * hi {
+        let mid = 0.5 * (lo + hi);
+        if moment(mid) < 1.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The tail index of [`furnace_walk`] with uniform bounces: the root of
+/// `(2a)^kappa / (kappa + 1) = 1`; infinite for `a <= 1/2`, where `2 a cos <= 1`.
+pub fn furnace_tail_index(a: f64) -> f64 {
+    tail_index(|s| uniform_weight_moment(a, s))
+}
+
+/// The exact variance of [`furnace_walk`] with uniform bounces and `L_e = 1`.
+///
+/// For `a <= 1/2` the weight never exceeds 1, the throughput stays 1 and each bounce
+/// survives with probability `E[w] = a`: the cosine walk's `a / (1 - a)^2`. For `a > 1/2`
+/// the second moment `m(t)` of a walk carrying throughput `t >= 1` satisfies (with
+/// `u = t w` uniform on `[0, 2at]`)
+/// `m(t) = t^2 (1 + a)/(1 - a) + (1 / 2at) int_1^{2at} m(s) ds + m(1) / (4at)`,
+/// solved by `m(t) = alpha (t^2 + 1/3)`, `alpha (1 - 4a^2/3) = (1 + a)/(1 - a)`; so
+/// `Var = 4 (1 + a) / ((1 - a)(3 - 4 a^2)) - 1 / (1 - a)^2`, finite only for
+/// `E[w^2] = 4a^2/3 < 1`, i.e. `a < sqrt(3)/2`. Infinity beyond.
+pub fn furnace_uniform_variance(a: f64) -> f64 {
+    if a <= 0.5 {
+        a / ((1.0 - a) * (1.0 - a))
+    } else if 4.0 * a * a >= 3.0 {
+        f64::INFINITY
+    } else {
+        4.0 * (1.0 + a) / ((1.0 - a) * (3.0 - 4.0 * a * a)) - 1.0 / ((1.0 - a) * (1.0 - a))
+    }
+}
+// ANCHOR_END: furnace_tail
 
 /// A furnace bounce with cosine-weighted directions: the weight `f cos / pdf` (= `a`).
 pub fn furnace_bounce_cosine(a: f64, u: DVec2) -> f64 {

@@ -8,12 +8,14 @@
 use glam::DVec2;
 
 use crate::rng::{self, Rng};
-use crate::transport::lambert::furnace_bounce_uniform;
+use crate::transport::lambert::{
+    furnace_bounce_uniform, furnace_uniform_variance, tail_index, uniform_weight_moment,
+};
 
 // ANCHOR: roulette
 // EXERCISE transport/roulette roulette: Russian roulette on one value, unbiased, with p = 0 never surviving
 /// Russian roulette on one value: `f / p` if `u < p`, else 0, for `u` uniform in `[0, 1)`.
-/// `u < p` (not the seed's `u <= p`) so that `p = 0` never survives (and never divides by 0)
+/// `u < p` (not the source notes' `u <= p`) so that `p = 0` never survives (and never divides by 0)
 /// and `p = 1` always does.
 pub fn roulette(f: f64, p: f64, u: f64) -> f64 {
     if u < p { f / p } else { 0.0 }
@@ -21,8 +23,9 @@ pub fn roulette(f: f64, p: f64, u: f64) -> f64 {
 // END EXERCISE
 // ANCHOR_END: roulette
 
-/// The seed's rule, `u <= p`: identical except at `u = p`, which for `p = 0` and `u = 0`
-/// (a value PCG-64's `[0, 1)` floats do produce, with probability `2^-53`) gives `0 / 0`.
+/// The source notes' rule, `u <= p`: identical except at `u = p`, which for `p = 0` and
+/// `u = 0` (a value the `rand` crate's `[0, 1)` floats, 53 random bits, do produce, with
+/// probability `2^-53`) gives `0 / 0`.
 pub fn roulette_seed(f: f64, p: f64, u: f64) -> f64 {
     if u <= p { f / p } else { 0.0 }
 }
@@ -125,6 +128,25 @@ pub fn path_variance(furnace: &Furnace, q: f64) -> f64 {
     }
     let mean = furnace.radiance();
     le * le * (1.0 + a) / ((1.0 - a) * (1.0 - w2 / q)) - mean * mean
+}
+
+/// The tail index of [`furnace_path`] with fixed survival `q`: the path is
+/// `X = L_e + A X'` with the random factor `A = B w / q`, and its moments `E[X^s]` are
+/// finite exactly for `s` below the root `kappa` of
+/// `E[A^kappa] = q^(1 - kappa) (2a)^kappa / (kappa + 1) = 1` (Kesten 1973, Goldie 1991).
+/// `kappa > 2` exactly when `q > E[w^2]` (finite variance); the sample variance is itself a
+/// reliable estimate only for `kappa > 4`.
+pub fn fixed_survival_tail_index(furnace: &Furnace, q: f64) -> f64 {
+    let a = furnace.albedo;
+    tail_index(|s| q.powf(1.0 - s) * uniform_weight_moment(a, s))
+}
+
+/// The exact variance of [`furnace_path`] with the throughput rule `p = min(1, T)`: the
+/// walk of `lambert::furnace_walk` with uniform bounces, whose variance is
+/// [`furnace_uniform_variance`] (times `L_e^2`): `a / (1 - a)^2` for `a <= 1/2`, infinite
+/// for `a >= sqrt(3)/2`.
+pub fn throughput_rule_variance(furnace: &Furnace) -> f64 {
+    furnace.emission * furnace.emission * furnace_uniform_variance(furnace.albedo)
 }
 
 /// Expected number of vertices of a path with fixed survival `q`: `1 / (1 - q)`.

@@ -6,7 +6,7 @@
 //!
 //! `p_w = p_A r^2 / |n . w|`,
 //!
-//! where `n` is the light's normal at `q`. The seed writes `n . w` without the absolute
+//! where `n` is the light's normal at `q`. The source notes write `n . w` without the absolute
 //! value; for a light that faces `p` that dot product is *negative*, and the pdf with it.
 //!
 //! Two lights: a parallelogram ([`QuadLight`], one-sided, on the geometry's
@@ -75,7 +75,7 @@ pub struct LightSample {
     /// The density of `dir`, per steradian.
     pub pdf: f64,
     /// `n . w`, the light's normal at `q` against the direction *towards* the light (the
-    /// seed's convention): negative when the light faces `p`.
+    /// source notes' convention): negative when the light faces `p`.
     pub cos_light: f64,
 }
 
@@ -336,8 +336,9 @@ impl SphereLight {
 impl Light for SphereLight {
     /// Uniform in area over the cap visible from `p`: around the axis `(p - C) / d`, the
     /// cap's polar angle has `cos(alpha)` uniform in `[R/d, 1]`, so
-    /// `p_A = 1 / (2 pi R^2 (1 - R/d))`. Sampling the whole sphere instead would put half
-    /// of the points behind it, where a shadow ray is blocked.
+    /// `p_A = 1 / (2 pi R^2 (1 - R/d))`. Sampling the whole sphere instead would put more
+    /// than half of the points, the fraction `(1 + R/d) / 2`, outside the visible cap, where
+    /// a shadow ray is blocked.
     fn sample(&self, p: DVec3, u: DVec2) -> Option<LightSample> {
         let (d, h) = self.outside(p)?;
         let axis = (p - self.center) / d;

@@ -1,7 +1,9 @@
 # What the mutation scripts share (sourced by run.sh and render.sh, after they set `out`):
 # cargo-mutants at the version the tables were made with, the refusal to mutate a checkout
 # with changes in it, and `mutate`, one cargo-mutants run whose results are kept in
-# $out/NAME (a run done before is not redone).
+# $out/NAME (a run done before is not redone). The callers shard with `--shard K/N
+# --sharding round-robin` (27.1.0 supports it; its default, `slice`, takes consecutive runs
+# of mutants, i.e. the top of each file, not a systematic sample).
 command -v cargo-mutants >/dev/null || cargo install cargo-mutants --locked --version 27.1.0
 if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
   echo "$(basename "$0") mutates files in place: run it in a clean checkout (git worktree add ...)" >&2

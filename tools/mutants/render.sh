@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Mutation testing of the path tracer (chapter "Tests of the tests", the renderer's row):
 # cargo-mutants' mutants of the renderer's files, a systematic sample of 1 in N of each
-# file (`--shard K/N`), each tested with the renderer's tests (`cargo test --test book
+# file (`--shard K/N --sharding round-robin`: the mutants K, K + N, K + 2N, ... of the
+# file in source order), each tested with the renderer's tests (`cargo test --test book
 # renderer::`). Writes figures/mutants_render.md: per file, mutants tested, caught, missed,
 # timeouts (counted as caught), unviable, the caught share with its 95 % Wilson interval,
 # and every surviving mutant.
@@ -12,20 +13,22 @@
 # every mutant: some 300 for the default files, hours on 2 cores. Mutants are made in place
 # (--in-place) so that builds are incremental: run it in a clean checkout of its own
 # (git worktree add), never in one you are editing. Results accumulate in $OUT (default
-# ${TMPDIR:-/tmp}/raylemma-mutants-render); a file done before is not redone.
+# ${TMPDIR:-/tmp}/raylemma-mutants-render-rr; the table reads every run in it, so do not
+# point it at a folder of the older slice runs); a file done before is not redone.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 n="${1:-8}"
 shift || true
 shards=("${@:-0}")
-out="${OUT:-${TMPDIR:-/tmp}/raylemma-mutants-render}"
+out="${OUT:-${TMPDIR:-/tmp}/raylemma-mutants-render-rr}"
 read -r -a files <<< "${RENDER_FILES:-src/render/integrator.rs src/render/tracer.rs src/render/camera.rs src/render/pixel.rs src/render/driver.rs}"
 cd "$root"
 source "$here/common.sh"
 for shard in "${shards[@]}"; do
   for file in "${files[@]}"; do
-    mutate "$(echo "$file" | tr '/' '_').s$shard-of-$n" "renderer::" -f "$file" --shard "$shard/$n"
+    # ".rr": round-robin shards; results of the older slice shards are not reused.
+    mutate "$(echo "$file" | tr '/' '_').rr.s$shard-of-$n" "renderer::" -f "$file" --shard "$shard/$n" --sharding round-robin
   done
 done
 python3 - "$here" "$out" "$n" "${shards[*]}" > "$root/figures/mutants_render.md" <<'PY'
@@ -54,7 +57,8 @@ for f, s in list(sorted(counts.items())) + [("**all**", tot)]:
     print(f"| {name} | {v} | {c} | {m} | {t} | {u} | {100 * (c + t) / max(v, 1):.0f} % | {100 * lo:.0f}–{100 * hi:.0f} % |")
 print()
 print(f"*cargo-mutants on the path tracer's files: {len(shards)} of every {n} mutants of each file "
-      f"(`--shard K/{n}`, K in {', '.join(shards)}), each tested with `cargo test --test book renderer::`; "
+      f"(`--shard K/{n} --sharding round-robin`, K in {', '.join(shards)}: the mutants K, K + {n}, K + {2 * n}, … "
+      f"of each file in source order), each tested with `cargo test --test book renderer::`; "
       f"a timeout counts as caught. Regenerate with `tools/mutants/render.sh {n} {' '.join(shards)}` in a clean checkout.*")
 if missed:
     print()

@@ -5,16 +5,19 @@
 #
 # Three groups of files (chapter "Tests of the tests"):
 #   * the derivation modules (sampling, optics, spectral, transport) and the checkers
-#     (src/check/): a systematic sample, cargo-mutants' `--shard K/N` for each SHARD K
-#     (every N-th mutant of the file, starting at the K-th), each mutant tested with the
-#     file's own chapter's tests (`cargo test --test book CHAPTER::`): what a student who
-#     changed that module would run. The full run (N = 1) is days on 2 cores.
+#     (src/check/): a systematic sample, cargo-mutants' `--shard K/N --sharding
+#     round-robin` for each SHARD K (the mutants K, K + N, K + 2N, ... of the file, in
+#     source order; cargo-mutants' default, `slice`, would take the K-th run of
+#     consecutive mutants, the top of the file), each mutant tested with the file's own
+#     chapter's tests (`cargo test --test book CHAPTER::`): what a student who changed that
+#     module would run. The full run (N = 1) is days on 2 cores.
 #   * the renderer: tools/mutants/render.sh (its own table, figures/mutants_render.md).
 # Mutants are made in place (cargo-mutants --in-place), so that every build after the
 # first is incremental: run it in a clean checkout of its own, never in one you are
 # editing. A timeout counts as caught (the mutant made a test loop). The summary,
 # figures/mutants.md, gives the share caught per group with a 95 % Wilson interval, and
-# every surviving mutant. Results accumulate in $OUT (default /tmp/raylemma-mutants).
+# every surviving mutant. Results accumulate in $OUT (default /tmp/raylemma-mutants-rr; the
+# summary reads every run in it, so do not point it at a folder of the older slice runs).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -22,7 +25,7 @@ n="${1:-40}"
 shift || true
 shards=("${@:-0}")
 [ "${#shards[@]}" -gt 0 ] || shards=(0)
-out="${OUT:-/tmp/raylemma-mutants}"
+out="${OUT:-/tmp/raylemma-mutants-rr}"
 cd "$root"
 source "$here/common.sh"
 # sampled: source file -> its chapter's test module in tests/book/
@@ -56,7 +59,8 @@ sampled=(
 for shard in "${shards[@]}"; do
   for entry in "${sampled[@]}"; do
     set -- $entry
-    mutate "$(echo "$1" | tr '/' '_').s$shard" "$2::" -f "$1" --shard "$shard/$n"
+    # ".rr": round-robin shards; results of the older slice shards (".sK") are not reused.
+    mutate "$(echo "$1" | tr '/' '_').rr.s$shard" "$2::" -f "$1" --shard "$shard/$n" --sharding round-robin
   done
 done
 python3 "$here/summary.py" "$out" "$n" > "$root/figures/mutants.md"

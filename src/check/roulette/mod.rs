@@ -8,7 +8,7 @@
 //! * `never`: `p = 0` never survives, not even at `u = 0` (no `0 / 0`);
 //! * `always`: `p = 1` always survives and returns `f`.
 //!
-//! Planted bugs that it must reject are in [`planted`], beside the seed's own rule
+//! Planted bugs that it must reject are in [`planted`], beside the source notes' own rule
 //! ([`crate::transport::roulette::roulette_seed`]).
 
 pub mod planted;

@@ -1,7 +1,7 @@
 //! Tests of the chapter *Shadow-ray pdfs* (`src/transport/shadow.rs`).
 //!
 //! Every statistical test has a fixed seed, runs at `raylemma::stats::test_alpha()` and has
-//! a planted-bug twin it must reject. The planted bugs are the seed's and the classic ones:
+//! a planted-bug twin it must reject. The planted bugs are the source notes' and the classic ones:
 //! a missing `r^2`, a missing cosine, the cosine's sign not handled, an area pdf not
 //! normalised by the area (and, for the sphere, normalised by the whole sphere instead of
 //! the visible cap).
@@ -64,7 +64,7 @@ fn accepts(s: &Summary, mu: f64) -> bool {
 }
 
 // The planted bugs, as wrong conversions of a correct sample to a solid-angle pdf:
-// `raylemma::check::warp::planted::LIGHT_PDFS` (a missing r^2, a missing cosine, the seed's
+// `raylemma::check::warp::planted::LIGHT_PDFS` (a missing r^2, a missing cosine, the source notes'
 // signed cosine, an area pdf of 1).
 
 // ---------------------------------------------------------------------------------------
@@ -649,4 +649,191 @@ fn cone_sampling_beats_cap_area_sampling() {
             area.variance()
         );
     }
+}
+
+// ---------------------------------------------------------------------------------------
+// Exercises. Each scaffold is yours to fill in; its test is ignored until you do:
+// `cargo test --test book transport::shadow::exercise_ -- --ignored`.
+
+/// Exercise 1 of *Shadow-ray pdfs*: a point uniform in area on the triangle `a b c`, from
+/// `u` in the unit square, seen from `p`: `LightSample::seen_from` with the triangle's unit
+/// normal and its area density.
+fn your_triangle_sample(a: DVec3, b: DVec3, c: DVec3, p: DVec3, u: DVec2) -> Option<LightSample> {
+    let _ = (a, b, c, p, u); // delete this line
+    unimplemented!("exercise 1 of Shadow-ray pdfs: sample the triangle uniformly by area")
+}
+
+/// For two triangles seen from the origin: the mean of `1 / pdf` over your samples passes
+/// the t-test against `triangle_solid_angle`, each planted conversion of your points is
+/// rejected, the points' mean is the centroid (t-test per coordinate), and a quarter of them
+/// lie in the corner triangle where the barycentric coordinate of `a` exceeds 1/2.
+#[test]
+#[ignore = "exercise 1 of Shadow-ray pdfs: fill in your_triangle_sample, then run it"]
+fn exercise_1_triangle_solid_angle_is_the_mean_of_one_over_pdf() {
+    let p = DVec3::ZERO;
+    let triangles = [
+        (
+            DVec3::new(-0.4, -0.3, 1.2),
+            DVec3::new(1.1, -0.3, 1.2),
+            DVec3::new(-0.4, 0.5, 1.2),
+        ),
+        (
+            DVec3::new(-0.6, 0.5, 0.9),
+            DVec3::new(0.5, 0.7, 0.6),
+            DVec3::new(-0.3, 1.4, 1.3),
+        ),
+    ];
+    for (k, (a, b, c)) in triangles.into_iter().enumerate() {
+        let seed = 500 + 10 * k as u64;
+        let exact = triangle_solid_angle(a - p, b - p, c - p);
+        let s = mean_of(seed, N, |u, _| {
+            your_triangle_sample(a, b, c, p, u).map_or(0.0, |s| 1.0 / s.pdf)
+        });
+        assert!(
+            accepts(&s, exact),
+            "triangle {k}: mean {} vs {exact}, p = {:e}",
+            s.mean,
+            p_value(&s, exact)
+        );
+        let area = 0.5 * (b - a).cross(c - a).length();
+        for (bug, convert) in PLANTED {
+            let s = mean_of(seed + 1, N, |u, _| {
+                let s = your_triangle_sample(a, b, c, p, u).unwrap();
+                // As a light facing p (n . w < 0), whichever way your normal points.
+                1.0 / convert(1.0 / area, s.dist, -s.cos_light.abs())
+            });
+            assert!(
+                !accepts(&s, exact),
+                "triangle {k}, planted bug {bug} passed: mean {}",
+                s.mean
+            );
+        }
+        let centroid = (a + b + c) / 3.0;
+        for axis in 0..3 {
+            let s = mean_of(seed + 2, N, |u, _| {
+                your_triangle_sample(a, b, c, p, u).unwrap().point[axis]
+            });
+            assert!(
+                accepts(&s, centroid[axis]),
+                "triangle {k}, coordinate {axis}: mean {} vs {}",
+                s.mean,
+                centroid[axis]
+            );
+        }
+        let corner = mean_of(seed + 3, N, |u, _| {
+            let q = your_triangle_sample(a, b, c, p, u).unwrap().point;
+            let lambda_a = 0.5 * (b - q).cross(c - q).length() / area;
+            f64::from(u8::from(lambda_a > 0.5))
+        });
+        assert!(
+            accepts(&corner, 0.25),
+            "triangle {k}: {} of the points near a, not 1/4",
+            corner.mean
+        );
+    }
+}
+
+/// Exercise 2 of *Shadow-ray pdfs*: a point uniform in area on the *whole* sphere light
+/// (far side included), from `u` in the unit square, seen from `p`:
+/// `LightSample::seen_from` with the area density `1 / (4 pi R^2)`.
+fn your_whole_sphere_sample(light: &SphereLight, p: DVec3, u: DVec2) -> Option<LightSample> {
+    let _ = (light, p, u); // delete this line
+    unimplemented!("exercise 2 of Shadow-ray pdfs: sample the whole sphere uniformly by area")
+}
+
+/// Exercise 2 of *Shadow-ray pdfs*: the total mass the sampler checker finds in the pdf
+/// of your whole-sphere sampler, evaluated as every light's pdf is, by casting the ray and
+/// converting at its first hit, for the light `sphere()` seen from `(0.1, 0.2, -0.4)`.
+const YOUR_ANSWER_2: Option<f64> = None;
+
+/// Your samples, a blocked one (not the ray's first hit) counting 0, give an irradiance
+/// that passes the t-test against the closed form; the share of them that are visible is
+/// the visible cap's share of the area, `(1 - R/d)/2` (t-test); and your answer is within
+/// 1e-4 of the first-hit pdf's integral over the cone (the quadrature of
+/// `sphere_cap_pdf_integrates_to_one`).
+#[test]
+#[ignore = "exercise 2 of Shadow-ray pdfs: fill in your_whole_sphere_sample and YOUR_ANSWER_2, then run it"]
+fn exercise_2_the_whole_sphere() {
+    let light = sphere();
+    let p = DVec3::new(0.1, 0.2, -0.4);
+    let n = (light.center() - p).normalize();
+    let exact = sphere_irradiance(p, n, &light, 1.0);
+    let visible = |s: &LightSample| {
+        light
+            .hit(p, s.dir)
+            .is_some_and(|h| (h.dist - s.dist).abs() <= 1e-9 * s.dist)
+    };
+    let e = mean_of(520, N, |u, _| {
+        your_whole_sphere_sample(&light, p, u)
+            .filter(visible)
+            .map_or(0.0, |s| n.dot(s.dir).max(0.0) / s.pdf)
+    });
+    assert!(
+        accepts(&e, exact),
+        "irradiance {} vs {exact}, p = {:e}",
+        e.mean,
+        p_value(&e, exact)
+    );
+    let d = (light.center() - p).length();
+    let share = 0.5 * (1.0 - light.radius() / d);
+    let v = mean_of(521, N, |u, _| {
+        let s = your_whole_sphere_sample(&light, p, u).unwrap();
+        f64::from(u8::from(visible(&s)))
+    });
+    assert!(accepts(&v, share), "visible share {} vs {share}", v.mean);
+    let pa = 1.0 / (4.0 * PI * light.radius() * light.radius());
+    let total = cone_integral(&light, p, |w| {
+        light
+            .hit(p, w)
+            .map_or(0.0, |h| area_to_solid_angle(pa, h.dist, h.cos_light))
+    });
+    let yours = YOUR_ANSWER_2.expect("exercise 2 of Shadow-ray pdfs: set YOUR_ANSWER_2");
+    assert!(
+        (yours - total).abs() < 1e-4,
+        "your {yours} vs {total} by quadrature"
+    );
+}
+
+/// Exercise 4 of *Shadow-ray pdfs*: the variance per sample over `E^2` of sampling the
+/// table's large light (6 x 6, centred 0.3 off the normal at height 1, shading point at the
+/// origin, normal `+z`) uniformly in solid angle, to three decimals.
+const YOUR_ANSWER_4: Option<f64> = None;
+
+/// Your answer is within 1e-3 of `Omega int cos^2 dw / (int cos dw)^2 - 1`, each integral
+/// over the light by the midpoint rule in area (`dw = |cos_l| dA / r^2`).
+#[test]
+#[ignore = "exercise 4 of Shadow-ray pdfs: set YOUR_ANSWER_4, then run it"]
+fn exercise_4_spherical_rectangles() {
+    let (side, m) = (6.0, 1000);
+    let light = QuadLight::new(
+        DVec3::new(0.3 - side / 2.0, -side / 2.0, 1.0),
+        DVec3::new(0.0, side, 0.0),
+        DVec3::new(side, 0.0, 0.0),
+    )
+    .unwrap();
+    let (mut omega, mut first, mut second) = (0.0, 0.0, 0.0);
+    let h = 1.0 / f64::from(m);
+    for i in 0..m {
+        for j in 0..m {
+            let q = light
+                .shape()
+                .point((f64::from(i) + 0.5) * h, (f64::from(j) + 0.5) * h);
+            let (r, w) = (q.length(), q.normalize());
+            let d_omega = light.normal().dot(w).abs() / (r * r) * light.area() * h * h;
+            omega += d_omega;
+            first += w.z * d_omega;
+            second += w.z * w.z * d_omega;
+        }
+    }
+    let exact_e = light.irradiance(DVec3::ZERO, DVec3::Z, 1.0);
+    assert!(
+        (first / exact_e - 1.0).abs() < 1e-5,
+        "{first} vs Lambert's {exact_e}"
+    );
+    let relative = omega * second / (first * first) - 1.0;
+    let yours = YOUR_ANSWER_4.expect("exercise 4 of Shadow-ray pdfs: set YOUR_ANSWER_4");
+    assert!(
+        (yours - relative).abs() < 1e-3,
+        "your {yours} vs {relative} by quadrature"
+    );
 }
