@@ -33,7 +33,7 @@ pub mod exercise;
 pub mod geometry;
 pub mod numeric;
 pub mod optics;
-pub mod output;
+pub use raylemma_output as output;
 pub mod precision;
 pub mod render;
 pub mod rng;

@@ -12,15 +12,7 @@ mod logging;
 mod markers;
 mod math;
 mod numbers;
-/// The project's one writer of files (`src/output.rs` of the library, compiled here as it
-/// is: the book tool does not link the library). The book is made in a staging folder
-/// beside `book/` and swapped in for it whole ([`output::StagedDir::replace`]).
-#[allow(
-    dead_code,
-    reason = "the book needs only the staged folder of the writer"
-)]
-#[path = "../../../src/output.rs"]
-mod output;
+
 mod preflight;
 mod values;
 
@@ -36,7 +28,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use mdbook_driver::MDBook;
 use mdbook_driver::book::BookItem;
 use mdbook_driver::config::Config;
-use output::StagedDir;
+use raylemma_output::StagedDir;
 use regex::Regex;
 
 const USAGE: &str =

@@ -16,8 +16,9 @@
 //!   merged into it file by file as one [`FileSet`] ([`StagedDir::commit_files`], the
 //!   figures job) or swapped in for it whole ([`StagedDir::replace`], the book).
 //!
-//! Hand-written on `std` alone (no crate: build time matters, and the book tool, which
-//! does not link the library, can include this file as it is).
+//! Hand-written on `std` alone (no crate: build time matters). A crate of its own
+//! (`tools/output`), so that the library (as `raylemma::output`) and the book tool, which
+//! does not link the library, share it.
 //!
 //! A set is atomic against failures of this process's writes (a full disk, a missing
 //! permission, a destination that is a folder), not against a crash between two renames:
