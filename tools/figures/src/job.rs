@@ -16,8 +16,8 @@ use raylemma_values::{Entry, Values};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, compare, coursework, dispersion, display, emission, export, external, frame, fresnel,
-    lambert, limit, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats,
+    colour, compare, coursework, diagram, dispersion, display, emission, export, external, frame,
+    fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats,
     tabulated, testing, thinfilm, upsample, wavelength,
 };
 
@@ -47,6 +47,8 @@ pub fn all() -> Vec<Output> {
     outputs.extend(sphere::outputs());
     outputs.extend(stats::outputs());
     outputs.extend(sampling::outputs());
+    // The explanatory diagrams, from the cosine-weighted hemisphere to the renderer.
+    outputs.extend(diagram::outputs());
     outputs.extend(external::outputs());
     outputs.extend(tabulated::outputs());
     outputs.extend(frame::outputs());

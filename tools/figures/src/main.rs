@@ -16,6 +16,7 @@ mod timing;
 mod colour;
 mod compare;
 mod coursework;
+mod diagram;
 mod dispersion;
 mod display;
 mod emission;
