@@ -2,7 +2,7 @@
 //! mdBook used as a library, math pre-rendered to MathML, readable with no network.
 //!
 //! Steps: preflight check of includes, images, pasted code and the numbers the chapters read
-//! from generated tables ([`preflight`], [`numbers`]), mdBook build into a staging
+//! recorded by the figure job ([`preflight`], [`values`]), mdBook build into a staging
 //! directory beside the output, copy of `<root>/figures/` into it, check that no page needs a
 //! remote script or stylesheet, then swap the staging directory into place. On any failure the
 //! staging directory is removed and the previous output is left untouched.
@@ -11,7 +11,6 @@ mod dedent;
 mod logging;
 mod markers;
 mod math;
-mod numbers;
 
 mod preflight;
 mod values;
@@ -41,26 +40,6 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    // MIGRATION (removed with numbers.rs): `RAYLEMMA_MIGRATE_CHECK=MAP.tsv raylemma-book --root R`.
-    if let Some(map) = std::env::var_os("RAYLEMMA_MIGRATE_CHECK") {
-        let root = std::env::args_os()
-            .nth(2)
-            .map_or_else(|| PathBuf::from("."), PathBuf::from);
-        return match numbers::migrate_check(&root, Path::new(&map)) {
-            Ok(0) => {
-                eprintln!("every mapping agrees");
-                ExitCode::SUCCESS
-            }
-            Ok(n) => {
-                eprintln!("{n} mapping(s) disagree");
-                ExitCode::FAILURE
-            }
-            Err(e) => {
-                eprintln!("error: {e:#}");
-                ExitCode::from(2)
-            }
-        };
-    }
     let args = match parse_args(std::env::args_os().skip(1)) {
         Ok(Some(args)) => args,
         Ok(None) => {

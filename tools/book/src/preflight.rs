@@ -20,7 +20,7 @@ use std::sync::LazyLock;
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 use regex::Regex;
 
-use crate::{numbers, values};
+use crate::values;
 
 /// Same pattern as mdBook's `links` preprocessor (mdbook-driver 0.5, `find_links`).
 static LINK: LazyLock<Regex> = LazyLock::new(|| {
@@ -103,8 +103,6 @@ pub struct Checker {
     src_dir: PathBuf,
     /// Included file contents by normalised path; `Err` holds the read error text.
     cache: HashMap<PathBuf, Result<String, String>>,
-    /// The generated tables that `{{#value}}` and `{{#claim}}` read.
-    tables: numbers::Tables,
     /// The named values `{{#value}}` and `{{#claim}}` read (`Err`: why they cannot be).
     values: Result<raylemma_values::Values, String>,
     /// The `.rs` files some crate of the project compiles (found on first use).
@@ -118,7 +116,6 @@ impl Checker {
             root: normalize(root),
             src_dir: normalize(src_dir),
             cache: HashMap::new(),
-            tables: numbers::Tables::new(&root.join("figures")),
             values: values::read(root),
             compiled: None,
         }
@@ -203,16 +200,7 @@ impl Checker {
                 return;
             }
         };
-        let (text, findings) = values::expand(values, text);
-        for f in findings.into_iter().filter(|f| !f.warning) {
-            problems.push(Problem {
-                file: self.display_path(file),
-                line: f.line,
-                message: f.message,
-            });
-        }
-        // MIGRATION: the table directives not yet converted.
-        let (_, findings) = numbers::expand(&mut self.tables, &text);
+        let (_, findings) = values::expand(values, text);
         for f in findings.into_iter().filter(|f| !f.warning) {
             problems.push(Problem {
                 file: self.display_path(file),
@@ -819,24 +807,28 @@ mod tests {
     }
 
     #[test]
-    fn numbers_are_checked_against_their_tables() {
+    fn numbers_are_checked_against_what_the_figure_job_recorded() {
         let t = Tree::new("numbers");
-        t.write("figures/t.md", "| a | b |\n|---|---|\n| x | 1 |\n");
+        t.write(
+            "figures/values.json",
+            r#"{"t": {"file": "t.md", "values": {"x.b": {"shown": "1", "number": 1.0}},
+                "claims": {"x_above_2": {"holds": false, "read": "1 > 2"}}}}"#,
+        );
         t.write(
             "chapters/a.md",
-            "x is {{#value t.md \"x\" \"b\"}}.\n\nIt is above 2{{#claim t.md \"x\" \"b\" > 2}}.\n\n\
-             {{#value t.md \"y\" \"b\"}}\n",
+            "x is {{#value t.x.b}}.\n\nIt is above 2{{#claim t.x_above_2}}.\n\n\
+             {{#value t.y.b}}\n",
         );
         let problems = t.check();
         assert_eq!(problems.len(), 2, "{problems:?}");
         assert!(
-            problems[0].starts_with("chapters/a.md:3: claim does not hold"),
+            problems[0].starts_with("chapters/a.md:3: claim does not hold: t.x_above_2")
+                && problems[0].contains("read: 1 > 2"),
             "{problems:?}"
         );
         assert!(
-            problems[1].starts_with(
-                "chapters/a.md:5: {{#value t.md \"y\" \"b\"}}: figures/t.md: no row \"y\""
-            ),
+            problems[1].starts_with("chapters/a.md:5: {{#value t.y.b}}: no such name")
+                && problems[1].contains("t.x.b"),
             "{problems:?}"
         );
     }

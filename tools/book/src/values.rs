@@ -135,13 +135,7 @@ pub fn expand(values: &Values, text: &str) -> (String, Vec<Finding>) {
         let rest = &text[i + 3..];
         let escaped = i > 0 && text.as_bytes()[i - 1] == b'\\';
         let taken = DIRECTIVE.find_at(text, i).is_some_and(|m| m.start() == i);
-        // MIGRATION: the table directives of `numbers.rs` (`{{#value FILE.md EXPR}}`) are
-        // still read there until every chapter names its values.
-        let old = rest
-            .split_whitespace()
-            .nth(1)
-            .is_some_and(|t| t.contains(".md") || t.contains(".txt"));
-        if !escaped && (rest.starts_with("value") || rest.starts_with("claim")) && !taken && !old {
+        if !escaped && (rest.starts_with("value") || rest.starts_with("claim")) && !taken {
             findings.push(Finding {
                 line: line_of(text, i),
                 message: "a {{#value}} or {{#claim}} that is not one name closed by `}}`".into(),
@@ -158,10 +152,19 @@ fn suggest(values: &Values, name: &str) -> String {
         return " (a name is OUTPUT.NAME)".into();
     };
     let Some(entry) = values.get(output) else {
-        let outputs: Vec<&str> = values.keys().map(String::as_str).collect();
+        let near: Vec<&str> = values
+            .keys()
+            .map(String::as_str)
+            .filter(|k| k.split('_').next() == output.split('_').next())
+            .collect();
         return format!(
-            " (no output {output:?} recorded values; those that did: {})",
-            outputs.join(", ")
+            " (no output {output:?} recorded values{}; was its output made? the references' \
+             tables are made by `references`, Mitsuba's by tools/mitsuba)",
+            if near.is_empty() {
+                String::new()
+            } else {
+                format!("; of its kind: {}", near.join(", "))
+            }
         );
     };
     let first = rest.split('.').next().unwrap_or(rest);
@@ -253,19 +256,11 @@ impl Preprocessor for Numbers {
         };
         let src = ctx.config.book.src.clone();
         let mut errors = Vec::new();
-        // MIGRATION: chapters not yet converted read tables through numbers.rs.
-        let mut tables = crate::numbers::Tables::new(&ctx.root.join("figures"));
         book.for_each_mut(|item| {
             let BookItem::Chapter(chapter) = item else {
                 return;
             };
-            let (content, mut findings) = expand(&values, &chapter.content);
-            let (content, old) = crate::numbers::expand(&mut tables, &content);
-            findings.extend(old.into_iter().map(|f| Finding {
-                line: f.line,
-                message: f.message,
-                warning: f.warning,
-            }));
+            let (content, findings) = expand(&values, &chapter.content);
             chapter.content = content;
             let file = chapter
                 .source_path
