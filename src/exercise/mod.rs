@@ -3,7 +3,7 @@
 //!
 //! * [`marker`]: the `// EXERCISE CHAPTER NAME: TASK` … `// END EXERCISE` comments around
 //!   each function a student writes, parsed and checked (chapter, name, layout);
-//! * [`stub`]: a marked body replaced by a call to [`todo`];
+//! * [`stub`]: a marked body replaced by a call to [`todo()`];
 //! * [`scrub`]: no line of a removed solution may survive in the hand-out;
 //! * [`edition`]: the student edition, a self-contained crate (`raylemma exercises DIR`,
 //!   with `--solutions` for the teachers' copy);

@@ -7,7 +7,7 @@
 //! light) in flat arrays of its plane and dual basis (the same numbers
 //! [`crate::geometry::parallelogram::Parallelogram::hit_before`] uses, by the same
 //! formulas), a box's walls, whose normal and edges lie along the axes, in the cheaper
-//! form of [`AxisQuad`], and every sphere in another array. It finds the same first
+//! form of `AxisQuad`, and every sphere in another array. It finds the same first
 //! surface as the book's loop at the same distance to within rounding (but for rays that
 //! graze a parallelogram's edge to within rounding): `tests/book/renderer/render.rs`
 //! compares the two on many rays.
@@ -253,7 +253,7 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// How many of the scene's parallelograms take the axis-aligned form ([`AxisQuad`]), of
+    /// How many of the scene's parallelograms take the axis-aligned form (`AxisQuad`), of
     /// how many: a box's walls should all take it (the renderer's tests check that the
     /// `cornell` box's do, since the general form gives the same hits, only slower).
     pub fn axis_aligned_quads(&self) -> (usize, usize) {

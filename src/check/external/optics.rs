@@ -121,7 +121,7 @@ pub fn fresnel(function: &Function, options: &Options) -> Result<Verdict, DataEr
 /// in two rounds).
 ///
 /// # Errors
-/// As [`fresnel`].
+/// As [`fresnel()`].
 pub fn refraction(function: &Function, options: &Options) -> Result<Verdict, DataError> {
     let memo = refraction_memo();
     let f = |w: DVec3, n: DVec3, n1, n2| {

@@ -311,7 +311,7 @@ fn read_samples(path: &std::path::Path, target: Target) -> Result<SampleTable, D
 /// unless told), the Jacobian's
 /// central differences and the round trip's points; and `pdf` and `invert` questions as
 /// its [`Density`] and `inverse` say. Every question the checker asks goes to the program
-/// in a few runs ([`rounds`](super::memo)), and the verdict is the checker's on the
+/// in a few runs (`rounds`, in `memo.rs`), and the verdict is the checker's on the
 /// program's answers alone.
 ///
 /// A [`Sampler::Samples`] file gets the chi-squared claim only, with its rows as the

@@ -5,7 +5,7 @@
 //! the pixels); raylemma's own is [`ours`]. Each checker renders the scenes of
 //! [`scenes`] and compares the images by the pooled z-tests of [`pool`]:
 //!
-//! * [`exact`]: scenes whose expected image is known exactly ([`mod@exact`]): a
+//! * [`exact()`]: scenes whose expected image is known exactly ([`mod@exact`]): a
 //!   Lambertian floor under a quad light, a sphere light and both, and a glass sphere, a
 //!   mirror sphere and a thin film in a sky;
 //! * [`agreement`]: one scene with every material, two lights and a sky, rendered with

@@ -18,7 +18,7 @@
 //!
 //! No shape of a direct-light scene hides a light from the floor, and every light lies
 //! above the floor's horizon: the closed forms hold as they are (the expected image
-//! checks both, [`super::exact`]).
+//! checks both, [`super::exact()`]).
 
 use glam::DVec3;
 
