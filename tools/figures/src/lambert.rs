@@ -157,32 +157,58 @@ fn estimators_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, Box
     Ok(md.into_bytes())
 }
 
+/// One row of the furnace table, for the claims.
+struct FurnaceRow {
+    a: f64,
+    key: &'static str,
+    /// Tail index of the walk (infinite for the cosine walk).
+    tail_index: f64,
+    /// Exact variance of one walk (infinite where the tail index is at most 2).
+    variance: f64,
+    std_error: f64,
+    p_value: f64,
+}
+
+/// A tail index or standard error as the table prints it: "∞" when infinite.
+fn finite_or_infinity(r: &mut Record<'_>, name: &str, x: f64, format: &str) -> String {
+    if x.is_infinite() {
+        r.text(name, "∞")
+    } else {
+        r.number(name, x, format)
+    }
+}
+
 fn furnace_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
+    const LEVEL: f64 = 0.01;
     let mut md = String::new();
     writeln!(
         md,
-        "| albedo a | directions | exact L_e/(1−a) | mean | std. error | p-value | mean vertices |"
+        "| albedo a | directions | exact L_e/(1−a) | mean | std. error | p-value | mean vertices | tail index κ |"
     )?;
-    writeln!(md, "|---:|---|---:|---:|---:|---:|---:|")?;
-    // Every p-value, and per albedo the (cosine, uniform) standard errors.
-    let (mut p_values, mut errors) = (Vec::new(), Vec::new());
+    writeln!(md, "|---:|---|---:|---:|---:|---:|---:|---:|")?;
+    let mut rows: Vec<FurnaceRow> = Vec::new();
     for (a_key, a) in [("a0_5", 0.5), ("a0_8", 0.8), ("a0_95", 0.95)] {
         let exact = 1.0 / (1.0 - a);
-        let bounces: [(&str, &str, Bounce); 2] = [
+        // (key, name, bounce, tail index, exact variance of one walk): the cosine walk's
+        // weight is exactly a, its throughput always 1 (no tail), its count geometric.
+        let bounces: [(&str, &str, Bounce, f64, f64); 2] = [
             (
                 "cosine",
                 "cosine (continue with prob. a)",
                 furnace_bounce_cosine,
+                f64::INFINITY,
+                a / ((1.0 - a) * (1.0 - a)),
             ),
             (
                 "uniform",
                 "uniform (roulette on 2a cos)",
                 furnace_bounce_uniform,
+                furnace_tail_index(a),
+                furnace_uniform_variance(a),
             ),
         ];
-        let mut std_errors = [0.0; 2];
-        for (k, (key, name, bounce)) in bounces.into_iter().enumerate() {
+        for (key, name, bounce, tail_index, variance) in bounces {
             let mut g = rng::seeded(0xF0);
             let (mut s, mut v) = (Summary::default(), Summary::default());
             for _ in 0..n {
@@ -191,50 +217,140 @@ fn furnace_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
                 v.push(f64::from(k));
             }
             let p = ttest::one_sample(&s, exact).map_or(f64::NAN, |t| t.p_value);
-            p_values.push((a, key, p));
-            std_errors[k] = s.std_error();
+            // Where the variance is infinite the column's population value is ∞, and the
+            // sample's standard error and the t-test's p-value estimate nothing.
+            let (std_error, p_cell) = if variance.is_infinite() {
+                (
+                    finite_or_infinity(r, &format!("{a_key}.{key}.std_error"), variance, ".4"),
+                    "—".to_string(),
+                )
+            } else {
+                (
+                    r.number(&format!("{a_key}.{key}.std_error"), s.std_error(), ".4"),
+                    format!("{p:.2}"),
+                )
+            };
+            let kappa =
+                finite_or_infinity(r, &format!("{a_key}.{key}.tail_index"), tail_index, ".2");
             writeln!(
                 md,
-                "| {a} | {name} | {exact:.3} | {:.4} | {} | {p:.2} | {:.2} |",
-                s.mean,
-                r.number(&format!("{a_key}.{key}.std_error"), s.std_error(), ".4"),
-                v.mean
+                "| {a} | {name} | {exact:.3} | {:.4} | {std_error} | {p_cell} | {:.2} | {kappa} |",
+                s.mean, v.mean
             )?;
+            rows.push(FurnaceRow {
+                a,
+                key,
+                tail_index,
+                variance,
+                std_error: s.std_error(),
+                p_value: p,
+            });
         }
-        errors.push((a, std_errors[0], std_errors[1]));
     }
+    let list =
+        |f: &dyn Fn(&FurnaceRow) -> String| rows.iter().map(f).collect::<Vec<_>>().join(", ");
+    let is_heavy = |row: &FurnaceRow| row.a == 0.95 && row.key == "uniform";
+    // The tail index is below 2 (infinite variance) on the a = 0.95 uniform row only; the
+    // variance formula agrees with it row by row.
     r.claim(
-        "no_p_value_below_0_01",
-        p_values.iter().all(|&(_, _, p)| p >= 0.01),
+        "tail_index_below_2_only_at_0_95_uniform",
+        rows.iter().all(|row| {
+            (row.tail_index < 2.0) == is_heavy(row)
+                && row.variance.is_infinite() == (row.tail_index <= 2.0)
+        }),
         format!(
-            "every p-value >= 0.01: {}",
-            p_values
+            "tail index < 2 (and variance infinite) exactly on a = 0.95 uniform: {}",
+            list(&|row| format!(
+                "a = {} {} κ {:.4}, variance {:.4}",
+                row.a, row.key, row.tail_index, row.variance
+            ))
+        ),
+    );
+    let kappa_0_8 = rows
+        .iter()
+        .find(|row| row.a == 0.8 && row.key == "uniform")
+        .map_or(f64::NAN, |row| row.tail_index);
+    r.claim(
+        "uniform_0_8_third_moment_infinite",
+        kappa_0_8 > 2.0 && kappa_0_8 <= 3.0,
+        format!("a = 0.8 uniform: 2 < κ {kappa_0_8:.4} <= 3"),
+    );
+    // The t-test means something only where the variance is finite: there every row accepts
+    // the exact mean at the caption's level.
+    let finite: Vec<&FurnaceRow> = rows.iter().filter(|row| row.variance.is_finite()).collect();
+    r.claim(
+        "finite_variance_rows_accept",
+        finite.len() == rows.len() - 1 && finite.iter().all(|row| row.p_value >= LEVEL),
+        format!(
+            "p-value >= {LEVEL} on each of the {} rows of finite variance: {}",
+            finite.len(),
+            finite
                 .iter()
-                .map(|(a, key, p)| format!("a = {a} {key} {p:.2}"))
+                .map(|row| format!("a = {} {} {:.3}", row.a, row.key, row.p_value))
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
     );
-    // As a approaches 1 the uniform walk's standard error pulls away from the cosine
-    // walk's: the ratio grows with a, and is above 10 at a = 0.95.
-    let ratios: Vec<f64> = errors.iter().map(|&(_, c, u)| u / c).collect();
-    let last = ratios.last().copied().unwrap_or(f64::NAN);
+    // The measured standard error against sqrt(Var / n) from the variance formulas: loose
+    // for the a = 0.8 uniform walk (κ = 2.89 < 4: its sample variance settles slowly),
+    // tight for the geometric counts of the cosine walk.
+    let ratio = |row: &FurnaceRow| row.std_error / (row.variance / n as f64).sqrt();
+    let uniform_0_8: Vec<&FurnaceRow> = rows
+        .iter()
+        .filter(|row| row.a == 0.8 && row.key == "uniform")
+        .collect();
     r.claim(
-        "uniform_std_error_pulls_away_as_a_approaches_1",
-        ratios.windows(2).all(|w| w[1] > w[0]) && last > 10.0,
-        format!(
-            "uniform over cosine standard error, growing with a and > 10 at a = 0.95: {}",
-            errors
+        "uniform_0_8_matches_formula",
+        uniform_0_8.len() == 1
+            && uniform_0_8
                 .iter()
-                .zip(&ratios)
-                .map(|(&(a, c, u), q)| format!("a = {a}: {u:.4}/{c:.4} = {q:.2}"))
+                .all(|row| (ratio(row) - 1.0).abs() < 0.15),
+        format!(
+            "a = 0.8 uniform: std. error / sqrt(Var / n) within 15 % of 1: {}",
+            uniform_0_8
+                .iter()
+                .map(|row| format!(
+                    "{:.5} / sqrt({:.3} / {n}) = {:.4}",
+                    row.std_error,
+                    row.variance,
+                    ratio(row)
+                ))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    );
+    let cosine: Vec<&FurnaceRow> = rows.iter().filter(|row| row.key == "cosine").collect();
+    r.claim(
+        "cosine_std_errors_match_geometric",
+        cosine.len() == 3 && cosine.iter().all(|row| (ratio(row) - 1.0).abs() < 0.05),
+        format!(
+            "cosine rows: std. error / sqrt(a/(1-a)^2 / n) within 5 % of 1: {}",
+            cosine
+                .iter()
+                .map(|row| format!(
+                    "a = {}: {:.5} / {:.5} = {:.4}",
+                    row.a,
+                    row.std_error,
+                    (row.variance / n as f64).sqrt(),
+                    ratio(row)
+                ))
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
     );
     writeln!(
         md,
-        "\n*L_e = 1; {n} walks each; p-value of the one-sample t-test against the exact radiance.*"
+        "\n*L_e = 1; {n} walks each; p-value of the one-sample t-test against the exact radiance (level {LEVEL}). \
+         Tail index κ: the root of (2a)^κ/(κ+1) = 1 for uniform bounces (`furnace_tail_index`), ∞ for cosine bounces \
+         (weight exactly a, throughput always 1); the variance is finite exactly where κ > 2.{}*",
+        rows.iter()
+            .filter(|row| row.variance.is_infinite())
+            .map(|row| format!(
+                " The {} walk at a = {} has infinite variance (tail index below 2): its std. error is ∞, and the sample's \
+                 standard error and the p-value estimate nothing (chapter text).",
+                row.key, row.a
+            ))
+            .collect::<String>()
     )?;
     Ok(md.into_bytes())
 }
