@@ -129,10 +129,27 @@ fn record_uniform(verdict: &Verdict, r: &mut Record<'_>) -> Result<(), BoxError>
         ),
     );
     let cells = first_failure(verdict.finding("chi_squared"))?;
-    r.number(
-        "uniform.chi_squared.worst_cell.ratio",
-        number_after(cells, &["predicts", "("])?,
-        "int",
+    let ratio = number_after(cells, &["predicts", "("])?;
+    r.number("uniform.chi_squared.worst_cell.ratio", ratio, "int");
+    // The worst cell's row: z in [-h, h], across the horizon, where h = 1 / rows (the
+    // rows are equal in z, one of them centred on z = 0). Over the upper half of that row
+    // the uniform density puts 1 / rows of its samples and the cosine lobe (CDF z^2) only
+    // 1 / rows^2: the factor is the number of rows on average, so the worst cell's is at
+    // least that.
+    let z_of = ["z = cos(theta) in ["];
+    let (low, high) = (
+        number_after(cells, &z_of)?,
+        number_after(cells, &["z = cos(theta) in [", ", "])?,
+    );
+    let rows = (1.0 / high).round();
+    r.number("uniform.chi_squared.rows", rows, "int");
+    r.claim(
+        "uniform.chi_squared.worst_cell_across_the_horizon_above_the_row_average",
+        low == -high && rows > 1.0 && ratio >= rows && ratio > 15.0,
+        format!(
+            "the worst cell lies in z in [{low}, {high}], across the horizon (1/h = {:.2}, {rows} rows), and gets {ratio} times its share: >= {rows}, the row's average, and > 15",
+            1.0 / high
+        ),
     );
     Ok(())
 }

@@ -6,6 +6,7 @@ use rand::RngExt;
 
 use super::{Output, Record, Settings, timing};
 use crate::plot::{self, BoxError, Panel, Series};
+use raylemma::check::max_abs;
 use raylemma::rng;
 use raylemma::sampling::tabulated::{
     ONE_MINUS_EPSILON, Piecewise1D, emission_table, emission_values, segment_cdf, segment_inverse,
@@ -208,9 +209,51 @@ fn checks_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
             if rejected { "rejected" } else { "accepted" },
         );
         let chi = chi.map_or_else(|why| why, p_text);
-        writeln!(md, "| {name} | {} | {chi} | {verdict} |", p_text(ks))?;
+        let ks = r.text(&format!("{key}.ks_p"), p_text(ks));
+        writeln!(md, "| {name} | {ks} | {chi} | {verdict} |")?;
     }
     let is_accepted = |key: &str| accepted.iter().any(|&(k, a)| k == key && a);
+    // The planted bugs, the source's black/white ratio among them: every one rejected.
+    let planted = [
+        "uniform_ignoring_table",
+        "cdf_not_normalised",
+        "off_by_one_bin",
+        "seed_black_white_ratio",
+    ];
+    let verdicts: Vec<String> = planted
+        .iter()
+        .map(|&k| {
+            let found = accepted.iter().find(|&&(key, _)| key == k);
+            let v = match found {
+                Some((_, true)) => "accepted",
+                Some((_, false)) => "rejected",
+                None => "missing",
+            };
+            format!("{k}: {v}")
+        })
+        .collect();
+    r.claim(
+        "planted_rejected",
+        planted
+            .iter()
+            .all(|&k| accepted.iter().any(|&(key, a)| key == k && !a)),
+        format!("every planted row rejected: {}", verdicts.join(", ")),
+    );
+    let seed_rejected = accepted
+        .iter()
+        .any(|&(key, a)| key == "seed_black_white_ratio" && !a);
+    r.claim(
+        "seed_black_white_ratio_rejected",
+        seed_rejected,
+        format!(
+            "the black/white ratio sampler against the drawn heights: {}",
+            if seed_rejected {
+                "rejected"
+            } else {
+                "not rejected"
+            }
+        ),
+    );
     let (textbook, sampler) = (is_accepted("textbook_inverse"), is_accepted("sampler"));
     r.claim(
         "textbook_inverse_accepted",
@@ -252,10 +295,11 @@ fn precision_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
         let e = table.edges();
         let scale = 1.0 + (e[s.bin].abs() + e[s.bin + 1].abs()) * s.pdf;
         let err = (table.invert(s.x) - u).abs() / (f64::EPSILON * scale);
+        // `max_abs`, not `f64::max`, which would drop a NaN.
         if k < n {
-            worst = worst.max(err);
+            worst = max_abs([worst, err]);
         } else {
-            at_edge = at_edge.max(err);
+            at_edge = max_abs([at_edge, err]);
         }
     }
     writeln!(md, "| quantity | worst | bound asserted by the tests |")?;
@@ -273,8 +317,8 @@ fn precision_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     for k in 1..1000 {
         let xi = f64::from(k) / 1000.0 + 1e-7;
         let exact = xi + 0.5 * (b - a) * xi * (1.0 - xi);
-        textbook = textbook.max((segment_inverse_textbook(a, b, xi) - exact).abs());
-        stable = stable.max((segment_inverse(a, b, xi) - exact).abs());
+        textbook = max_abs([textbook, segment_inverse_textbook(a, b, xi) - exact]);
+        stable = max_abs([stable, segment_inverse(a, b, xi) - exact]);
     }
     // The bounds of the tests: the textbook root must fail by at least 1e-4, the stable
     // one stay within 2 epsilon.
@@ -299,18 +343,47 @@ fn precision_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
         stable <= stable_bound,
         format!("the stable root's worst error of t: {stable:.1e} <= 2ε = {stable_bound:.2e}"),
     );
+    // The segments of `segment_inverse_round_trips`: a = 0 in 10 %, else log-uniform;
+    // b = a in a quarter, b = a (1 + 1e-12 u) in a quarter (the nearly constant segments
+    // the stable form is for), else independent; a segment without mass is skipped.
     let mut worst_seg = 0.0f64;
-    for _ in 0..n {
-        let a = rng::log_uniform(&mut rng, 1e-300, 1e300);
-        let b = rng::log_uniform(&mut rng, 1e-300, 1e300);
+    let mut segments = 0;
+    while segments < n {
+        let a = if rng.random::<f64>() < 0.1 {
+            0.0
+        } else {
+            rng::log_uniform(&mut rng, 1e-300, 1e300)
+        };
+        let b = match rng.random::<u8>() % 4 {
+            0 => a,
+            1 => a * (1.0 + 1e-12 * rng.random::<f64>()),
+            _ => rng::log_uniform(&mut rng, 1e-300, 1e300),
+        };
+        if a == 0.0 && b == 0.0 {
+            continue;
+        }
+        segments += 1;
         let xi = rng.random::<f64>();
         let t = segment_inverse(a, b, xi);
-        worst_seg = worst_seg.max((segment_cdf(a, b, t) - xi).abs() / f64::EPSILON);
+        // A t outside [0, 1] is as wrong as a NaN.
+        let err = if (0.0..=1.0).contains(&t) {
+            (segment_cdf(a, b, t) - xi).abs() / f64::EPSILON
+        } else {
+            f64::NAN
+        };
+        worst_seg = max_abs([worst_seg, err]);
     }
+    let seg_bound = 6.0;
     writeln!(
         md,
-        "| linear segment round trip \\|F(F⁻¹(ξ)) − ξ\\| / ε, a, b from 1e−300 to 1e300 | {worst_seg:.2} | 6 |"
+        "| linear segment round trip \\|F(F⁻¹(ξ)) − ξ\\| / ε: a = 0 in 10 %, else from 1e−300 to 1e300; b = a, b = a(1 + 10⁻¹²u) or independent | {} | {seg_bound} |",
+        r.number("segment_round_trip.worst", worst_seg, ".2")
     )?;
+    r.claim(
+        "segment_round_trip_within_bound",
+        worst_seg <= seg_bound,
+        format!("the linear segment round trip's worst error: {worst_seg:.2} ε <= {seg_bound} ε"),
+    );
     writeln!(
         md,
         "\n*{n} random u on the emission table and {n} random segments; generated by `tools/figures/src/tabulated.rs`.*"
@@ -327,6 +400,7 @@ fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError
         "| bins | piecewise constant (ns per sample) | piecewise linear (ns per sample) |"
     )?;
     writeln!(md, "|---:|---:|---:|")?;
+    let mut times = Vec::new();
     for bins in TIMING_BINS {
         let (constant, linear) = timing_tables(bins);
         let c = timing::median_ns_per_input(&us, reps, |u| constant.sample(u).x);
@@ -337,7 +411,34 @@ fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError
             r.number(&format!("bins_{bins}.constant_ns"), c, ".1"),
             r.number(&format!("bins_{bins}.linear_ns"), l, ".1"),
         )?;
+        times.push((bins, c, l));
     }
+    r.claim(
+        "linear_slower_every_row",
+        times.iter().all(|&(_, c, l)| l > c),
+        format!(
+            "piecewise linear > piecewise constant, ns per sample, at every size: {}",
+            times
+                .iter()
+                .map(|(b, c, l)| format!("{b}: {l:.1} > {c:.1}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    );
+    // Logarithmic growth would add the same time from 256 to 4096 bins as from 4096 to
+    // 65 536 (both sixteen-fold, four more steps of the search); more beyond 4096 is the
+    // caches.
+    let constant_at = |bins: usize| times.iter().find(|t| t.0 == bins).map_or(f64::NAN, |t| t.1);
+    let (t256, t4096, t65536) = (constant_at(256), constant_at(4096), constant_at(65_536));
+    r.claim(
+        "superlog_growth",
+        t65536 - t4096 > t4096 - t256,
+        format!(
+            "piecewise constant: t(65536) - t(4096) = {:.1} ns > t(4096) - t(256) = {:.1} ns",
+            t65536 - t4096,
+            t4096 - t256
+        ),
+    );
     writeln!(
         md,
         "\n*{}; 4096 random u per batch, median of {reps} batches{}. Each sample includes its pdf.*",
