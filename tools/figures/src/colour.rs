@@ -51,28 +51,31 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-/// The illuminants of `data/` with their published chromaticities (CIE 015:2018, 2°):
-/// `(name, file, x, y)`. The same values are asserted in `tests/book/spectral/colour.rs`.
-pub const ILLUMINANTS: [(&str, &str, f64, f64); 6] = [
-    ("A", "cie_illuminant_A.csv", 0.44758, 0.40745),
-    ("D65", "cie_illuminant_D65.csv", 0.31272, 0.32903),
-    ("FL2", "cie_illuminant_F2.csv", 0.3721, 0.3751),
-    ("FL11", "cie_illuminant_F11.csv", 0.3805, 0.3769),
+/// The illuminants of `data/` with their published chromaticities (CIE 015:2018, 2°) and
+/// the number of decimals they are printed to: `(name, file, x, y, decimals)`. The same
+/// values are asserted in `tests/book/spectral/colour.rs`.
+pub const ILLUMINANTS: [(&str, &str, f64, f64, i32); 6] = [
+    ("A", "cie_illuminant_A.csv", 0.44758, 0.40745, 5),
+    ("D65", "cie_illuminant_D65.csv", 0.31272, 0.32903, 5),
+    ("FL2", "cie_illuminant_F2.csv", 0.3721, 0.3751, 4),
+    ("FL11", "cie_illuminant_F11.csv", 0.3805, 0.3769, 4),
     (
         "HP1",
         "cie_illuminant_HP1_high_pressure_sodium.csv",
         0.5330,
         0.4150,
+        4,
     ),
-    ("LED-B3", "cie_illuminant_LED_B3.csv", 0.3756, 0.3723),
+    ("LED-B3", "cie_illuminant_LED_B3.csv", 0.3756, 0.3723, 4),
 ];
 
-/// The CIE's rule: the sum over the 5 nm samples in 360-780 nm of S x̄ȳz̄ (unnormalised).
+/// The CIE's rule (CIE 015:2018 §7.1): the sum over the 5 nm samples in 380-780 nm, the
+/// range of the published chromaticities, of S x̄ȳz̄ (unnormalised).
 fn cie_sum(t: &spectrum::Table) -> DVec3 {
     t.wavelengths()
         .iter()
         .zip(t.values())
-        .filter(|(nm, _)| (LAMBDA_MIN..=780.0).contains(*nm))
+        .filter(|(nm, _)| (380.0..=780.0).contains(*nm))
         .map(|(&nm, &v)| v * cmf(nm))
         .sum()
 }
@@ -151,7 +154,7 @@ fn chromaticity_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxErro
         }
         // The illuminants, computed from their spectra.
         let green = PALETTE[2];
-        for (k, (name, file, _, _)) in ILLUMINANTS.iter().enumerate() {
+        for (k, (name, file, ..)) in ILLUMINANTS.iter().enumerate() {
             let t = spectrum::builtin(file);
             let p = xy_of(xyz(|nm| t.eval(nm)));
             // Label offsets (pixels) that keep the close ones (FL2, FL11, LED-B3) apart.
@@ -183,16 +186,38 @@ fn illuminant_key(name: &str) -> String {
     name.to_lowercase().replace('-', "_")
 }
 
+/// The largest and smallest of `xs`.
+fn extremes(xs: impl IntoIterator<Item = f64>) -> (f64, f64) {
+    xs.into_iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), e| {
+            (lo.min(e), hi.max(e))
+        })
+}
+
+/// One row of the illuminant table: the errors, as the larger of |Δx| and |Δy|.
+struct IlluminantRow {
+    name: &'static str,
+    /// Half a unit of the published value's last printed digit.
+    half_unit: f64,
+    /// The CIE's 5 nm sum against the published value.
+    sum: f64,
+    /// The renderer's exact integral against the published value.
+    quad: f64,
+    /// The renderer's reading against the CIE's sum of the same samples.
+    readings: f64,
+    /// The fit against the published value.
+    fit: f64,
+}
+
 fn illuminants_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
-        "| illuminant | published (x, y) | CIE 5 nm sum | renderer (exact integral) | error | by the fit | error | linear sRGB at Y = 1 |"
+        "| illuminant | published (x, y) | CIE 5 nm sum | CIE sum error | renderer (exact integral) | error | renderer − CIE sum | by the fit | error | linear sRGB at Y = 1 |"
     )?;
-    writeln!(md, "|---|---|---|---|---:|---|---:|---|")?;
-    // (name, renderer's error, fit's error)
-    let mut errors = Vec::new();
-    for (name, file, x, y) in ILLUMINANTS {
+    writeln!(md, "|---|---|---|---:|---|---:|---:|---|---:|---|")?;
+    let mut rows = Vec::new();
+    for (name, file, x, y, decimals) in ILLUMINANTS {
         let key = illuminant_key(name);
         let t = spectrum::builtin(file);
         let published = DVec2::new(x, y);
@@ -201,33 +226,118 @@ fn illuminants_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError>
         let quad = xy_of(exact);
         let fit = xy_of(xyz_with(cmf_fit, |nm| t.eval(nm)));
         let rgb = xyz_to_linear_srgb(exact / exact.y);
-        let err = |p: DVec2| (p - published).abs().max_element();
-        let (err_quad, err_fit) = (err(quad), err(fit));
-        errors.push((name, err_quad, err_fit));
-        r.number(&format!("{key}.fit_error"), err_fit, "x1");
+        let apart = |p: DVec2, q: DVec2| (p - q).abs().max_element();
+        let row = IlluminantRow {
+            name,
+            half_unit: 0.5 * 10f64.powi(-decimals),
+            sum: apart(sum, published),
+            quad: apart(quad, published),
+            readings: apart(quad, sum),
+            fit: apart(fit, published),
+        };
+        r.number(&format!("{key}.fit_error"), row.fit, "x1");
         writeln!(
             md,
-            "| {name} | ({x}, {y}) | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {err_quad:.1e} | ({:.5}, {:.5}) | {err_fit:.1e} | ({:.4}, {:.4}, {:.4}) |",
-            sum.x, sum.y, quad.x, quad.y, fit.x, fit.y, rgb.x, rgb.y, rgb.z
+            "| {name} | ({x}, {y}) | ({:.5}, {:.5}) | {:.2e} | ({:.5}, {:.5}) | {:.1e} | {:.1e} | ({:.5}, {:.5}) | {:.1e} | ({:.4}, {:.4}, {:.4}) |",
+            sum.x,
+            sum.y,
+            row.sum,
+            quad.x,
+            quad.y,
+            row.quad,
+            row.readings,
+            fit.x,
+            fit.y,
+            row.fit,
+            rgb.x,
+            rgb.y,
+            rgb.z
         )?;
+        rows.push(row);
     }
+    let smooth = |row: &&IlluminantRow| ["A", "D65"].contains(&row.name);
+    let lines = |row: &&IlluminantRow| ["FL2", "FL11", "HP1", "LED-B3"].contains(&row.name);
+    let reddish = |row: &&IlluminantRow| ["A", "HP1"].contains(&row.name);
+    let show = |rows: &mut dyn Iterator<Item = &IlluminantRow>, f: fn(&IlluminantRow) -> f64| {
+        rows.map(|row| format!("{} {:.2e}", row.name, f(row)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    // The CIE's rule reproduces every published value to its last printed digit.
+    r.claim(
+        "cie_sum_to_last_digit",
+        rows.len() == ILLUMINANTS.len() && rows.iter().all(|row| row.sum <= row.half_unit),
+        format!(
+            "CIE 5 nm sum against the published value, each at most half a unit of its last digit (5e-6 for A and D65, 5e-5 for the others): {}",
+            show(&mut rows.iter(), |row| row.sum)
+        ),
+    );
+    // The two readings of the same samples: a few units of the fifth decimal for the
+    // smooth spectra, the fourth decimal for the line spectra.
+    let (_, smooth_max) = extremes(rows.iter().filter(smooth).map(|row| row.readings));
+    r.number("smooth_readings_apart.max", smooth_max, "x1");
+    r.claim(
+        "smooth_fifth_decimal",
+        rows.iter().filter(smooth).count() == 2
+            && rows.iter().filter(smooth).all(|row| row.readings < 5e-5),
+        format!(
+            "renderer − CIE sum, each < 5e-5: {}",
+            show(&mut rows.iter().filter(smooth), |row| row.readings)
+        ),
+    );
+    let (lines_min, lines_max) = extremes(rows.iter().filter(lines).map(|row| row.readings));
+    r.number("line_readings_apart.min", lines_min, "x1");
+    r.number("line_readings_apart.max", lines_max, "x1");
+    r.claim(
+        "lines_fourth_decimal",
+        rows.iter().filter(lines).count() == 4
+            && rows
+                .iter()
+                .filter(lines)
+                .all(|row| (1e-4..1e-3).contains(&row.readings)),
+        format!(
+            "renderer − CIE sum, each in [1e-4, 1e-3): {}",
+            show(&mut rows.iter().filter(lines), |row| row.readings)
+        ),
+    );
+    // The renderer's rule within the tolerances of its test: 3e-5 for A and D65 (printed
+    // to five decimals), 3e-4 for the others.
+    r.claim(
+        "quadrature_within_test_tolerances",
+        rows.iter().all(|row| {
+            row.quad
+                <= if row.half_unit < 1e-5 {
+                    3e-5
+                } else {
+                    3e-4
+                }
+        }),
+        format!(
+            "renderer against the published value, <= 3e-5 for A and D65 and <= 3e-4 for the others: {}",
+            show(&mut rows.iter(), |row| row.quad)
+        ),
+    );
     // The fit's error on the illuminants that are not reddish (A and HP1 are).
-    let others: Vec<f64> = errors
-        .iter()
-        .filter(|(name, ..)| !["A", "HP1"].contains(name))
-        .map(|e| e.2)
-        .collect();
-    let (lo, hi) = others
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &e| {
-            (lo.min(e), hi.max(e))
-        });
+    let (lo, hi) = extremes(rows.iter().filter(|row| !reddish(row)).map(|row| row.fit));
     r.number("fit_error_others.min", lo, "x1");
     r.number("fit_error_others.max", hi, "x1");
-    let fit_not_worse: Vec<String> = errors
+    let (reddish_min, _) = extremes(rows.iter().filter(reddish).map(|row| row.fit));
+    r.claim(
+        "fit_worst_for_reddish",
+        rows.iter().filter(reddish).count() == 2 && reddish_min > hi,
+        format!(
+            "the fit's error, smaller of A and HP1 {reddish_min:.2e} > largest of the others {hi:.2e}"
+        ),
+    );
+    let fit_not_worse: Vec<String> = rows
         .iter()
-        .filter(|(_, quad, fit)| quad >= fit)
-        .map(|(name, quad, fit)| format!("{name}: table {quad:.2e} >= fit {fit:.2e}"))
+        .filter(|row| row.quad >= row.fit)
+        .map(|row| {
+            format!(
+                "{}: table {:.2e} >= fit {:.2e}",
+                row.name, row.quad, row.fit
+            )
+        })
         .collect();
     r.claim(
         "table_closer_than_fit_every_illuminant",
@@ -241,11 +351,12 @@ fn illuminants_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError>
     writeln!(
         md,
         "\n*Published: CIE 015:2018 (A and D65 to five decimals, the others to four). CIE 5 nm \
-         sum: the CIE's rule, Σ S(λ) x̄ȳz̄(λ) over the 5 nm samples. Renderer: the exact integral \
-         of the piecewise-linear spectrum against the 1 nm table (`cie::xyz`). Fit: the same \
-         integral with the Wyman-Sloan-Shirley functions (`cie::xyz_with(cmf_fit, ..)`). Errors \
-         are the larger of |Δx| and |Δy| against the published value. Generated by \
-         `cargo run --release -- figures --only colour_`.*"
+         sum: the CIE's rule, Σ S(λ) x̄ȳz̄(λ) over the 5 nm samples from 380 to 780 nm. \
+         Renderer: the exact integral of the piecewise-linear spectrum against the 1 nm table \
+         over 360–830 nm (`cie::xyz`). Fit: the same integral with the Wyman-Sloan-Shirley \
+         functions (`cie::xyz_with(cmf_fit, ..)`). Errors are the larger of |Δx| and |Δy| \
+         against the published value; \"renderer − CIE sum\" is the same between the two \
+         readings of the samples. Generated by `cargo run --release -- figures --only colour_`.*"
     )?;
     Ok(md.into_bytes())
 }
@@ -376,6 +487,11 @@ fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     });
     let errors = fit_errors();
     let worst = errors.iter().map(|e| e.0).fold(0.0, f64::max);
+    r.claim(
+        "fit_is_slower",
+        fit_ns > table_ns,
+        format!("ns per (x̄, ȳ, z̄): fit {fit_ns:.2} > table {table_ns:.2}"),
+    );
     let mut md = String::new();
     writeln!(
         md,
@@ -404,7 +520,7 @@ fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     Ok(md.into_bytes())
 }
 
-fn planck_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn planck_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -416,14 +532,21 @@ fn planck_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     ] {
         let p = planck_xy(t);
         let k = krystek(t);
+        let apart = (p - k).abs().max_element();
+        if t == 6504.0 {
+            // D65's correlated colour temperature: the locus agrees with Krystek's to within
+            // the accuracy `planckian_locus_matches_krystek` holds over 2000-10000 K.
+            r.number("k6504.apart", apart, "x1");
+            r.claim(
+                "d65_within_accuracy",
+                apart <= 4e-4,
+                format!("6504 K: max(|Δx|, |Δy|) {apart:.3e} <= 4e-4"),
+            );
+        }
         writeln!(
             md,
-            "| {t} | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {:.1e} |",
-            p.x,
-            p.y,
-            k.x,
-            k.y,
-            (p - k).abs().max_element()
+            "| {t} | ({:.5}, {:.5}) | ({:.5}, {:.5}) | {apart:.1e} |",
+            p.x, p.y, k.x, k.y,
         )?;
     }
     let c2 = spectrum::PLANCK_H * spectrum::LIGHT_C / spectrum::BOLTZMANN_K;

@@ -24,7 +24,7 @@ pub fn outputs() -> Vec<Output> {
         },
         Output {
             file: "display_ramps.png",
-            what: "over-exposure ramps: clipping, the seed's desaturation, equal-luminance grey",
+            what: "over-exposure ramps: clipping, the source notes' desaturation, equal-luminance grey",
             make: ramps_png,
         },
         Output {
@@ -139,12 +139,16 @@ fn codes_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     )?;
     writeln!(md, "|---|---:|---|---:|---:|")?;
     let rows: [(&str, &str, Encoder); 3] = [
-        ("gamma_2_2", "gamma 2.2, x^(1/2.2) (the seed)", |x| {
-            gamma8(x, 2.2)
-        }),
-        ("sqrt", "sqrt, x^(1/2) (the seed's approximation)", |x| {
-            gamma8(x, 2.0)
-        }),
+        (
+            "gamma_2_2",
+            "gamma 2.2, x^(1/2.2) (the source notes)",
+            |x| gamma8(x, 2.2),
+        ),
+        (
+            "sqrt",
+            "sqrt, x^(1/2) (the source notes' approximation)",
+            |x| gamma8(x, 2.0),
+        ),
         ("wrong_way", "x^2.2 (exponent the wrong way round)", |x| {
             quantise(gamma_decode(x, 2.2))
         }),
@@ -169,6 +173,15 @@ fn codes_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
             f64::from(lowest.abs()),
             "int",
         );
+        r.number(
+            &format!("{key}.largest_difference_abs"),
+            f64::from(worst.abs()),
+            "int",
+        );
+        if let (Some(&first), Some(&last)) = (at.first(), at.last()) {
+            r.number(&format!("{key}.at_first"), f64::from(first), "int");
+            r.number(&format!("{key}.at_last"), f64::from(last), "int");
+        }
         let at_text: Vec<String> = at.iter().map(u8::to_string).collect();
         writeln!(
             md,
@@ -241,7 +254,7 @@ type Method = (&'static str, fn(DVec3) -> DVec3);
 
 const METHODS: [Method; 3] = [
     ("clip", clip),
-    ("seed: mix with white by peak", desaturate_seed),
+    ("source notes: mix with white by peak", desaturate_seed),
     ("ours: toward equal-Y grey", fit_to_gamut),
 ];
 
@@ -302,8 +315,8 @@ fn hue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     )?;
     writeln!(md, "|---|---:|---|---|---:|---:|---:|")?;
     let mut clip_orange_xy = f64::NEG_INFINITY;
-    // The seed's rows: (colour, exposure, Y in, Y out, xy hue shift)
-    let mut seed_rows = Vec::new();
+    // The source notes' rows: (colour, exposure, Y in, Y out, xy hue shift)
+    let mut source_rows = Vec::new();
     for (cname, colour) in RAMP_COLOURS {
         for k in [2.0, 4.0] {
             let c = colour * k;
@@ -319,14 +332,14 @@ fn hue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
                 if cname == "orange" && mname == "clip" {
                     clip_orange_xy = clip_orange_xy.max(xy.unwrap_or(f64::NAN));
                 }
-                if mname.starts_with("seed") {
-                    seed_rows.push((cname, k, y_in, y_out, xy));
+                if mname.starts_with("source") {
+                    source_rows.push((cname, k, y_in, y_out, xy));
                     if k == 2.0 && cname == "blue" {
-                        r.number("blue_x2.seed.y_out_over_in", y_out / y_in, "s2");
+                        r.number("blue_x2.source.y_out_over_in", y_out / y_in, "s2");
                     }
                     if k == 2.0 && cname == "orange" {
                         r.number(
-                            "orange_x2.seed.lab_hue_shift_abs",
+                            "orange_x2.source.lab_hue_shift_abs",
                             lab.map_or(f64::NAN, f64::abs),
                             "int",
                         );
@@ -345,25 +358,30 @@ fn hue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         }
     }
     r.number("orange.clip.worst_xy_hue_shift", clip_orange_xy, "int");
-    // The seed's mix keeps the xy hue (of every row, to rounding), and at 2x shows the blue
-    // too bright and the orange too dark.
-    let moved: Vec<String> = seed_rows
+    r.claim(
+        "clip_moves_orange_hue_over_10",
+        clip_orange_xy > 10.0,
+        format!("orange, clipped: largest xy hue shift {clip_orange_xy:.2}° > 10°"),
+    );
+    // The source notes' mix keeps the xy hue (of every row, to rounding), and at 2x shows
+    // the blue too bright and the orange too dark.
+    let moved: Vec<String> = source_rows
         .iter()
         .filter(|row| row.4.is_none_or(|d| d.abs() > 1e-6))
         .map(|(c, k, _, _, d)| format!("{c} × {k}: {d:?}"))
         .collect();
     let at_2 = |name: &str| {
-        seed_rows
+        source_rows
             .iter()
             .find(|row| row.0 == name && row.1 == 2.0)
             .map_or((f64::NAN, f64::NAN), |row| (row.2, row.3))
     };
     let (blue, orange) = (at_2("blue"), at_2("orange"));
     r.claim(
-        "seed_keeps_xy_hue_blue_too_bright_orange_too_dark",
+        "source_keeps_xy_hue_blue_too_bright_orange_too_dark",
         moved.is_empty() && blue.1 > blue.0 && orange.1 < orange.0,
         format!(
-            "seed's rows whose xy hue moves by more than 1e-6°: {}; blue × 2: Y out {:.4} > Y in {:.4}; orange × 2: Y out {:.4} < Y in {:.4}",
+            "the source notes' rows whose xy hue moves by more than 1e-6°: {}; blue × 2: Y out {:.4} > Y in {:.4}; orange × 2: Y out {:.4} < Y in {:.4}",
             if moved.is_empty() { "none".to_string() } else { moved.join(", ") },
             blue.1,
             blue.0,

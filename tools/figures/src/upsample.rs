@@ -196,21 +196,46 @@ fn roundtrip_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
             on_grid.delta_e.0, on_grid.delta_e.1, on_grid.linear.0, on_grid.linear.1
         ),
     );
-    row(
+    let at_random = row(
         &mut md,
         "D65, random (seeded)",
         &random(n_random),
         d65,
         Reflectance::eval,
     )?;
-    row(
+    // The tests' bounds hold on the table's D65 rows: linear error below 1e-3, ΔE below
+    // 0.02.
+    r.claim(
+        "d65_rows_within_test_bounds",
+        [&on_grid, &at_random]
+            .iter()
+            .all(|w| w.linear.0 < 1e-3 && w.delta_e.0 < 0.02),
+        format!(
+            "D65 rows, largest linear error < 1e-3 and largest ΔE < 0.02: grid {:.2e}, {:.2e}; random {:.2e}, {:.2e}",
+            on_grid.linear.0, on_grid.delta_e.0, at_random.linear.0, at_random.delta_e.0
+        ),
+    );
+    let under_e = row(
         &mut md,
         "planted: fitted under illuminant E",
         &grid(),
         &Fitter::new(|_| 1.0),
         Reflectance::eval,
     )?;
-    row(&mut md, "planted: logistic sigmoid", &grid(), d65, logistic)?;
+    let logistic = row(&mut md, "planted: logistic sigmoid", &grid(), d65, logistic)?;
+    // Both planted bugs miss by tens of ΔE: at least 10, below 100.
+    r.number("planted_under_e.max_delta_e", under_e.delta_e.0, ".0");
+    r.number("planted_logistic.max_delta_e", logistic.delta_e.0, ".0");
+    r.claim(
+        "planted_tens_of_de",
+        [&under_e, &logistic]
+            .iter()
+            .all(|w| (10.0..100.0).contains(&w.delta_e.0)),
+        format!(
+            "largest ΔE, each in [10, 100): fitted under E {:.2}, logistic sigmoid {:.2}",
+            under_e.delta_e.0, logistic.delta_e.0
+        ),
+    );
     writeln!(
         md,
         "\n*Round trip: linear sRGB → reflectance (fit on a 1 nm trapezoid grid) → XYZ under \
@@ -219,6 +244,10 @@ fn roundtrip_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     )?;
     let white = srgb_under_d65(|_| 1.0);
     let xy = cie::chromaticity(cie::linear_srgb_to_xyz(white)).ok_or("white is black")?;
+    r.text(
+        "white.d65_chromaticity",
+        format!("({:.5}, {:.5})", xy.x, xy.y),
+    );
     writeln!(
         md,
         "\n*White, the constant reflectance 1, comes back as ({:.5}, {:.5}, {:.5}): the CIE D65 \
