@@ -1,5 +1,6 @@
 //! Figures and tables of the chapter *Dispersion*.
 
+use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write as _;
 
 use super::{Output, Record, Settings};
@@ -111,7 +112,7 @@ fn index_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::ranged_chart(&panels)
 }
 
-fn catalogue_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn catalogue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let bk7 = disp::material(N_BK7);
     let fs = disp::material(FUSED_SILICA);
     let water = disp::material(WATER);
@@ -201,17 +202,39 @@ fn catalogue_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         "| material | quantity | from the Sellmeier fit | published | difference | tolerance | published in |"
     )?;
     writeln!(md, "|---|---|---:|---:|---:|---:|---|")?;
-    for (material, quantity, got, published, tol, source) in rows {
+    // Every published value within its tolerance, and what that read.
+    let mut within = true;
+    let mut read = Vec::new();
+    for &(material, quantity, got, published, tol, source) in &rows {
         let digits = if quantity == "V_d" { 3 } else { 6 };
         let (p, diff) = match published {
             Some(p) => (format!("{p}"), format!("{:+.1e}", got - p)),
             None => ("—".into(), "—".into()),
         };
+        if let Some(p) = published {
+            let bound: f64 = tol.parse()?;
+            within &= (got - p).abs() <= bound;
+            read.push(format!("{material} {quantity} |{:+.2e}| <= {tol}", got - p));
+        }
         writeln!(
             md,
             "| {material} | {quantity} | {got:.digits$} | {p} | {diff} | {tol} | {source} |"
         )?;
     }
+    r.claim("within_tolerance", within, read.join("; "));
+    // Water: the lowest n_d and the lowest Abbe number of the three (from the fits).
+    let (nd, vd) = (
+        [d(water), d(bk7), d(fs)],
+        [water.abbe(), bk7.abbe(), fs.abbe()],
+    );
+    r.claim(
+        "water_lowest_index_and_abbe",
+        nd[0] < nd[1] && nd[0] < nd[2] && vd[0] < vd[1] && vd[0] < vd[2],
+        format!(
+            "n_d: water {:.6} < N-BK7 {:.6}, fused silica {:.6}; V_d: water {:.3} < N-BK7 {:.3}, fused silica {:.3}",
+            nd[0], nd[1], nd[2], vd[0], vd[1], vd[2]
+        ),
+    );
     writeln!(
         md,
         "\n*Lines: d = {LINE_D_NM} nm (He), F = {LINE_F_NM} nm, C = {LINE_C_NM} nm (H). \
@@ -290,9 +313,9 @@ fn prism_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
-        "| material | line | n | incidence at minimum (numerical) | D_min numerical | D_min closed form | n recovered from D_min | limiting incidence |"
+        "| material | line | n | incidence at minimum (numerical) | D_min numerical | D_min closed form | n recovered from D_min | limiting incidence | misses the exit face below |"
     )?;
-    writeln!(md, "|---|---|---:|---:|---:|---:|---:|---:|")?;
+    writeln!(md, "|---|---|---:|---:|---:|---:|---:|---:|---:|")?;
     // Per material: the spread of the visible spectrum, D_min(F) − D_min(C) in degrees
     // (from the numerical minima), and the Abbe number.
     let mut spreads = Vec::new();
@@ -305,6 +328,11 @@ fn prism_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
             let de = disp::minimum_deviation_analytic(n, apex).ok_or("no ray through")?;
             let back = disp::index_from_minimum_deviation(apex, de);
             let lim = disp::prism_limiting_incidence(n, apex).ok_or("no ray through")?;
+            // Inside, the ray misses the exit face once θ2 <= A − 90°, i.e. below
+            // sin θ1 = n sin(A − 90°) (a wide enough prism only).
+            let s_miss = n * (apex - FRAC_PI_2).sin();
+            let miss = (s_miss.abs() <= 1.0).then(|| s_miss.asin());
+            check_caption(n, apex, lim, miss)?;
             match line {
                 "F" => at_f = dn.to_degrees(),
                 "C" => at_c = dn.to_degrees(),
@@ -312,11 +340,12 @@ fn prism_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
             }
             writeln!(
                 md,
-                "| {name} | {line} | {n:.5} | {:.4}° | {:.6}° | {:.6}° | {back:.5} | {:.2}° |",
+                "| {name} | {line} | {n:.5} | {:.4}° | {:.6}° | {:.6}° | {back:.5} | {:.2}° | {} |",
                 i.to_degrees(),
                 dn.to_degrees(),
                 de.to_degrees(),
-                lim.to_degrees()
+                lim.to_degrees(),
+                miss.map_or("—".into(), |m| format!("{:.2}°", m.to_degrees()))
             )?;
         }
         let key = if name == N_BK7 {
@@ -338,10 +367,48 @@ fn prism_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     writeln!(
         md,
         "\n*Apex angle {APEX_DEG:.0}°. Numerical: golden-section search of the traced deviation over the \
-         incidences that get through; closed form: 2 asin(n sin(A/2)) − A. Below the limiting \
-         incidence the ray is totally reflected at the second face.*"
+         incidences that get through; closed form: 2 asin(n sin(A/2)) − A. Incidence is positive \
+         away from the apex. Between the limiting incidence and the incidence below which the ray \
+         misses the exit face (on the apex side, asin(n sin(A − 90°))), it is totally reflected \
+         at the exit face; every ray traced at 0.01° steps from −90° to 90° does as this says.*"
     )?;
     Ok(md.into_bytes())
+}
+
+/// Traces rays at 0.01° steps from −90° to 90° through the prism and fails unless each
+/// does what the caption says: through above `limiting`, totally reflected at the exit
+/// face between `miss` and `limiting`, missing the exit face below `miss` (rays within
+/// 0.001° of a threshold are left out: rounding decides them).
+fn check_caption(n: f64, apex: f64, limiting: f64, miss: Option<f64>) -> Result<(), BoxError> {
+    let lowest = miss.unwrap_or(-FRAC_PI_2);
+    let near = |a: f64, b: f64| (a - b).abs() < 1e-3f64.to_radians();
+    for k in -9000..=9000 {
+        let i = (f64::from(k) * 0.01).to_radians();
+        if near(i, limiting) || near(i, lowest) {
+            continue;
+        }
+        let path = disp::prism(n, apex, i);
+        let ok = match path {
+            PrismPath::Through { .. } => i > limiting,
+            PrismPath::TotalInternalReflection {
+                face: disp::Face::Exit,
+                ..
+            } => i < limiting && i > lowest,
+            PrismPath::MissesExitFace => miss.is_some_and(|m| i < m),
+            PrismPath::TotalInternalReflection { .. } => false,
+        };
+        if !ok {
+            return Err(format!(
+                "n = {n}, apex {:.1}°: at incidence {:.2}° the ray is {path:?}, not what the caption of dispersion_prism.md says (limiting incidence {:.2}°, misses below {:?})",
+                apex.to_degrees(),
+                i.to_degrees(),
+                limiting.to_degrees(),
+                miss.map(f64::to_degrees)
+            )
+            .into());
+        }
+    }
+    Ok(())
 }
 
 fn rainbow_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
@@ -393,7 +460,7 @@ fn rainbow_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn rainbow_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn rainbow_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let water = disp::material(WATER);
     let mut md = String::new();
     writeln!(
@@ -401,20 +468,39 @@ fn rainbow_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         "| wavelength (nm) | n (water, 20 °C) | incidence at minimum, closed form | numerical | bow radius 180° − D_min |"
     )?;
     writeln!(md, "|---:|---:|---:|---:|---:|")?;
+    let mut radii = Vec::new();
     for l in [
         380.0, 400.0, 450.0, 500.0, 550.0, 600.0, 650.0, 700.0, 780.0,
     ] {
         let n = water.index(l);
         let i = disp::rainbow_incidence_analytic(n);
         let (i_num, _) = disp::rainbow_minimum_numeric(n);
+        let radius = disp::rainbow_angle(n).to_degrees();
+        radii.push((l, radius));
+        if [400.0, 550.0, 700.0].contains(&l) {
+            r.number(&format!("radius_{l:.0}"), radius, ".2");
+        }
         writeln!(
             md,
-            "| {l:.0} | {n:.5} | {:.4}° | {:.4}° | {:.3}° |",
+            "| {l:.0} | {n:.5} | {:.4}° | {:.4}° | {radius:.3}° |",
             i.to_degrees(),
             i_num.to_degrees(),
-            disp::rainbow_angle(n).to_degrees()
         )?;
     }
+    let at = |l: f64| {
+        radii
+            .iter()
+            .find(|&&(w, _)| w == l)
+            .map(|&(_, d)| d)
+            .ok_or_else(|| format!("no row for {l} nm"))
+    };
+    r.number("band_400_700", at(700.0)? - at(400.0)?, ".2");
+    let red = at(650.0)?;
+    r.claim(
+        "red_42_3_is_650",
+        (red - 42.3).abs() <= 0.05,
+        format!("the bow radius at 650 nm, {red:.3}°, within 0.05° of 42.3°"),
+    );
     writeln!(
         md,
         "\n*Closed form: cos² i = (n² − 1)/3; numerical: golden-section minimum of D(i) = 180° + 2i − 4r. \

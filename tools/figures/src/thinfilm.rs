@@ -230,7 +230,7 @@ fn angle_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::ranged_chart(&panels)
 }
 
-fn seed_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn seed_md(_: &Settings, rec: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     let quarter = film(SOAP, 550.0 / (4.0 * SOAP.1));
     let soap300 = film(SOAP, 300.0);
     let tir = Film::new(1.52, 1.38, 1.0, 100.0);
@@ -247,6 +247,8 @@ fn seed_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         "| film, 550 nm | angle | seed's R | R_s | R_p | R (unpolarised) | T (unpolarised) |"
     )?;
     writeln!(md, "|---|---:|---:|---:|---:|---:|---:|")?;
+    // Per row: (seed's R, R_s, R_p, R, T).
+    let mut got = Vec::new();
     for (name, f, deg) in [
         ("quarter-wave soap film (103.4 nm)", quarter, 0.0),
         ("quarter-wave soap film (103.4 nm)", quarter, 60.0),
@@ -257,6 +259,13 @@ fn seed_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     ] {
         let t = f64::to_radians(deg);
         let r = f.response(550.0, t);
+        got.push((
+            seed_reflectance(&f, 550.0, t),
+            r.reflectance_s,
+            r.reflectance_p,
+            r.reflectance(),
+            r.transmittance(),
+        ));
         writeln!(
             md,
             "| {name} | {deg:.0}° | {} | {} | {} | {} | {} |",
@@ -267,12 +276,48 @@ fn seed_md(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
             fmt(r.transmittance())
         )?;
     }
+    let quarter_max = quarter_wave_reflectance(SOAP.0, SOAP.1, SOAP.2);
+    let (normal, grazing, soap) = (got[0], got[2], got[3]);
+    rec.number("seed_r_normal", normal.0, ".4");
+    rec.number("quarter_wave_r", normal.3, ".4");
+    rec.number("seed_r_plus_t_normal", normal.0 + normal.4, ".4");
+    rec.number("seed_r_89", grazing.0, ".2");
+    rec.number("soap300_60_r_s", soap.1, ".4");
+    rec.number("soap300_60_r_p", soap.2, ".4");
+    rec.number("soap300_60_r", soap.3, ".4");
+    rec.claim(
+        "seed_above_quarter_wave",
+        normal.0 > normal.3 && normal.0 > quarter_max && normal.0 + normal.4 > 1.0,
+        format!(
+            "quarter-wave soap film at 0°: the seed's R {:.5} > R {:.5} (the quarter-wave maximum {quarter_max:.5}), and the seed's R + T = {:.5} > 1",
+            normal.0,
+            normal.3,
+            normal.0 + normal.4
+        ),
+    );
+    rec.claim(
+        "seed_above_one_at_89",
+        grazing.0 > 1.0,
+        format!(
+            "quarter-wave soap film at 89°: the seed's R {:.4} > 1",
+            grazing.0
+        ),
+    );
+    rec.claim(
+        "s_only_almost_twice",
+        soap.2 < 0.1 * soap.1 && (1.8..2.0).contains(&(soap.1 / soap.3)),
+        format!(
+            "soap film, 300 nm, 60°: R_p {:.5} < 0.1 x R_s {:.5}, and R_s / R = {:.4} in [1.8, 2)",
+            soap.2,
+            soap.1,
+            soap.1 / soap.3
+        ),
+    );
     writeln!(
         md,
         "\n*The seed's formula: s-polarised coefficients, real cosines, and −2 r12 r23 cos φ in the \
          denominator. The other columns: the library (`Film::response`), checked against a transfer \
-         matrix in `tests/book/optics/thinfilm.rs`. Quarter-wave maximum for the soap film: {:.4}.*",
-        quarter_wave_reflectance(SOAP.0, SOAP.1, SOAP.2)
+         matrix in `tests/book/optics/thinfilm.rs`. Quarter-wave maximum for the soap film: {quarter_max:.4}.*"
     )?;
     Ok(md.into_bytes())
 }
@@ -295,9 +340,10 @@ fn precision_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
         "| cos θ2 | d (nm) | R, rearranged sum | plain sum − rearranged | ε / cos θ2 |"
     )?;
     writeln!(md, "|---:|---:|---:|---:|---:|")?;
-    // (cos θ2, |plain − rearranged| of each thickness), from the least grazing row down.
-    let mut rows: Vec<(f64, Vec<f64>)> = Vec::new();
-    for c2 in [1e-1, 1e-2, 1e-4, 1e-6, 1e-8] {
+    // (nominal cos θ2, cos θ2, |plain − rearranged| of each thickness), from the least
+    // grazing row down.
+    let mut rows: Vec<(f64, f64, Vec<f64>)> = Vec::new();
+    for c2 in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8] {
         // n1 sin θ1 = n2 sqrt(1 − c2²).
         let t = (n2 * (1.0f64 - c2 * c2).sqrt() / n1).asin();
         let c2_actual = cos_theta(n1, t.cos(), n2).re;
@@ -314,41 +360,44 @@ fn precision_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
                 f64::EPSILON / c2_actual
             )?;
         }
-        rows.push((c2_actual, errors));
+        rows.push((c2, c2_actual, errors));
     }
-    // The error grows like ε / cos θ2: below it on every row; from the least to the most
-    // grazing row, growing by at least a tenth of its growth (every error of the last row
-    // against every error of the first); and on the most grazing row, within a factor 100
-    // of it (so that the bound is not one a constant error would also meet).
+    // The error grows like ε / cos θ2: it stays below it on every row, and once
+    // cos θ2 <= 1e-4 it is at least 1e-3 of it on every row (so that neither a constant
+    // error nor one growing like ε / sqrt(cos θ2) would pass); and the least-squares slope
+    // of log(worst error of a row) against log(cos θ2), over cos θ2 <= 1e-2, lies in
+    // (−1.3, −0.7).
     let bound = |c2: f64| f64::EPSILON / c2;
+    let ratio = |c2: f64, e: f64| e / bound(c2);
     let below = rows
         .iter()
-        .all(|(c2, e)| e.iter().all(|&x| x <= bound(*c2)));
-    let (first, last) = (&rows[0], &rows[rows.len() - 1]);
-    let max_of = |e: &[f64]| e.iter().copied().fold(0.0, f64::max);
-    let min_of = |e: &[f64]| e.iter().copied().fold(f64::INFINITY, f64::min);
-    let growth = min_of(&last.1) / max_of(&first.1);
-    let bound_growth = bound(last.0) / bound(first.0);
-    let near = min_of(&last.1) / bound(last.0);
+        .all(|(_, c2, e)| e.iter().all(|&x| ratio(*c2, x) <= 1.0));
+    let above = rows
+        .iter()
+        .filter(|(nominal, _, _)| *nominal <= 1e-4)
+        .all(|(_, c2, e)| e.iter().all(|&x| ratio(*c2, x) >= 1e-3));
+    let points: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|(nominal, _, _)| *nominal <= 1e-2)
+        .map(|(_, c2, e)| (c2.log10(), e.iter().copied().fold(0.0, f64::max).log10()))
+        .collect();
+    let slope = least_squares_slope(&points);
+    r.number("plain_error_slope", slope, ".2");
     let ratios: Vec<String> = rows
         .iter()
-        .map(|(c2, e)| {
-            let list: Vec<String> = e.iter().map(|x| format!("{:.3}", x / bound(*c2))).collect();
+        .map(|(_, c2, e)| {
+            let list: Vec<String> = e.iter().map(|&x| format!("{:.4}", ratio(*c2, x))).collect();
             format!("{c2:.1e}: {}", list.join(", "))
         })
         .collect();
     r.claim(
         "plain_error_grows_like_eps_over_cos",
-        below && growth >= 0.1 * bound_growth && near >= 0.01,
+        below && above && slope > -1.3 && slope < -0.7,
         format!(
-            "|plain − rearranged| / (ε / cos θ2) by row ({}), each <= 1; from cos θ2 = {:.1e} to \
-             {:.1e} the smallest error grows {growth:.3e} times over the largest, >= 0.1 x the \
-             {bound_growth:.3e} of ε / cos θ2; at {:.1e} the smallest error is {near:.3} x ε / cos θ2 \
-             >= 0.01",
-            ratios.join("; "),
-            first.0,
-            last.0,
-            last.0
+            "|plain − rearranged| / (ε / cos θ2) by row ({}): each <= 1, and >= 1e-3 where \
+             cos θ2 <= 1e-4; slope of log worst error against log cos θ2 over cos θ2 <= 1e-2: \
+             {slope:.3}, in (−1.3, −0.7)",
+            ratios.join("; ")
         ),
     );
     writeln!(
@@ -358,6 +407,18 @@ fn precision_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
          transfer matrix to 1e-12 (`tests/book/optics/thinfilm.rs`).*"
     )?;
     Ok(md.into_bytes())
+}
+
+/// The least-squares slope of `y` against `x` over `points`.
+fn least_squares_slope(points: &[(f64, f64)]) -> f64 {
+    let n = points.len() as f64;
+    let (mx, my) = (
+        points.iter().map(|p| p.0).sum::<f64>() / n,
+        points.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = points.iter().map(|p| (p.0 - mx) * (p.0 - mx)).sum();
+    sxy / sxx
 }
 
 /// Colour strips against thickness, one per film, each scaled so that its brightest
