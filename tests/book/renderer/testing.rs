@@ -228,10 +228,26 @@ fn planted_biases_are_twice_their_thresholds() {
             .map_or(f64::INFINITY, |p| p / 100.0)
     };
     let mut rows: Vec<(&str, String, f64)> = Vec::new();
-    rows.extend(SENSITIVE.iter().map(|n| ("exact", n.to_string(), EXACT_GLOBAL)));
-    rows.extend(agreement_images().iter().map(|r| ("agreement", r.name.clone(), AGREEMENT)));
-    rows.extend(QUIET_REFERENCES.iter().map(|n| ("references", n.to_string(), QUIET_REFERENCE)));
-    rows.extend(reference_images().iter().map(|r| ("references", r.name.clone(), NOISY_REFERENCE)));
+    rows.extend(
+        SENSITIVE
+            .iter()
+            .map(|n| ("exact", n.to_string(), EXACT_GLOBAL)),
+    );
+    rows.extend(
+        agreement_images()
+            .iter()
+            .map(|r| ("agreement", r.name.clone(), AGREEMENT)),
+    );
+    rows.extend(
+        QUIET_REFERENCES
+            .iter()
+            .map(|n| ("references", n.to_string(), QUIET_REFERENCE)),
+    );
+    rows.extend(
+        reference_images()
+            .iter()
+            .map(|r| ("references", r.name.clone(), NOISY_REFERENCE)),
+    );
     for (check, name, planted) in rows {
         let t = threshold(check, &name);
         assert!(
