@@ -46,7 +46,9 @@ fn read_bounded(
                 if lines > expected {
                     return Ok(Err(Overflow {
                         line: lines,
-                        problem: format!("it wrote more than {expected} answers"),
+                        problem: format!(
+                            "{expected} questions were asked, but the output goes on past {expected} answers"
+                        ),
                     }));
                 }
             } else {
@@ -123,9 +125,7 @@ impl Program {
                 return Err(DataError::new(
                     &self.output_name(),
                     line,
-                    format!(
-                        "{problem}, in run {run} ({expected} questions): stopped reading and killed it"
-                    ),
+                    format!("{problem} (run {run}): stopped reading and killed it"),
                 ));
             }
             Ok(Err(e)) => {
