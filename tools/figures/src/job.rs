@@ -377,12 +377,22 @@ mod tests {
             fs::read_to_string(dir.join("a.md")).unwrap(),
             format!("new{quick_mark}")
         );
-        let names: Vec<_> = fs::read_dir(&dir)
+        let mut names: Vec<_> = fs::read_dir(&dir)
             .unwrap()
             .filter_map(Result::ok)
             .map(|e| e.file_name().to_string_lossy().into_owned())
             .collect();
-        assert_eq!(names, ["a.md"], "temporary files left behind");
+        names.sort();
+        // The output and the values file (empty: `good` records nothing), nothing else.
+        assert_eq!(
+            names,
+            ["a.md", "values.json"],
+            "temporary files left behind"
+        );
+        assert_eq!(
+            raylemma_values::read(&dir).unwrap(),
+            raylemma_values::Values::new()
+        );
         fs::remove_dir_all(&dir).unwrap();
     }
 }
