@@ -32,6 +32,9 @@ pub const SHIPPED: &[&str] = &[
     "scenes",
     "figures",
     "tools/book",
+    // The small crates the library and its tests depend on by path.
+    "tools/output",
+    "tools/values",
     "book.toml",
     "Cargo.lock",
     "Cargo.toml", // not shipped as it is: the edition's is made from it by `manifest`
