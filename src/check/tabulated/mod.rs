@@ -230,3 +230,23 @@ fn claims<T: Table>(
         .extend([bins, within, pdf, zero, range, monotone]);
     verdict
 }
+
+/// A hard linear segment for the round trip of `segment_inverse` (chapter *Tabulated
+/// distributions*): `a = 0` in a tenth of draws, else log-uniform on `[1e-300, 1e300]`; `b =
+/// a` in a quarter, `b = a (1 + 1e-12 u)` in a quarter (the nearly constant segments the
+/// stable form is for), else independent. `None` for a segment without mass, which is never
+/// sampled. The test `segment_inverse_round_trips` and the precision table draw from it.
+pub fn hard_segment(rng: &mut rng::Rng) -> Option<(f64, f64)> {
+    use rand::RngExt as _;
+    let a = if rng.random::<f64>() < 0.1 {
+        0.0
+    } else {
+        rng::log_uniform(rng, 1e-300, 1e300)
+    };
+    let b = match rng.random::<u8>() % 4 {
+        0 => a,
+        1 => a * (1.0 + 1e-12 * rng.random::<f64>()),
+        _ => rng::log_uniform(rng, 1e-300, 1e300),
+    };
+    (a != 0.0 || b != 0.0).then_some((a, b))
+}

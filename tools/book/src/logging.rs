@@ -49,7 +49,7 @@ impl Subscriber for StderrLogger {
         Id::from_u64(1)
     }
 
-    fn record(&self, _: &Id, _: &Record<'_>) {}
+    fn record(&self, _: &Id, _: &Record) {}
 
     fn record_follows_from(&self, _: &Id, _: &Id) {}
 

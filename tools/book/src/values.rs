@@ -298,22 +298,21 @@ mod tests {
     use raylemma_values::Record;
 
     fn values() -> Values {
-        let none = Values::new();
         let mut values = Values::new();
-        let mut r = Record::new("speed.md", &none);
+        let mut r = Record::new("speed.md");
         r.number("malley.ns", 45.44, ".1");
         r.number("seed.ns", 40.7, ".1");
         r.claim("malley_slower", true, "45.4 > 40.7");
         r.claim("malley_faster", false, "45.4 < 40.7");
         let timed = b"*AMD EPYC, single thread (fingerprint 0a1b2c3d).*";
         values.insert("speed".into(), r.finish(timed, false).unwrap());
-        let mut r = Record::new("other.md", &none);
+        let mut r = Record::new("other.md");
         r.number("ns", 12.0, "int");
         values.insert(
             "other".into(),
             r.finish(b"(fingerprint 99999999)", false).unwrap(),
         );
-        let mut r = Record::new("q.md", &none);
+        let mut r = Record::new("q.md");
         r.claim("noisy", false, "1 > 2");
         values.insert("q".into(), r.finish(b"", true).unwrap());
         values

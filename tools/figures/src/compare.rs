@@ -113,7 +113,7 @@ fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, String
 
 /// The comparisons the renderer chapter states about the calibration table, each as strong
 /// as its sentence.
-fn calibration_claims(r: &mut Record<'_>, all: &[(&str, usize, Counts)], n: u32) {
+fn calibration_claims(r: &mut Record, all: &[(&str, usize, Counts)], n: u32) {
     let get = |scene: &str, set: usize| {
         all.iter()
             .find(|(s, k, _)| *s == scene && *k == set)
@@ -260,7 +260,7 @@ fn set_name(set: usize) -> String {
     }
 }
 
-fn calibration_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let trials: u64 = if settings.quick { 2 } else { 100 };
     let n = u32::try_from(trials)?;
     let rate = |k: u32| {
@@ -297,7 +297,7 @@ fn calibration_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, Bo
                 )
             };
             let key = format!("{}.{}", name.replace('-', "_"), set_name(set));
-            let count = |r: &mut Record<'_>, what: &str, k: u32| {
+            let count = |r: &mut Record, what: &str, k: u32| {
                 r.number(&format!("{key}.{what}"), f64::from(k), "int")
             };
             count(r, "false_alarms", c.false_alarms);

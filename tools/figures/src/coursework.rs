@@ -96,7 +96,7 @@ fn cosine_verdict() -> Verdict {
 /// The chapter's *Statistical verdicts*: what a correct sampler's chi-squared p-value looks
 /// like over seeds 1 to 12 at the tests' settings, against a small real bug (the `cos^1.1`
 /// lobe claimed as a cosine lobe), whose Jacobian check fails too.
-fn seeds_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn seeds_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     use std::fmt::Write as _;
     let correct = SquareWarp::new("disc, polar", Domain::Disc, disc_polar, disc_pdf);
     let lobe = SquareWarp::new(
@@ -248,7 +248,7 @@ pub(crate) fn worst_failure(finding: &Finding) -> Result<&str, BoxError> {
 
 /// The disc with `r = u1`: the derivation read off the Jacobian and round-trip lines, and
 /// where the chi-squared line puts the worst cell.
-fn disc_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn disc_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let verdict = disc_verdict();
     let jacobian = verdict.finding("jacobian");
     let at = first_failure(jacobian)?;
@@ -300,7 +300,7 @@ fn disc_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, 
 }
 
 /// The cosine pdf without `1/pi`: the pdf's integral and pdf x area element, both pi.
-fn cosine_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn cosine_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     use std::f64::consts::PI;
     let verdict = cosine_verdict();
     let integral = number_after(
@@ -333,7 +333,7 @@ fn cosine_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>
 
 /// The seed's Schlick: of the claims an approximation keeps, it breaks `tir` and
 /// `reciprocity`, as their counterexamples show.
-fn schlick_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn schlick_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let verdict = check::fresnel::reflectance(&schlick_seed, &Options::default());
     // The five claims the chapter names, and the two of them it says the seed breaks.
     let named = ["range", "normal", "grazing", "tir", "reciprocity"];
@@ -399,7 +399,7 @@ fn schlick_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8
 }
 
 /// The far root: about a quarter of `nearest_root`'s cases fail.
-fn sphere_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn sphere_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let f = check::sphere::planted::always_far_root;
     let verdict = check::sphere::intersection(&f, &Options::default());
     let nearest = verdict.finding("nearest_root");
@@ -438,29 +438,23 @@ fn sphere_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>
     verdict_txt(settings, verdict)
 }
 
-/// The far root, as `always_far_root`, but computed as the stable form computes its roots
-/// (chapter *Ray-sphere intersection*): wrong only where the near root is the answer.
+/// The far root, as `always_far_root`, but computed by the stable form itself
+/// (`intersect_stable`, chapter *Ray-sphere intersection*): its nearest root above `-∞` is
+/// the near root, its nearest above that the far one (the same root for a tangent ray).
+/// Wrong only where the near root is the answer.
 fn stable_far_root(
     ray: &raylemma::geometry::Ray,
     sphere: &raylemma::geometry::Sphere,
     t_min: f64,
 ) -> Option<f64> {
-    let (a, f) = (ray.dir.dot(ray.dir), ray.origin - sphere.center);
-    let b = -f.dot(ray.dir);
-    let r2 = sphere.radius * sphere.radius;
-    let l = f + ray.dir * (b / a);
-    let delta = r2 - l.dot(l);
-    if delta.is_nan() || delta < 0.0 {
-        return None;
-    }
-    let c = f.dot(f) - r2;
-    let q = b + (a * delta).sqrt().copysign(b);
-    let far = (c / q).max(q / a);
+    use raylemma::geometry::sphere::intersect_stable;
+    let near = intersect_stable(ray, sphere, f64::NEG_INFINITY)?;
+    let far = intersect_stable(ray, sphere, near).unwrap_or(near);
     (far > t_min).then_some(far)
 }
 
 /// Refraction without the square root: how far `|w_t|` is off, and `tir_iff` passing.
-fn refract_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn refract_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let f = check::reflect::planted::refract_without_sqrt;
     let verdict = check::reflect::refraction(&f, &Options::default());
     let worst = verdict
@@ -481,7 +475,7 @@ fn refract_verdict_txt(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8
 
 /// The marked region of `disc_polar` in the hand-out: `src/sampling/disc.rs` through the
 /// stub writer.
-fn stub_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn stub_txt(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let root = &settings.root;
     let summary = std::fs::read_to_string(root.join("chapters/SUMMARY.md"))?;
     let file = "src/sampling/disc.rs";
@@ -506,7 +500,7 @@ fn stub_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
 /// The report card of a student who wrote four exercises right, made a seed's mistake in
 /// five, and has not started the others: each mistake judged by its exercise's checkers,
 /// each exercise not started by a stub's panic, as the hand-out would have them.
-fn card_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn card_txt(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let markers = edition::markers_under(&settings.root)?;
     let o = Options::default();
     let card = card::run_with(&markers, |m| {
@@ -548,7 +542,7 @@ fn card_txt(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
 ///
 /// The ratios it prints are recorded from the same counts, drawn again here (with the same
 /// samples: the seed is fixed), and must be the ones printed.
-fn disc_rows_txt(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn disc_rows_txt(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let text = tests_mine::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
     let options = warp::WarpOptions::from(warp_options());
     let disc = SquareWarp::new(

@@ -573,7 +573,7 @@ fn ensure(ok: bool, what: &str) -> Result<(), BoxError> {
 // ---------------------------------------------------------------------------------------
 // Shadow-ray pdfs: from area to solid angle.
 
-fn solid_angle(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn solid_angle(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut d = Svg::new(380.0);
     let p = v(130.0, 250.0);
     let unit = 84.0;
@@ -672,7 +672,7 @@ fn solid_angle(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
 // ---------------------------------------------------------------------------------------
 // Cosine-weighted hemisphere: Malley's method.
 
-fn malley(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn malley(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut d = Svg::new(370.0);
     // Side view: the section y = 0 through the disc and the hemisphere above it.
     let o = v(190.0, 300.0);
@@ -787,7 +787,7 @@ fn malley(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
 // ---------------------------------------------------------------------------------------
 // Fresnel and Schlick: s and p, and the beam's footprint.
 
-fn fresnel_sp(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn fresnel_sp(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (n1, n2) = (1.0, 1.5);
     let theta_i: f64 = 50.0;
     let mut d = Svg::new(430.0);
@@ -990,7 +990,7 @@ fn airy_terms(count: usize) -> (Vec<Complex64>, f64, Complex64, Complex64) {
     (terms, two_delta, round_trip, film.r_s)
 }
 
-fn thinfilm_diagram(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn thinfilm_diagram(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (n1, n2, n3) = FILM;
     let mut d = Svg::new(380.0);
 
@@ -1265,7 +1265,7 @@ fn lane_weights(s: Strategy) -> &'static str {
     }
 }
 
-fn hero_lanes(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn hero_lanes(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let rows = Strategy::ALL.len();
     let row_gap = 44.0;
     let first_row = 262.0;
@@ -1428,7 +1428,7 @@ fn check_camera() -> Result<(), BoxError> {
     Ok(())
 }
 
-fn camera(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn camera(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     check_camera()?;
     let mut d = Svg::new(356.0);
     let half = (0.5 * CAMERA_FOV_DEG).to_radians().tan();
@@ -1594,7 +1594,7 @@ fn camera_icon(d: &mut Svg, c: V, dir: V) {
     d.polygon(&lens, GREY, 1.0);
 }
 
-fn path(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn path(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut d = Svg::new(492.0);
     // A room in section: a diffuse floor, ceiling and walls, a mirror tile on the floor and
     // a quad light on the ceiling (seen edge-on).
@@ -1715,7 +1715,6 @@ mod tests {
 
     use super::*;
     use crate::plot::PALETTE;
-    use raylemma_values::Values;
 
     #[test]
     fn the_named_colours_are_the_charts_palette() {
@@ -1755,9 +1754,8 @@ mod tests {
             quick: true,
             root: PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../.."),
         };
-        let values = Values::default();
         for o in outputs() {
-            let mut record = Record::new(o.file, &values);
+            let mut record = Record::new(o.file);
             let svg = String::from_utf8((o.make)(&settings, &mut record).unwrap()).unwrap();
             let file = o.file;
             assert!(

@@ -69,7 +69,7 @@ fn wavelengths(step: usize) -> Vec<f64> {
     (lo..=hi).step_by(step).map(|l| l as f64).collect()
 }
 
-fn index_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn index_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let ls = wavelengths(5);
     let series = MATERIALS
         .iter()
@@ -112,7 +112,7 @@ fn index_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::ranged_chart(&panels)
 }
 
-fn catalogue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn catalogue_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let bk7 = disp::material(N_BK7);
     let fs = disp::material(FUSED_SILICA);
     let water = disp::material(WATER);
@@ -246,7 +246,7 @@ fn catalogue_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
 
 const APEX_DEG: f64 = 60.0;
 
-fn prism_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn prism_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let apex = APEX_DEG.to_radians();
     let ls = wavelengths(5);
     let mut by_wavelength = Vec::new();
@@ -308,7 +308,7 @@ fn prism_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn prism_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn prism_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let apex = APEX_DEG.to_radians();
     let mut md = String::new();
     writeln!(
@@ -411,7 +411,7 @@ fn check_caption(n: f64, apex: f64, limiting: f64, miss: Option<f64>) -> Result<
     Ok(())
 }
 
-fn rainbow_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn rainbow_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let water = disp::material(WATER);
     let ls = wavelengths(5);
     let bow = vec![Series::line(
@@ -460,7 +460,7 @@ fn rainbow_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn rainbow_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn rainbow_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let water = disp::material(WATER);
     let mut md = String::new();
     writeln!(

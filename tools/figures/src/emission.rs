@@ -53,7 +53,7 @@ fn sampler(t: &Table) -> Result<EmissionSampler, BoxError> {
     EmissionSampler::new(t).map_err(|e| e.to_string().into())
 }
 
-fn histograms_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn histograms_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
     let mut panels = Vec::new();
     for (k, lamp) in lamps().iter().enumerate() {
@@ -91,7 +91,7 @@ fn histograms_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
     plot::chart(&panels, 2)
 }
 
-fn swatches_png(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn swatches_png(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
     let lamps = lamps();
     let (side, gap, label) = (200i32, 24i32, 70i32);
@@ -177,7 +177,7 @@ fn cct_duv(xy: glam::DVec2, locus: &[(f64, glam::DVec2)]) -> (f64, f64) {
     (best.1, best.2 * best.0)
 }
 
-fn colour_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn colour_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let locus = planckian_locus();
     let mut md = String::new();
     writeln!(
@@ -302,7 +302,7 @@ fn lamps_where(rows: &[Gain], pred: impl Fn(&Gain) -> bool) -> Vec<String> {
         .collect()
 }
 
-fn gain_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn gain_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = gain_samples(settings);
     let rows = gains(settings)?;
     let mut md = String::new();
@@ -503,7 +503,7 @@ fn gain_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError>
     Ok(md.into_bytes())
 }
 
-fn drawing_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn drawing_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -613,7 +613,7 @@ fn drawing_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
     let us = raylemma::workload::uniform_inputs(4096);
     let gains = gains(settings)?;

@@ -30,10 +30,10 @@ fn example(settings: &Settings) -> Result<SceneFile, BoxError> {
     Ok(file)
 }
 
-fn json_example(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn json_example(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(json::to_json(&example(settings)?).into_bytes())
 }
 
-fn xml_example(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn xml_example(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(mitsuba::to_xml(&example(settings)?)?.into_bytes())
 }

@@ -59,7 +59,7 @@ fn block(md: &mut String, command: &str, verdict: &str) -> std::fmt::Result {
     writeln!(md, "```text\n$ {command}\n{verdict}```\n")
 }
 
-fn sampler_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn sampler_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }
@@ -96,7 +96,7 @@ fn sampler_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxErr
 /// The uniform hemisphere claimed as cosine-weighted: pdf x area element is `2z` (the
 /// claimed `z / pi` times `2 pi`) at the Jacobian's first failure and, almost 0, at its worst
 /// one on the rim; and how many times their share the chi-squared line's worst cell gets.
-fn record_uniform(verdict: &Verdict, r: &mut Record<'_>) -> Result<(), BoxError> {
+fn record_uniform(verdict: &Verdict, r: &mut Record) -> Result<(), BoxError> {
     let jacobian = verdict.finding("jacobian");
     let z_of = ["T(u) = DVec3(", ", ", ", "];
     let first = first_failure(jacobian)?;
@@ -154,7 +154,7 @@ fn record_uniform(verdict: &Verdict, r: &mut Record<'_>) -> Result<(), BoxError>
     Ok(())
 }
 
-fn fresnel_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn fresnel_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }

@@ -114,15 +114,15 @@ fn reflectance_panels(inside: bool) -> Vec<Panel> {
         .collect()
 }
 
-fn outside_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn outside_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::chart(&reflectance_panels(false), 2)
 }
 
-fn inside_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn inside_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::chart(&reflectance_panels(true), 2)
 }
 
-fn error_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn error_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let panels: Vec<Panel> = FIGURE_IORS
         .iter()
         .map(|&n| {
@@ -185,7 +185,7 @@ fn ior_name(label: &str) -> &'static str {
     }
 }
 
-fn errors_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn errors_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -274,7 +274,7 @@ fn errors_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn verdicts_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn verdicts_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     type Reflectance = fn(f64, f64, f64) -> f64;
     let fit: Reflectance = |c, n1, n2| FresnelFit::new(n1, n2).eval(c);
     let routines: [(&str, Reflectance); 7] = [
@@ -529,7 +529,7 @@ fn fit_construction_ns(settings: &Settings) -> f64 {
     })
 }
 
-fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let rows = timed(settings);
     let cosines = timing_cosines(4096);
     let tir_share = cosines
@@ -629,7 +629,7 @@ fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     Ok(md.into_bytes())
 }
 
-fn speed_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let rows = timed(settings);
     let panel = |title: &str, pick: fn(&Timed) -> (f64, f64)| {
         Panel::new(

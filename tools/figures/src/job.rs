@@ -37,7 +37,7 @@ pub struct Output {
     /// What it shows, for progress and error messages.
     pub what: &'static str,
     /// Produces the file's bytes, recording the values the book quotes from it.
-    pub make: fn(&Settings, &mut Record<'_>) -> Result<Vec<u8>, BoxError>,
+    pub make: fn(&Settings, &mut Record) -> Result<Vec<u8>, BoxError>,
 }
 
 /// Every output of every chapter, in book order.
@@ -236,8 +236,6 @@ pub fn write_outputs(
     };
     let version = code_version(&settings.root)?;
     let before = raylemma_values::read(dir)?;
-    // What this run records, seen by later outputs (Record::earlier) over the last run's.
-    let mut values = before.clone();
     let mut made = Vec::new();
     let mut set = FileSet::new();
     for o in outputs {
@@ -257,7 +255,7 @@ pub fn write_outputs(
             continue;
         }
         let start = Instant::now();
-        let mut record = Record::new(o.file, &values);
+        let mut record = Record::new(o.file);
         let mut bytes = (o.make)(settings, &mut record)
             .map_err(|e| format!("figure {} ({}) failed: {e}", o.file, o.what))?;
         if kept {
@@ -273,7 +271,6 @@ pub fn write_outputs(
                 o.file, o.what
             )
         })?;
-        values.insert(stem(o.file).to_string(), entry.clone());
         made.push((o.file, entry));
         set.write(&path, &bytes)?;
         say(format!(
@@ -328,11 +325,11 @@ mod tests {
         assert!(!dir.exists(), "nothing is written for an unknown name");
     }
 
-    fn good(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    fn good(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
         Ok(b"new".to_vec())
     }
 
-    fn bad(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+    fn bad(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
         Err("planted failure".into())
     }
 

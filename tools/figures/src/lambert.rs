@@ -50,7 +50,7 @@ struct Compared {
     cosine_efficiency: f64,
 }
 
-fn estimators_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn estimators_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let reps = if settings.quick { 5 } else { 51 };
     let mut md = String::new();
@@ -170,7 +170,7 @@ struct FurnaceRow {
 }
 
 /// A tail index or standard error as the table prints it: "∞" when infinite.
-fn finite_or_infinity(r: &mut Record<'_>, name: &str, x: f64, format: &str) -> String {
+fn finite_or_infinity(r: &mut Record, name: &str, x: f64, format: &str) -> String {
     if x.is_infinite() {
         r.text(name, "∞")
     } else {
@@ -178,7 +178,7 @@ fn finite_or_infinity(r: &mut Record<'_>, name: &str, x: f64, format: &str) -> S
     }
 }
 
-fn furnace_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn furnace_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     const LEVEL: f64 = 0.01;
     let mut md = String::new();
@@ -384,7 +384,7 @@ fn sky_variance_points(settings: &Settings) -> &'static [SkyPoint] {
     })
 }
 
-fn sky_variance_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn sky_variance_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut series = vec![
         Series::line("uniform, formula", Vec::new()),
         Series::points("uniform, measured", Vec::new()),

@@ -78,7 +78,7 @@ fn ray_set(tracer: &Tracer, camera: &Camera, paths: usize, depth: u32) -> Vec<Ti
     rays
 }
 
-fn limit_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn limit_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (side, spp, reps) = if settings.quick {
         (32, 4, 3)
     } else {

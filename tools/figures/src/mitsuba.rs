@@ -77,7 +77,7 @@ fn mitsuba_rgb(s: &Spectrum) -> DVec3 {
     m * (sum * MITSUBA_Y_NORMALIZATION)
 }
 
-fn colour_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn colour_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let scenes = [
         "cornell",
         "lamps/amber-led",

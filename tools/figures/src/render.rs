@@ -197,7 +197,7 @@ fn speed_md(
     series: &[(u32, f64, f64)],
     reference: &Rendered,
     settings: &Settings,
-    r: &mut Record<'_>,
+    r: &mut Record,
 ) -> String {
     let pixels = f64::from(reference.image.width) * f64::from(reference.image.height);
     let mut md = String::from(
@@ -241,7 +241,7 @@ pub fn outputs() -> Vec<Output> {
     }]
 }
 
-fn error_time_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn error_time_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let path = settings.root.join("figures").join("render_speed.md");
     let md = std::fs::read_to_string(&path)
         .map_err(|e| format!("{}: {e} (`references` writes it)", path.display()))?;
@@ -369,7 +369,7 @@ pub fn write_references(
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
     let values = raylemma_values::read(figures)?;
-    let mut record = Record::new("render_speed.md", &values);
+    let mut record = Record::new("render_speed.md");
     let speed = speed_md(&series, &rendered[0], settings, &mut record).into_bytes();
     let flat: [(&str, Vec<u8>); 3] = [
         (

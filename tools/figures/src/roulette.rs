@@ -35,7 +35,7 @@ const FURNACE: Furnace = Furnace {
     albedo: 0.5,
 };
 
-fn single_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn single_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -141,7 +141,7 @@ fn reliable(q: f64) -> bool {
     fixed_survival_tail_index(&FURNACE, q) > 4.0
 }
 
-fn efficiency_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn efficiency_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let s = study(settings);
     let fine: Vec<f64> = (1..200)
         .map(|i| 0.34 + (0.995 - 0.34) * f64::from(i) / 200.0)
@@ -190,7 +190,7 @@ fn efficiency_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
     plot::chart(&panels, 1)
 }
 
-fn efficiency_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let s = study(settings);
     let a = FURNACE.albedo;
     let mut md = String::new();

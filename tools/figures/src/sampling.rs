@@ -172,7 +172,7 @@ fn value_name(label: &str) -> String {
         .join("_")
 }
 
-fn methods_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn methods_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -387,7 +387,7 @@ fn cosine_power_lobe_1_05(u: DVec2) -> DVec3 {
     DVec3::new(r * phi.cos(), r * phi.sin(), z)
 }
 
-fn power_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn power_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let runs = if settings.quick { 10 } else { 50 };
     let sizes = [10_000, 100_000, 400_000, 1_000_000];
     let alpha = stats::test_alpha();
@@ -463,7 +463,7 @@ fn calibration_p_values(settings: &Settings) -> Vec<(String, Vec<f64>)> {
         .collect()
 }
 
-fn calibration_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn calibration_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let all: Vec<f64> = calibration_p_values(settings)
         .into_iter()
         .flat_map(|(_, ps)| ps)
@@ -494,7 +494,7 @@ fn calibration_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, B
     plot::chart(&panels, 1)
 }
 
-fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let alpha = stats::test_alpha();
     let mut md = String::new();
     writeln!(
@@ -534,7 +534,7 @@ fn calibration_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, Bo
     Ok(md.into_bytes())
 }
 
-fn distortion_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn distortion_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let grid: Vec<DVec2> = (0..200)
         .flat_map(|i| {
             (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))
@@ -615,7 +615,7 @@ fn distortion_md(_: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> 
     Ok(md.into_bytes())
 }
 
-fn warped_grids_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn warped_grids_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     use plotters::prelude::*;
     plot::svg(plot::WIDTH, 420, |root, _| {
         type Map = fn(DVec2) -> DVec3;
@@ -654,7 +654,7 @@ fn phi_z(w: DVec3) -> (f64, f64) {
     (if phi < 0.0 { phi + TAU } else { phi }, w.z)
 }
 
-fn scatter_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn scatter_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut rng = rng::seeded(0x5CA7);
     let n = 2500;
     let sphere_icdf: Vec<_> = (0..n)
@@ -702,7 +702,7 @@ fn scatter_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn histograms_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn histograms_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let bins = 40;
     let histogram = |sample: &dyn Fn(&mut Rng) -> f64| {

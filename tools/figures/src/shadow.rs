@@ -125,7 +125,7 @@ fn row_key(side: &str, strategy: &str) -> String {
     format!("{light}.{strategy}")
 }
 
-fn strategies_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn strategies_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -272,7 +272,7 @@ fn strategies_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, Box
     Ok(md.into_bytes())
 }
 
-fn convergence_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn convergence_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut panels = Vec::new();
     for ((label, _), rows) in SIDES.iter().zip(measured(settings)?) {
         let series = rows
@@ -304,7 +304,7 @@ fn convergence_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, B
     plot::chart(&panels, 2)
 }
 
-fn sphere_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn sphere_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let samples = if settings.quick { 20_000 } else { 400_000 };
     let mut md = String::new();
     writeln!(

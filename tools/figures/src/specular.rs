@@ -41,7 +41,7 @@ fn lobe_mean(kappa: f64, theta: f64, divide: bool, n: usize) -> f64 {
         / n as f64
 }
 
-fn lobe_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn lobe_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 2_000 } else { 20_000 };
     let angles: Vec<f64> = (0..=44).map(|k| f64::from(k) * 2.0).collect();
     let mut series = Vec::new();
@@ -75,7 +75,7 @@ fn lobe_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError
     plot::chart(&panels, 1)
 }
 
-fn furnace_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn furnace_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n = if settings.quick { 2_000 } else { 100_000 };
     let mut md = String::new();
     writeln!(

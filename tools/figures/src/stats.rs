@@ -64,7 +64,7 @@ fn calibration(settings: &Settings) -> Result<&'static Calibration, BoxError> {
 
 const BINS: usize = 20;
 
-fn pvalues_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn pvalues_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let cal = calibration(settings)?;
     // Under the null each bin holds Binomial(runs, 1/BINS) p-values: density 1 ± 2 sd.
     let share = 1.0 / BINS as f64;
@@ -171,7 +171,7 @@ fn two_sample_limit_law(exact: &[f64]) -> Result<Vec<f64>, BoxError> {
     Ok(runs.into_iter().map(|(_, limit)| limit).collect())
 }
 
-fn calibration_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let cal = calibration(settings)?;
     let alpha = test_alpha();
     let mut md = String::new();
@@ -287,7 +287,7 @@ fn calibration_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, Bo
 
 /// Pearson's chi-squared in the far tail: the experiment of the calibration table's first
 /// row run long enough to measure its false-failure rate at `test_alpha()` itself.
-fn far_tail_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn far_tail_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let runs: u64 = if settings.quick { 200_000 } else { 8_000_000 };
     let alpha = test_alpha();
     let rejected = (0..runs)

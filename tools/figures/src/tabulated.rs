@@ -40,7 +40,7 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn histogram_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn histogram_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let table = emission_table();
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
     let mut counts = vec![0u64; table.bins()];
@@ -115,7 +115,7 @@ fn tests_against(table: &Piecewise1D, xs: &[f64]) -> (f64, Result<f64, String>) 
     (ks, chi)
 }
 
-fn checks_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn checks_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n: usize = if settings.quick { 20_000 } else { 200_000 };
     let table = emission_table();
     let edges = table.edges().to_vec();
@@ -281,7 +281,7 @@ fn segment_inverse_textbook(a: f64, b: f64, xi: f64) -> f64 {
     (-a + (a * a + xi * (b * b - a * a)).sqrt()) / (b - a)
 }
 
-fn precision_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn precision_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let n: usize = if settings.quick { 20_000 } else { 200_000 };
     let mut md = String::new();
     let table = emission_table();
@@ -343,25 +343,13 @@ fn precision_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
         stable <= stable_bound,
         format!("the stable root's worst error of t: {stable:.1e} <= 2ε = {stable_bound:.2e}"),
     );
-    // The segments of `segment_inverse_round_trips`: a = 0 in 10 %, else log-uniform;
-    // b = a in a quarter, b = a (1 + 1e-12 u) in a quarter (the nearly constant segments
-    // the stable form is for), else independent; a segment without mass is skipped.
+    // The segments of `segment_inverse_round_trips` (`check::tabulated::hard_segment`).
     let mut worst_seg = 0.0f64;
     let mut segments = 0;
     while segments < n {
-        let a = if rng.random::<f64>() < 0.1 {
-            0.0
-        } else {
-            rng::log_uniform(&mut rng, 1e-300, 1e300)
-        };
-        let b = match rng.random::<u8>() % 4 {
-            0 => a,
-            1 => a * (1.0 + 1e-12 * rng.random::<f64>()),
-            _ => rng::log_uniform(&mut rng, 1e-300, 1e300),
-        };
-        if a == 0.0 && b == 0.0 {
+        let Some((a, b)) = raylemma::check::tabulated::hard_segment(&mut rng) else {
             continue;
-        }
+        };
         segments += 1;
         let xi = rng.random::<f64>();
         let t = segment_inverse(a, b, xi);
@@ -391,7 +379,7 @@ fn precision_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 201 };
     let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();

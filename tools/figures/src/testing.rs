@@ -100,7 +100,7 @@ fn percent(b: Option<f64>) -> String {
 }
 
 /// The comparisons the chapter *Testing the renderer* states about the power table.
-fn power_claims(rec: &mut Record<'_>, rows: &[Row]) {
+fn power_claims(rec: &mut Record, rows: &[Row]) {
     let smooth = [
         "floor under a quad light",
         "floor under a sphere light",
@@ -154,7 +154,7 @@ fn power_claims(rec: &mut Record<'_>, rows: &[Row]) {
     );
 }
 
-fn power_md(settings: &Settings, rec: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn power_md(settings: &Settings, rec: &mut Record) -> Result<Vec<u8>, BoxError> {
     let seeds: u64 = if settings.quick { 2 } else { 10 };
     let root = settings.root.clone();
     let options = |s: u64| Options::default().seed(0xB1A5 + s);

@@ -46,7 +46,7 @@ fn curve(label: &str, rgb: DVec3) -> Result<Series, BoxError> {
     ))
 }
 
-fn spectra_svg(_: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn spectra_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let corners = Panel::new(
         "gamut corners (linear sRGB)",
         "wavelength, nm",
@@ -166,7 +166,7 @@ fn row(
     })
 }
 
-fn roundtrip_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn roundtrip_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut md = String::new();
     writeln!(
         md,
@@ -263,7 +263,7 @@ fn roundtrip_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxE
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let colours = if settings.quick { random(100) } else { grid() };
     let reps = if settings.quick { 3 } else { 11 };
     let d65 = Fitter::d65();

@@ -158,7 +158,7 @@ fn relative_variance(s: Strategy, spectrum: &Spectrum, exact: DVec3, n: usize) -
     sums.iter().map(Summary::variance).sum::<f64>() / 3.0
 }
 
-fn error_svg(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn error_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (repeats, max_pow, reps) = if settings.quick {
         (60, 8, 3)
     } else {
@@ -250,7 +250,7 @@ fn extreme(column: &[f64], better: fn(&f64, &f64) -> bool) -> Option<usize> {
     (column.iter().filter(|&&x| x == column[best]).count() == 1).then_some(best)
 }
 
-fn efficiency_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (n, reps) = if settings.quick {
         (20_000, 5)
     } else {
@@ -520,7 +520,7 @@ pub fn seed_readings() -> Vec<(&'static str, SeedBand)> {
     ]
 }
 
-fn seed_bias_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn seed_bias_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let spectra = spectra();
     let readings = seed_readings();
     let mut md = String::new();
@@ -739,7 +739,7 @@ fn ratio_key(ratio: f64) -> String {
     format!("s{ratio}").replace('.', "_")
 }
 
-fn dispersive_mis_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn dispersive_mis_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (n, reps) = if settings.quick {
         (20_000, 5)
     } else {
@@ -958,7 +958,7 @@ fn dispersive_mis_md(settings: &Settings, r: &mut Record<'_>) -> Result<Vec<u8>,
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, _: &mut Record<'_>) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let reps = if settings.quick { 5 } else { 101 };
     let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();
