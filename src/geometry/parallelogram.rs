@@ -52,10 +52,10 @@ pub struct Parallelogram {
     area: f64,
     /// `n . corner`: the plane is `n . p = plane`.
     plane: f64,
-    /// The dual basis of the edges in the plane: `a = q . dual_a`, `b = q . dual_b` for a
-    /// point `corner + q` of the plane.
-    dual_a: DVec3,
-    dual_b: DVec3,
+    /// The edges across, scaled by the area: `-e2 / A` and `e1 / A`, which read the edge
+    /// coordinates of a hit off `(o - corner) x d` ([`Parallelogram::hit_before`]).
+    across_a: DVec3,
+    across_b: DVec3,
 }
 
 impl Parallelogram {
@@ -85,7 +85,6 @@ impl Parallelogram {
             return Err(Degenerate::ParallelEdges);
         }
         let normal = cross / area;
-        let cc = cross.length_squared();
         Ok(Self {
             corner,
             e1,
@@ -93,8 +92,8 @@ impl Parallelogram {
             normal,
             area,
             plane: normal.dot(corner),
-            dual_a: e2.cross(cross) / cc,
-            dual_b: cross.cross(e1) / cc,
+            across_a: -e2 / area,
+            across_b: e1 / area,
         })
     }
     // ANCHOR_END: new
@@ -125,11 +124,11 @@ impl Parallelogram {
         self.normal
     }
 
-    /// The plane and the dual basis [`Parallelogram::hit_before`] tests with: the unit
-    /// normal `n`, `n . corner`, and the dual vectors of the edges (for a renderer that
-    /// keeps them in arrays of its own).
-    pub fn plane_and_duals(&self) -> (DVec3, f64, DVec3, DVec3) {
-        (self.normal, self.plane, self.dual_a, self.dual_b)
+    /// The plane and the vectors [`Parallelogram::hit_before`] tests with: the unit
+    /// normal `n`, `n . corner`, and the edges across scaled by the area, `-e2 / A` and
+    /// `e1 / A` (for a renderer that keeps them in arrays of its own).
+    pub fn plane_and_across(&self) -> (DVec3, f64, DVec3, DVec3) {
+        (self.normal, self.plane, self.across_a, self.across_b)
     }
 
     /// The area `|e1 x e2|`.
@@ -149,26 +148,43 @@ impl Parallelogram {
     /// Where the ray `o + t d` meets the parallelogram, from either side: the `t > 0`
     /// (finite; in units of `|d|`), or `None`. The ray meets the plane `n . p = n . c`
     /// (`c` the corner) at `t = (n . c - n . o) / (n . d)`. The point's coordinates in the
-    /// edge basis, `q = o + t d - c = a e1 + b e2`, are read off with the dual basis: with
-    /// `k = e1 x e2`, `a = q . (e2 x k) / (k . k)` and `b = q . (k x e1) / (k . k)` (each
-    /// dual vector is perpendicular to the other edge and to the normal, and has a dot
-    /// product of 1 with its own edge), both precomputed, so a test costs three dot
-    /// products. Inside when both are in `[0, 1]`. A ray parallel to the plane
-    /// (`n . d = 0`) gives an infinite or NaN `t`: a miss.
+    /// edge basis, `o + t d - c = a e1 + b e2`, are read off without `t`: with
+    /// `w = o - c`, the point is `w - (n . w / n . d) d = n x (w x d) / (n . d)`, so that
+    /// (Cramer's rule, as in Möller and Trumbore's triangle test)
+    /// `a = -(w x d) . e2 / (A n . d)` and `b = (w x d) . e1 / (A n . d)`, `A` the area,
+    /// with `-e2 / A` and `e1 / A` precomputed. Inside when both are in `[0, 1]`. A ray
+    /// parallel to the plane (`n . d = 0`) gives an infinite or NaN `t`: a miss.
+    ///
+    /// Reading them off the point `o + t d - c` instead costs a cross product less but
+    /// carries the rounding of `t`: an error of about `u t` in the edge coordinates, which
+    /// for a hit far along the ray is many times what one rounding of the inputs does
+    /// (chapter *Ray-sphere intersection*, *Accuracy against exact arithmetic*).
     pub fn hit(&self, o: DVec3, d: DVec3) -> Option<f64> {
         self.hit_before(o, d, f64::INFINITY)
     }
 
     /// [`Parallelogram::hit`], for a hit nearer than `t_max` only (the renderer's nearest
-    /// hit so far): beyond it, the point is not computed at all.
+    /// hit so far): beyond it, the edge coordinates are not computed at all.
     pub fn hit_before(&self, o: DVec3, d: DVec3, t_max: f64) -> Option<f64> {
-        let t = (self.plane - self.normal.dot(o)) / self.normal.dot(d);
+        let nd = self.normal.dot(d);
+        let t = (self.plane - self.normal.dot(o)) / nd;
         if !(t > 0.0 && t < t_max && t.is_finite()) {
             return None;
         }
-        let q = o + t * d - self.corner;
-        let (a, b) = (q.dot(self.dual_a), q.dot(self.dual_b));
+        let (a, b) = self.coordinates(o, d, nd);
         ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)).then_some(t)
+    }
+
+    /// The edge coordinates `(a, b)` of the point where the ray's line meets the plane,
+    /// as [`Parallelogram::hit_before`] computes them to test it (whether or not they are
+    /// inside, and whatever the sign of `t`).
+    pub fn edge_coordinates(&self, o: DVec3, d: DVec3) -> (f64, f64) {
+        self.coordinates(o, d, self.normal.dot(d))
+    }
+
+    fn coordinates(&self, o: DVec3, d: DVec3, nd: f64) -> (f64, f64) {
+        let s = (o - self.corner).cross(d);
+        (s.dot(self.across_a) / nd, s.dot(self.across_b) / nd)
     }
     // ANCHOR_END: hit
 }

@@ -62,13 +62,18 @@ impl Sellmeier {
     ///
     /// Outside [`Self::range_um`] the formula is an extrapolation; below the shortest
     /// pole `n²` can turn negative and the result is NaN.
+    ///
+    /// Each term is evaluated as `B_i / (1 − C_i/λ²)`, the same quotient with λ² divided
+    /// out: as accurate (chapter *Dispersion*, *Accuracy against exact arithmetic*), and
+    /// still `B_i` where λ² overflows (λ above about 1.3e157 nm), where `B λ² / (λ² − C)`
+    /// is ∞/∞ = NaN.
     pub fn index(&self, wavelength_nm: f64) -> f64 {
         let l2 = (wavelength_nm * 1e-3).powi(2);
         let n2 = 1.0
             + self
                 .terms
                 .iter()
-                .map(|&(b, c)| b * l2 / (l2 - c))
+                .map(|&(b, c)| b / (1.0 - c / l2))
                 .sum::<f64>();
         n2.sqrt()
     }
@@ -89,12 +94,30 @@ impl Sellmeier {
     // ANCHOR: abbe
     /// The Abbe number `V_d = (n_d − 1) / (n_F − n_C)`: large means little dispersion.
     pub fn abbe(&self) -> f64 {
-        let (d, f, c) = (
-            self.index(LINE_D_NM),
-            self.index(LINE_F_NM),
-            self.index(LINE_C_NM),
-        );
-        (d - 1.0) / (f - c)
+        self.abbe_at(LINE_D_NM, LINE_F_NM, LINE_C_NM)
+    }
+
+    /// `(n(d) − 1) / (n(f) − n(c))` at any three wavelengths (nm), with neither
+    /// difference taken of rounded indices: `n_F` and `n_C` agree to two or three digits,
+    /// and subtracting them would lose those digits (up to 10 κ ulps at the catalogue's
+    /// lines, chapter *Dispersion*). Instead `n − 1 = (n² − 1)/(n + 1)` and
+    /// `n_F − n_C = (n_F² − n_C²)/(n_F + n_C)`, whose numerator is summed term by term,
+    /// `B_i λF²/(λF² − C_i) − B_i λC²/(λC² − C_i) = B_i C_i (λC² − λF²) / ((λF² − C_i)(λC² − C_i))`,
+    /// with `λC² − λF² = (λC − λF)(λC + λF)` (exact difference when the two are within a
+    /// factor 2).
+    pub fn abbe_at(&self, d_nm: f64, f_nm: f64, c_nm: f64) -> f64 {
+        let squared = |nm: f64| (nm * 1e-3).powi(2);
+        let (ld, lf, lc) = (squared(d_nm), squared(f_nm), squared(c_nm));
+        let excess: f64 = self.terms.iter().map(|&(b, k)| b / (1.0 - k / ld)).sum();
+        let gap = (c_nm - f_nm) * (c_nm + f_nm) * 1e-6;
+        let spread: f64 = self
+            .terms
+            .iter()
+            .map(|&(b, k)| b * k * gap / ((lf - k) * (lc - k)))
+            .sum();
+        let n_d = (1.0 + excess).sqrt();
+        let sum_fc = self.index(f_nm) + self.index(c_nm);
+        excess / (n_d + 1.0) * sum_fc / spread
     }
     // ANCHOR_END: abbe
 }

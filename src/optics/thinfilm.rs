@@ -262,7 +262,9 @@ impl Film {
         let (r_p, t_p) = airy_stable([c1 / n1, c2 / n2, c3 / n3], k * n2 * n2 * d, delta);
         let t_p = t_p * (n1 / n3); // with a = cos θ / n the form gives (n3/n1) t_p
         // Power: the normal component of the Poynting vector, Re(n cos θ) |E|² on each side.
-        let flux = (c3 * n3).re / (n1 * cos1);
+        // The ratio is taken last: |t|² ∝ cos²θ1 underflows to 0 for a subnormal cos θ1,
+        // where Re(n3 cos θ3) / (n1 cos θ1) is already ∞ (and ∞ · 0 = NaN).
+        let (flux, incident) = ((c3 * n3).re, n1 * cos1);
         Response {
             r_s,
             r_p,
@@ -270,8 +272,8 @@ impl Film {
             t_p,
             reflectance_s: r_s.norm_sqr(),
             reflectance_p: r_p.norm_sqr(),
-            transmittance_s: flux * t_s.norm_sqr(),
-            transmittance_p: flux * t_p.norm_sqr(),
+            transmittance_s: flux * t_s.norm_sqr() / incident,
+            transmittance_p: flux * t_p.norm_sqr() / incident,
         }
     }
     // ANCHOR_END: response

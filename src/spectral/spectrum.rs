@@ -168,13 +168,27 @@ impl Table {
 /// `hc / (λ k T)` is small.
 /// A blackbody at `kelvin ≤ 0` emits nothing, and so does any wavelength `nm ≤ 0`; both
 /// (and NaN) give 0.
+///
+/// Far into the blue (`x = hc/(λkT) > 700`) `e^x` is near its overflow at 709.78, past
+/// which the quotient would be 0 while the radiance is still a double (down to 1e-308 at
+/// `x ≈ 1490`): there `1/(e^x − 1) = e^{−x}/(1 − e^{−x})`, with `e^{−x}` applied as two
+/// factors `e^{−x/2}` so that neither is subnormal before the last product.
 pub fn planck(nm: f64, kelvin: f64) -> f64 {
     if !(nm > 0.0 && kelvin > 0.0) {
         return 0.0;
     }
     let l = nm * 1e-9;
     let x = PLANCK_H * LIGHT_C / (l * BOLTZMANN_K * kelvin);
-    2.0 * PLANCK_H * LIGHT_C * LIGHT_C / l.powi(5) / x.exp_m1() * 1e-9
+    let a = 2.0 * PLANCK_H * LIGHT_C * LIGHT_C / l.powi(5);
+    if x <= 700.0 {
+        return a / x.exp_m1() * 1e-9;
+    }
+    let half = (-0.5 * x).exp();
+    if half == 0.0 {
+        // e^{−x} < 1e-647: below every double, whatever a (∞ once λ⁵ underflows).
+        return 0.0;
+    }
+    a * half * 1e-9 * half / -(-x).exp_m1()
 }
 // ANCHOR_END: planck
 

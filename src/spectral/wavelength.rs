@@ -146,6 +146,17 @@ pub fn wrap01(x: f64) -> f64 {
     if f >= 1.0 { 0.0 } else { f }
 }
 
+/// `(u + offset) mod 1` for `u` and `offset` in `[0, 1)` with `1 − offset` a double (the
+/// rotations `j/N`), the wrap decided exactly: `u ≥ 1 − offset` wraps to `u − (1 − offset)`,
+/// which is exact; otherwise `u + offset`, one rounding, which may round up to 1.0 but
+/// never wraps to 0. [`wrap01`] of the rounded sum sends `u + offset` just below 1 (when it
+/// rounds to 1.0: `u` = 1/4 − 2⁻⁵⁵ with offset 3/4) to 0, a whole range away.
+#[inline]
+pub fn rotate01(u: f64, offset: f64) -> f64 {
+    let rest = 1.0 - offset;
+    if u >= rest { u - rest } else { u + offset }
+}
+
 // ---------------------------------------------------------------------------------------
 // Uniform.
 
@@ -237,7 +248,7 @@ pub fn sample_visible(u: f64) -> f64 {
 /// Hero wavelengths, uniform: lane `j` at `λ_j = λ_min + ((u + j/N) mod 1)(λ_max − λ_min)`,
 /// each with the uniform density (each `λ_j` alone is uniform, since `(u + j/N) mod 1` is).
 pub fn hero_uniform(u: f64) -> Wavelengths {
-    let lambda = std::array::from_fn(|j| sample_uniform(wrap01(u + j as f64 / N as f64)));
+    let lambda = std::array::from_fn(|j| sample_uniform(rotate01(u, j as f64 / N as f64)));
     Wavelengths {
         lambda,
         pdf: [1.0 / RANGE; N],
@@ -254,7 +265,7 @@ pub fn hero_uniform(u: f64) -> Wavelengths {
 #[inline]
 pub fn hero_visible(u: f64) -> Wavelengths {
     let lanes: [(f64, f64); N] =
-        std::array::from_fn(|j| sample_visible_pdf(wrap01(u + j as f64 / N as f64)));
+        std::array::from_fn(|j| sample_visible_pdf(rotate01(u, j as f64 / N as f64)));
     Wavelengths {
         lambda: lanes.map(|l| l.0),
         pdf: lanes.map(|l| l.1),
@@ -282,7 +293,7 @@ pub fn hero_balance(u: f64) -> Wavelengths {
         if j == 0 {
             hero
         } else {
-            sample_uniform(wrap01(s + j as f64 / N as f64))
+            sample_uniform(rotate01(s, j as f64 / N as f64))
         }
     });
     let mean = (hero_pdf + lambda[1..].iter().map(|&l| visible_pdf(l)).sum::<f64>()) / N as f64;

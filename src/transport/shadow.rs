@@ -474,13 +474,25 @@ pub enum Heuristic {
 
 impl Heuristic {
     /// The weight of a sample drawn with density `pa` when the other strategy would have
-    /// drawn it with density `pb`.
+    /// drawn it with density `pb` (0 when both are 0).
+    ///
+    /// Computed from the ratio `r <= 1` of the smaller density to the larger, as
+    /// `q / (1 + q)` or `1 / (1 + q)` with `q = r` or `r^2`: written as `pa^2 / (pa^2 + pb^2)`
+    /// the power heuristic is NaN once the squares overflow (densities above about
+    /// `1.3e154`, a tiny light seen edge-on) and 0 where they underflow, and the balance
+    /// heuristic is 0 where the sum overflows.
     pub fn weight(self, pa: f64, pb: f64) -> f64 {
-        let (a, b) = match self {
-            Self::Balance => (pa, pb),
-            Self::Power => (pa * pa, pb * pb),
+        let (small, large) = if pa <= pb { (pa, pb) } else { (pb, pa) };
+        if !(large > 0.0 && small >= 0.0) {
+            return 0.0;
+        }
+        let r = small / large;
+        let q = match self {
+            Self::Balance => r,
+            Self::Power => r * r,
         };
-        if a + b > 0.0 { a / (a + b) } else { 0.0 }
+        let of_large = 1.0 / (1.0 + q);
+        if pa <= pb { q * of_large } else { of_large }
     }
 }
 

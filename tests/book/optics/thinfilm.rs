@@ -1030,3 +1030,37 @@ fn exercise_5_the_pi_rule() {
         );
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Accuracy against exact arithmetic (data/corpus/thinfilm.txt, tools/exact).
+
+/// At a subnormal `cos θ1` the transmittance used to be `(Re(n3 cos θ3)/(n1 cos θ1)) |t|²`
+/// = ∞ · 0 = NaN; the exact answer (the corpus's, mpmath at 256 bits) is a few subnormals,
+/// and the ratio taken last gives 0, within one unit of the scale 1.
+#[test]
+fn transmittance_at_a_subnormal_cosine_is_not_nan() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/thinfilm.txt"))
+        .expect("the corpus reads");
+    let question = "film 1.0 1.38 1.52 100.0 550.0 5e-324";
+    let case = corpus
+        .cases
+        .iter()
+        .find(|c| c.question == question)
+        .expect("the case is in the corpus");
+    let exact = case.exact.as_ref().expect("an answer");
+    let r = Film::new(1.0, 1.38, 1.52, 100.0).response_cos(550.0, 5e-324);
+    let got = [
+        r.reflectance_s,
+        r.reflectance_p,
+        r.transmittance_s,
+        r.transmittance_p,
+    ];
+    for (g, e) in got.iter().zip(exact) {
+        assert!(
+            (g - e.double).abs() <= f64::EPSILON,
+            "{got:?}, exact {}",
+            e.text
+        );
+    }
+}

@@ -1158,3 +1158,37 @@ fn exercise_4_fit_on_the_planckian_locus() {
         "temperature {t} vs {worst_t}"
     );
 }
+
+// ---------------------------------------------------------------------------------------
+// Accuracy against exact arithmetic (data/corpus/colour.txt, tools/exact).
+
+/// Planck's law past `e^x`'s overflow (`x = hc/(λkT)` from 709.79 to 745): the radiance is
+/// still a normal double there, but `a / expm1(x)` gave 0. The exact values are the
+/// corpus's (mpmath at 256 bits); κ is about 1400 there, and the answer is within
+/// 8 κ ulps.
+#[test]
+fn planck_past_the_exponential_overflow_is_not_zero() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/colour.txt"))
+        .expect("the corpus reads");
+    let mut seen = 0;
+    for case in corpus.cases_of("planck") {
+        if !case.why.contains("past overflow") {
+            continue;
+        }
+        let exact = &case.exact.as_ref().expect("an answer")[0];
+        if exact.double < f64::MIN_POSITIVE {
+            continue;
+        }
+        let got = planck(case.args[0], case.args[1]);
+        let ulps = (got - exact.double).abs() / (exact.double * f64::EPSILON / 2.0);
+        assert!(
+            ulps <= 8.0 * exact.condition,
+            "{}: {got:e}, exact {}: {ulps:e} ulps",
+            case.question,
+            exact.text
+        );
+        seen += 1;
+    }
+    assert!(seen >= 8, "only {seen} cases");
+}

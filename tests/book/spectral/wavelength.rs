@@ -1151,3 +1151,37 @@ fn exercise_3_mixed_terminations() {
         "at q = 1 the variance ratio is {ratio}"
     );
 }
+
+// ---------------------------------------------------------------------------------------
+// Accuracy against exact arithmetic (data/corpus/wavelength.txt, tools/exact).
+
+/// The rotation `(u + j/N) mod 1` used to wrap the *rounded* sum: at `u = 1/4 − 2⁻⁵⁵`,
+/// `u + 3/4` rounds to 1.0 and lane 3 went to 360 nm, while the exact lane is
+/// 830 − 1.3e-14 nm (the corpus's answer, mpmath at 256 bits). The wrap is now decided
+/// exactly ([`rotate01`]).
+#[test]
+fn hero_rotation_does_not_wrap_a_sum_that_rounds_to_one() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/wavelength.txt"))
+        .expect("the corpus reads");
+    for question in [
+        "hero_uniform 0.24999999999999997",
+        "hero_uniform 0.49999999999999994",
+    ] {
+        let case = corpus
+            .cases
+            .iter()
+            .find(|c| c.question == question)
+            .expect("the case is in the corpus");
+        let got = hero_uniform(case.args[0]).lambda;
+        for (g, e) in got.iter().zip(case.exact.as_ref().expect("an answer")) {
+            assert!(
+                (g - e.double).abs() <= 2.0 * f64::EPSILON * e.double,
+                "{question}: {got:?}, exact {}",
+                e.text
+            );
+        }
+    }
+    assert_eq!(rotate01(0.25 - 2f64.powi(-55), 0.75), 1.0);
+    assert_eq!(rotate01(0.75, 0.25), 0.0);
+}

@@ -327,6 +327,73 @@ fn sampled_pdf_equals_evaluated_pdf() {
     }
 }
 
+/// The parallelogram's edge coordinates on the corpus input where reading them off the
+/// point `o + t d - c` was 10 times the accuracy bound (25 ulps where one rounding of the
+/// inputs moves them by 2.4): a hit 1e3 along the ray, whose rounded `t` the old form
+/// carried into `a`. The exact answer is the corpus's (`tools/exact/sphere.py`, mpmath).
+#[test]
+fn edge_coordinates_keep_their_digits_far_along_the_ray() {
+    use raylemma::check::accuracy::{self, BOUND, Precision, corpus};
+    use raylemma::geometry::Parallelogram;
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let c = corpus::load(&root.join("data/corpus/sphere.txt")).expect("the corpus reads");
+    let verb = c.verb("quad_coords").expect("declared");
+    let case = c
+        .cases_of("quad_coords")
+        .find(|k| k.why.starts_with("an oblique parallelogram, 1e3 away"))
+        .expect("the case");
+    let v = |i: usize| DVec3::new(case.args[i], case.args[i + 1], case.args[i + 2]);
+    let q = Parallelogram::new(v(6), v(9), v(12)).expect("a parallelogram");
+    assert!(q.hit(v(0), v(3)).is_some(), "{}", case.question);
+    let (a, b) = q.edge_coordinates(v(0), v(3));
+    let m = accuracy::measure_one(case, 0, verb, &Some(vec![a, b]), Precision::Double);
+    assert!(
+        m.ratio <= BOUND,
+        "{}: ({a}, {b}) is {} ulps off, condition {}",
+        case.question,
+        m.ulps,
+        m.condition
+    );
+}
+
+/// The MIS weights on the corpus inputs where `pa / (pa + pb)` of the densities or of
+/// their squares failed: equal densities whose squares overflow (the power heuristic was
+/// NaN), whose squares underflow (it was 0), and two largest doubles (the balance
+/// heuristic's sum overflowed, giving 0). The exact answers are the corpus's
+/// (`tools/exact/shadow.py`, mpmath).
+#[test]
+fn mis_weights_survive_huge_and_tiny_densities() {
+    use raylemma::check::accuracy::{self, BOUND, Precision, corpus};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let c = corpus::load(&root.join("data/corpus/shadow.txt")).expect("the corpus reads");
+    for (verb, heuristic, why) in [
+        (
+            "mis_power",
+            Heuristic::Power,
+            "equal pdfs whose squares overflow (1e154)",
+        ),
+        (
+            "mis_power",
+            Heuristic::Power,
+            "equal pdfs whose squares underflow",
+        ),
+        (
+            "mis_balance",
+            Heuristic::Balance,
+            "both the largest double: the sum overflows",
+        ),
+    ] {
+        let v = c.verb(verb).expect("declared");
+        let case = c
+            .cases_of(verb)
+            .find(|k| k.why == why)
+            .unwrap_or_else(|| panic!("no case {verb}: {why}"));
+        let w = heuristic.weight(case.args[0], case.args[1]);
+        let m = accuracy::measure_one(case, 0, v, &Some(vec![w]), Precision::Double);
+        assert!(m.ratio <= BOUND, "{}: {w}, {} ulps", case.question, m.ulps);
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // (d) The solid-angle pdf integrates to 1: the warp harness on the sphere of directions.
 

@@ -129,6 +129,7 @@ impl Checker {
         self.check_images(&file, text, &mut problems);
         self.check_numbers(&file, text, &mut problems);
         self.check_rust_blocks(&file, text, &mut problems);
+        self.check_math_delimiters(&file, text, &mut problems);
         problems.sort_by_key(|p| p.line);
         problems
     }
@@ -207,6 +208,36 @@ impl Checker {
                 line: f.line,
                 message: f.message,
             });
+        }
+    }
+
+    /// Math is written `$…$` or `$$…$$`, the only delimiters the book's KaTeX pass reads:
+    /// `\\(…\\)` and a display `\\[` on its own reach the page as raw TeX. Fenced code and
+    /// code spans are skipped; `\\[2pt]` inside an aligned formula is not a delimiter.
+    fn check_math_delimiters(&self, file: &Path, text: &str, problems: &mut Vec<Problem>) {
+        let mut fenced = false;
+        for (i, line) in text.lines().enumerate() {
+            let trimmed = line.trim_start();
+            if trimmed.starts_with("```") || trimmed.starts_with("~~~") {
+                fenced = !fenced;
+                continue;
+            }
+            if fenced {
+                continue;
+            }
+            let outside_code: String = line.split('`').step_by(2).collect::<Vec<_>>().join(" ");
+            let display = trimmed
+                .strip_prefix("\\\\[")
+                .is_some_and(|rest| rest.trim().is_empty() || rest.starts_with(' '));
+            if outside_code.contains("\\\\(") || display {
+                problems.push(Problem {
+                    file: self.display_path(file),
+                    line: i + 1,
+                    message: "math delimited by \\\\( \\\\) or \\\\[ \\\\]: write $…$ or $$…$$ \
+                              (the only delimiters the KaTeX pass renders)"
+                        .into(),
+                });
+            }
         }
     }
 
@@ -803,6 +834,27 @@ mod tests {
                 "chapters/a.md:13: the rust block of line 12 holds pasted code, which nothing \
                  compiles: include it by anchor from a file of src/ or tests/",
             ]
+        );
+    }
+
+    #[test]
+    fn math_in_other_delimiters_is_refused() {
+        let t = Tree::new("math");
+        t.write(
+            "chapters/a.md",
+            "An answer \\\\(y\\\\) is fine as $y$.\n\\\\[ e = 1 \\\\]\n\
+             $$\n\\begin{aligned} a \\\\[2pt] b \\end{aligned}\n$$\n\
+             `\\\\(` in code\n```text\n\\\\(x\\\\)\n```\n",
+        );
+        let found = t.check();
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!(
+            found[0].starts_with("chapters/a.md:1: math delimited"),
+            "{found:?}"
+        );
+        assert!(
+            found[1].starts_with("chapters/a.md:2: math delimited"),
+            "{found:?}"
         );
     }
 
