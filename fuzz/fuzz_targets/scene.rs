@@ -1,8 +1,7 @@
 //! Fuzz target of the scene parser (`raylemma::render::parse`): any bytes must give
 //! a scene or a `DataError` with a line inside the text, never a panic.
 //!
-//! `RUSTC_BOOTSTRAP=1 cargo fuzz run scene fuzz/corpus/scene -- -max_total_time=60`
-//! (from the repository root; the corpus starts from the canonical scenes).
+//! `tools/fuzz/run 60 scene` (chapter *Bad input*; the seeds are the canonical scenes).
 
 #![no_main]
 
@@ -17,6 +16,10 @@ fuzz_target!(|data: &[u8]| {
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
     if let Err(e) = raylemma::render::parse(text, "fuzz.toml", &scenes) {
         let lines = text.lines().count().max(1) + 1;
-        assert!(e.file != "fuzz.toml" || e.line <= lines, "line {} of {lines}: {e}", e.line);
+        assert!(
+            e.file != "fuzz.toml" || e.line <= lines,
+            "line {} of {lines}: {e}",
+            e.line
+        );
     }
 });

@@ -1,4 +1,4 @@
-//! `raylemma check sampler|fresnel|refraction`: the book's checkers on an implementation
+//! `raylemma check sampler|fresnel|refraction|corpus`: the book's checkers on an implementation
 //! outside Rust, a program that answers questions over a pipe or a file of values (the
 //! protocol: `raylemma::check::external`; chapter *Checks from any language*). Prints the
 //! checker's verdict; exit status 0 if it passes, 1 if it fails, 2 for bad input (a file
@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use clap::{Args, Subcommand};
+use raylemma::check::accuracy::{self, Expect, corpus};
 use raylemma::check::external::{self, Density, Function, Program, Sampler, Target};
 use raylemma::check::warp::Domain;
 use raylemma::check::{Options, Verdict};
@@ -28,6 +29,28 @@ pub enum CheckCmd {
     /// A refraction: a program that answers `refract wi_x wi_y wi_z n_x n_y n_z n1 n2`
     /// with `t_x t_y t_z` or `tir`, or a table of those rows.
     Refraction(RefractionArgs),
+    /// Accuracy on the corpora of hard inputs (data/corpus/*.txt): a program answers each
+    /// case's question (`fresnel 0.5 1.0 1.5`) with `none` or its outputs, and every error
+    /// must be at most 8 ulps times the problem's condition number. Without --program, the
+    /// crate's own routines are checked.
+    Corpus(CorpusArgs),
+}
+
+/// `raylemma check corpus`.
+#[derive(Args, Debug)]
+pub struct CorpusArgs {
+    /// The corpus files [default: every data/corpus/*.txt under the current folder].
+    pub files: Vec<PathBuf>,
+    /// The program, run by `sh -c`, that answers the questions.
+    #[arg(long)]
+    pub program: Option<String>,
+    /// Only these verbs, comma-separated (e.g. fresnel,schlick); every corpus named must
+    /// have them [default: every verb].
+    #[arg(long, value_delimiter = ',')]
+    pub verbs: Vec<String>,
+    /// Seconds one run of the program may take [default: 120].
+    #[arg(long, value_parser = parse_seconds, requires = "program")]
+    pub timeout: Option<Duration>,
 }
 
 /// `raylemma check sampler`.
@@ -64,6 +87,11 @@ pub struct SamplerArgs {
     /// Seconds one run of the program may take [default: 120].
     #[arg(long, value_parser = parse_seconds)]
     pub timeout: Option<Duration>,
+    /// Where the failure images go (observed, expected and difference counts per cell,
+    /// written when the chi-squared test fails) [default: warp-failures/ in the working
+    /// directory].
+    #[arg(long, value_name = "DIR")]
+    pub failure_images: Option<PathBuf>,
 }
 
 /// Where a function's answers come from, and the list of questions for a table.
@@ -169,6 +197,7 @@ pub fn run(command: &CheckCmd) -> CmdResult {
                 external::fresnel_questions,
             )
         }
+        CheckCmd::Corpus(args) => corpora(args),
         CheckCmd::Refraction(args) => {
             let options = options(args.cases, args.seed, None);
             function(
@@ -179,6 +208,53 @@ pub fn run(command: &CheckCmd) -> CmdResult {
             )
         }
     }
+}
+
+/// `raylemma check corpus`: every verdict printed; 0 if all pass, 1 if one fails, 2 for
+/// bad input.
+fn corpora(args: &CorpusArgs) -> CmdResult {
+    let bad = |e: DataError| Failure::BadInput(e.to_string());
+    let corpora = if args.files.is_empty() {
+        corpus::load_all(Path::new(".")).map_err(bad)?
+    } else {
+        args.files
+            .iter()
+            .map(|p| corpus::load(p))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(bad)?
+    };
+    let mut passed = true;
+    for c in &corpora {
+        let verdict = match &args.program {
+            Some(command) => {
+                accuracy::check_program(c, &args.verbs, &program(command, args.timeout))
+                    .map_err(bad)?
+            }
+            None => {
+                let forms = accuracy::forms::of(&c.name).ok_or_else(|| {
+                    bad(DataError::new(
+                        &c.file,
+                        0,
+                        "no routine of this crate answers this corpus (check another \
+                         implementation with --program)",
+                    ))
+                })?;
+                let forms: Vec<_> = forms
+                    .into_iter()
+                    .filter(|f| f.expect == Expect::Within)
+                    .filter(|f| args.verbs.is_empty() || args.verbs.iter().any(|v| v == f.verb))
+                    .collect();
+                accuracy::check_forms(c, &forms)
+            }
+        };
+        print!("{verdict}");
+        passed &= verdict.passed();
+    }
+    Ok(if passed {
+        Outcome::Done
+    } else {
+        Outcome::Negative
+    })
 }
 
 /// Prints the verdict: exit status 0 if it passes, 1 if not, 2 for bad input.
@@ -193,6 +269,9 @@ fn verdict(result: Result<Verdict, DataError>) -> CmdResult {
 }
 
 fn sampler(args: &SamplerArgs) -> Result<Verdict, DataError> {
+    if let Some(dir) = &args.failure_images {
+        raylemma::check::warp::set_failure_dir(dir.clone());
+    }
     let options = options(
         Some(args.cases.unwrap_or(external::SAMPLES as u64)),
         args.seed,

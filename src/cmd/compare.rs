@@ -40,11 +40,12 @@ pub fn run(args: &CompareArgs) -> CmdResult {
 }
 
 /// The reference: it must carry its variance.
-fn reference(path: &Path) -> Result<Estimate, String> {
+pub(crate) fn reference(path: &Path) -> Result<Estimate, String> {
     let contents = ExrContents::read(path).map_err(|e| e.to_string())?;
     let channels = contents.channels.join(", ");
+    let half = contents.half;
     match contents.into_image() {
-        Some(image) => Ok(Estimate::from_variance(image)),
+        Some(image) => Ok(rounded(Estimate::from_variance(image), half)),
         None => Err(format!(
             "{}: the reference has no variance channels var.R, var.G, var.B (it has {channels}); \
              the reference must be a render with its variance, such as `raylemma render` writes \
@@ -56,7 +57,10 @@ fn reference(path: &Path) -> Result<Estimate, String> {
 
 // ANCHOR: candidate
 /// The candidate: one image with its variance channels, or the spread of two or more.
-fn candidate(paths: &[PathBuf], size: (u32, u32)) -> Result<(Estimate, String), String> {
+pub(crate) fn candidate(
+    paths: &[PathBuf],
+    size: (u32, u32),
+) -> Result<(Estimate, String, bool), String> {
     let mut files = Vec::new();
     for path in paths {
         let c = ExrContents::read(path).map_err(|e| e.to_string())?;
@@ -76,7 +80,14 @@ fn candidate(paths: &[PathBuf], size: (u32, u32)) -> Result<(Estimate, String), 
         let path = paths[0].display();
         let name = path.to_string();
         return match one.clone().into_image() {
-            Some(image) => Ok((Estimate::from_variance(image), name)),
+            Some(image) => Ok((
+                xyz_noted(
+                    rounded(Estimate::from_variance(image), one.half),
+                    one.from_xyz,
+                ),
+                name,
+                one.from_xyz,
+            )),
             None => Err(format!(
                 "{path} is a plain image without variance channels, and it is the only candidate: \
                  one image cannot say how noisy it is. Render the scene several times with \
@@ -92,15 +103,67 @@ fn candidate(paths: &[PathBuf], size: (u32, u32)) -> Result<(Estimate, String), 
     if files.iter().any(|c| c.var.is_some()) {
         estimate.source += "; their own variance channels are not used";
     }
+    let from_xyz = files.iter().any(|c| c.from_xyz);
+    let estimate = xyz_noted(rounded(estimate, files.iter().any(|c| c.half)), from_xyz);
     let name = format!(
         "{} candidates ({} ... {})",
         paths.len(),
         paths[0].display(),
         paths[paths.len() - 1].display()
     );
-    Ok((estimate, name))
+    Ok((estimate, name, from_xyz))
 }
 // ANCHOR_END: candidate
+
+/// `estimate` with the rounding of half-float means added to its variances
+/// ([`compare::add_half_rounding`]) if `half`.
+fn rounded(mut estimate: Estimate, half: bool) -> Estimate {
+    if half {
+        compare::add_half_rounding(&mut estimate);
+    }
+    estimate
+}
+
+/// `estimate` with a note, if `from_xyz`, that its means were converted from CIE XYZ.
+fn xyz_noted(mut estimate: Estimate, from_xyz: bool) -> Estimate {
+    if from_xyz {
+        estimate.source += "; its channels X, Y, Z (CIE XYZ) converted to linear sRGB";
+    }
+    estimate
+}
+
+/// A hint for a candidate that differs from the reference in colour the way one does
+/// whose CIE XYZ values are written as R, G, B (a spectral film's output under the wrong
+/// names), or, if it was read from X, Y, Z, whose channels were sRGB all along: the whole
+/// image's mean colour, put through the XYZ-to-sRGB matrix (or its inverse), lands within
+/// 5 % of the reference's and at least four times closer than as read.
+fn xyz_hint(reference: &Image, candidate: &Image, from_xyz: bool) -> Option<String> {
+    let mean = |i: &Image| i.mean.iter().copied().sum::<glam::DVec3>() / i.mean.len() as f64;
+    let (r, c) = (mean(reference), mean(candidate));
+    let m = raylemma::spectral::cie::xyz_to_linear_srgb_matrix();
+    let (swapped, question) = if from_xyz {
+        (
+            m.inverse() * c,
+            "once its X, Y, Z are taken as linear sRGB: are they sRGB under the names X, Y, Z?",
+        )
+    } else {
+        (
+            m * c,
+            "once its R, G, B are taken as CIE XYZ and converted to linear sRGB: are they XYZ \
+             under the names R, G, B? compare reads R, G, B as linear sRGB, as raylemma writes \
+             them, and X, Y, Z as CIE XYZ, as Mitsuba's spectral films write them",
+        )
+    };
+    let off = |x: glam::DVec3| (x - r).length() / r.length();
+    let (as_read, if_swapped) = (off(c), off(swapped));
+    (if_swapped < 0.05 && if_swapped * 4.0 < as_read).then(|| {
+        format!(
+            "hint: the candidate's mean colour is {:.1} % from the reference's, but {:.1} % {question}",
+            100.0 * as_read,
+            100.0 * if_swapped,
+        )
+    })
+}
 
 /// Candidates rendered with the same seed (a renderer's default, often) are the same
 /// image: their spread is zero, and every pixel that differs from the reference at all
@@ -137,10 +200,15 @@ fn compare_files(args: &CompareArgs) -> Result<bool, String> {
     }
     let reference = reference(&args.reference)?;
     let size = (reference.image.width, reference.image.height);
-    let (candidate, name) = candidate(&args.candidates, size)?;
+    let (candidate, name, from_xyz) = candidate(&args.candidates, size)?;
     let c = compare::compare(&reference, &candidate, args.alpha)?;
     let names = [args.reference.display().to_string(), name];
     print!("{}", c.report([&names[0], &names[1]]));
+    if !c.agree()
+        && let Some(hint) = xyz_hint(&reference.image, &candidate.image, from_xyz)
+    {
+        println!("{hint}");
+    }
     if let Some(path) = &args.diff {
         let Image { width, height, .. } = reference.image;
         raylemma::spectral::display::write_png(path, width, height, &compare::difference_rgb8(&c))

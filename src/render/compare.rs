@@ -118,6 +118,34 @@ impl Estimate {
     // ANCHOR_END: spread
 }
 
+/// The variance of the rounding of `v` to a half float: `ulp²/12`, that of an error spread
+/// evenly over one unit in the last place (`ulp = 2^(e - 10)` for `2^e <= |v| < 2^(e+1)`,
+/// `2^-24` among the subnormals below `2^-14`).
+pub fn half_rounding_variance(v: f64) -> f64 {
+    let v = v.abs();
+    let ulp = if v < 2f64.powi(-14) {
+        2f64.powi(-24)
+    } else {
+        let e = ((v.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        2f64.powi(e - 10)
+    };
+    ulp * ulp / 12.0
+}
+
+/// Adds the rounding of half-float means to an estimate's variances: every value of a
+/// half-float file is off by up to half an ulp, and the images of a candidate round alike
+/// wherever their values are close, so that their spread can be zero where their noise is
+/// not (a few half-float renders of a smooth region often agree to the last bit). The
+/// rounding of the mean of `K` such images is not divided by `K` (the roundings of equal
+/// values are the same): `ulp²/12` is added to each mean's variance, whatever `K`.
+pub fn add_half_rounding(estimate: &mut Estimate) {
+    let image = &mut estimate.image;
+    for (m, v) in image.mean.iter().zip(image.var.iter_mut()) {
+        *v += m.map(half_rounding_variance);
+    }
+    estimate.source += "; plus the half floats' rounding, ulp²/12 a value";
+}
+
 /// One region (a block, or the whole image) of the comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Region {
@@ -144,6 +172,8 @@ pub struct Region {
 /// The verdict of [`compare`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Comparison {
+    /// The images' width and height in pixels.
+    pub size: (u32, u32),
     /// The family-wise false-alarm rate.
     pub alpha: f64,
     /// Number of pixel-channel tests.
@@ -478,6 +508,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Str
     let image = image_means(ia, ib, na, nb);
     let m = pixel_tests as f64;
     Ok(Comparison {
+        size: (w, h),
         alpha,
         pixel_tests,
         block_tests,
@@ -562,31 +593,50 @@ pub fn compare_images(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, St
 }
 
 /// The difference image of a comparison: each pixel coloured by the z of its channel with
-/// the largest `|z|`: red where the first image is brighter, blue where it is darker,
-/// brighter in proportion to `|z| / z_critical`, white beyond `z_critical` (a failed
-/// test), black where the images agree exactly. 8-bit sRGB bytes, row-major.
+/// the largest `|z|`: red where the candidate (the second image) is brighter, blue where it
+/// is darker, brighter in proportion to `|z| / z_critical`, white beyond `z_critical` (a
+/// failed pixel test), black where the images agree exactly; and the outline of every
+/// failed block (a [`BLOCK`]-pixel square whose mean differs beyond `z_critical`) in
+/// yellow, drawn over the pixels at its edge, so that a difference too small for any
+/// pixel to fail is still seen where it is. 8-bit sRGB bytes, row-major.
 pub fn difference_rgb8(c: &Comparison) -> Vec<u8> {
-    let mut out = Vec::with_capacity(3 * c.z.len());
-    for zs in &c.z {
-        let k = (0..3)
-            .max_by(|&p, &q| zs[p].abs().total_cmp(&zs[q].abs()))
-            .unwrap_or(0);
-        let t = (zs[k].abs() / c.z_critical).min(1.0);
-        let t = if t.is_nan() { 1.0 } else { t };
-        let rgb = if fails(zs[k], c.z_critical) {
-            DVec3::ONE
-        } else if zs[k] >= 0.0 {
-            DVec3::new(t, 0.25 * t, 0.25 * t)
-        } else {
-            DVec3::new(0.25 * t, 0.25 * t, t)
-        };
-        out.extend([
-            display::srgb8(rgb.x),
-            display::srgb8(rgb.y),
-            display::srgb8(rgb.z),
-        ]);
+    let mut rgb: Vec<DVec3> =
+        c.z.iter()
+            .map(|zs| {
+                let k = (0..3)
+                    .max_by(|&p, &q| zs[p].abs().total_cmp(&zs[q].abs()))
+                    .unwrap_or(0);
+                let t = (zs[k].abs() / c.z_critical).min(1.0);
+                let t = if t.is_nan() { 1.0 } else { t };
+                if fails(zs[k], c.z_critical) {
+                    DVec3::ONE
+                } else if zs[k] >= 0.0 {
+                    DVec3::new(t, 0.25 * t, 0.25 * t)
+                } else {
+                    DVec3::new(0.25 * t, 0.25 * t, t)
+                }
+            })
+            .collect();
+    let (w, h) = c.size;
+    for r in c.regions.iter().filter(|r| fails(r.z, c.z_critical)) {
+        let (x1, y1) = ((r.x + BLOCK).min(w) - 1, (r.y + BLOCK).min(h) - 1);
+        for y in r.y..=y1 {
+            for x in r.x..=x1 {
+                if x == r.x || x == x1 || y == r.y || y == y1 {
+                    rgb[(y * w + x) as usize] = DVec3::new(1.0, 0.85, 0.0);
+                }
+            }
+        }
     }
-    out
+    rgb.iter()
+        .flat_map(|p| {
+            [
+                display::srgb8(p.x),
+                display::srgb8(p.y),
+                display::srgb8(p.z),
+            ]
+        })
+        .collect()
 }
 
 /// The noise of an image: the RMS over pixels of the standard error of a pixel's

@@ -3,13 +3,32 @@
 //! *Checking a sampler*.
 
 use std::path::PathBuf;
+use std::sync::OnceLock;
 
 use super::cells::grid;
 use super::{Warp, WarpOptions};
 
+/// The folder set by [`set_failure_dir`] (`raylemma check sampler --failure-images DIR`).
+static FAILURE_DIR: OnceLock<PathBuf> = OnceLock::new();
+
+/// The folder the failure images go into: the one [`set_failure_dir`] set, else
+/// `warp-failures/` in the working directory (never a folder fixed when the binary was
+/// built, which may be read-only or another user's).
+pub fn failure_dir() -> PathBuf {
+    FAILURE_DIR
+        .get()
+        .cloned()
+        .unwrap_or_else(|| PathBuf::from("warp-failures"))
+}
+
+/// Sets the folder of the failure images for the rest of the process (the first call
+/// wins; `false` if it was already set to another folder).
+pub fn set_failure_dir(dir: PathBuf) -> bool {
+    FAILURE_DIR.get_or_init(|| dir.clone()) == &dir
+}
+
 /// Writes `observed`, `expected` and `difference` PNGs (one pixel block per cell) into
-/// `warp-failures/<name>/` of the target directory (`CARGO_TARGET_DIR` if set, else the
-/// project's `target/`) and returns that directory. Rows are the cells' first coordinate
+/// `<name>/` of [`failure_dir`] and returns that directory. Rows are the cells' first coordinate
 /// (the interval's `x`, the square's `u2`, the disc's `r^2`, the sphere's `z`), increasing
 /// upwards; columns the second (the square's `u1`, the azimuth), increasing to the right.
 pub(super) fn write_failure_images(
@@ -24,11 +43,7 @@ pub(super) fn write_failure_images(
         .chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .collect();
-    let target = std::env::var_os("CARGO_TARGET_DIR").map_or_else(
-        || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"),
-        PathBuf::from,
-    );
-    let dir = target.join("warp-failures").join(safe);
+    let dir = failure_dir().join(safe);
     std::fs::create_dir_all(&dir).ok()?;
     let max = expected
         .iter()

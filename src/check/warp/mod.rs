@@ -33,6 +33,7 @@ use crate::rng::{self, Rng};
 use crate::stats::chi2;
 use cells::{cell_of, cell_probabilities, grid, outside, worst_cells};
 use images::write_failure_images;
+pub use images::{failure_dir, set_failure_dir};
 
 // ANCHOR: interface
 /// The domain a sampler draws from, and the measure its pdf is a density for.
@@ -271,6 +272,23 @@ impl Default for WarpOptions {
     }
 }
 
+/// The hint for a hemisphere sampler's sample below the horizon: the checker's axes
+/// (`+z` up), and how many of the `rest` samples still to draw are below it too (about
+/// half for a sampler written with another axis up, which is then named as the likely
+/// cause).
+fn below_horizon(warp: &dyn Warp, rng: &mut Rng, rest: usize) -> String {
+    let below = (0..rest).filter(|_| warp.sample(rng).z < 0.0).count() + 1;
+    let total = rest + 1;
+    let mut hint = format!(
+        ". The hemisphere here is z >= 0 (+z is up, the normal); {below} of the {total} \
+         samples from this one on have z < 0"
+    );
+    if below * 4 > total {
+        hint += ": a sampler written with y (or another axis) up must map its up axis to z";
+    }
+    hint
+}
+
 /// Draws the samples, bins them, and runs Pearson's test.
 ///
 /// # Errors
@@ -304,9 +322,13 @@ pub fn chi_squared(
             } else {
                 "zero"
             };
-            return Err(format!(
+            let mut message = format!(
                 "sample {k} = {p:?}: the claimed pdf is {pdf} there ({why}), and a renderer divides by it"
-            ));
+            );
+            if domain == Domain::Sphere && p.z < 0.0 && pdf == 0.0 {
+                message += &below_horizon(warp, &mut rng, options.samples - k - 1);
+            }
+            return Err(message);
         }
         observed[cell_of(domain, p, rows, cols)] += 1;
     }

@@ -152,27 +152,53 @@ fn writes_images_on_failure() {
     );
     let message = chi2_message(&v);
     assert!(message.contains("images in"), "{message}");
-    // The folder the message names: under CARGO_TARGET_DIR if set, else target/.
+    // The folder the message names: warp-failures/ of the working directory (the crate's
+    // root under cargo test), never a folder fixed when the binary was built.
     let named = message
         .rsplit("images in ")
         .next()
         .unwrap_or_default()
         .trim();
     let dir = std::path::Path::new(named);
-    assert!(dir.ends_with("warp-failures/images_demo"), "{message}");
-    let expected = std::env::var_os("CARGO_TARGET_DIR").map_or_else(
-        || std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target"),
-        std::path::PathBuf::from,
-    );
-    assert!(
-        dir.starts_with(&expected),
-        "{} is not under {}",
-        dir.display(),
-        expected.display()
-    );
+    assert_eq!(dir, warp::failure_dir().join("images_demo"), "{message}");
+    assert!(dir.is_relative(), "{message}");
     for f in ["observed.png", "expected.png", "difference.png"] {
         assert!(dir.join(f).is_file(), "{f} missing");
     }
+}
+
+/// A cosine sampler written with y up (its samples have y >= 0, z on both sides) fails on
+/// its first sample below the horizon, and the message says the checker's axes and how
+/// many samples are below; the same sampler with z up passes.
+#[test]
+fn a_sampler_with_y_up_is_told_that_z_is_up() {
+    let z_up = |u: DVec2| raylemma::sampling::cosine::cosine_malley(u);
+    square("cosine, z up", Domain::Sphere, z_up, cosine_pdf).assert_pass();
+    let y_up = |u: DVec2| {
+        let w = raylemma::sampling::cosine::cosine_malley(u);
+        DVec3::new(w.x, w.z, w.y)
+    };
+    let v = square("cosine, y up", Domain::Sphere, y_up, cosine_pdf);
+    let message = chi2_message(&v);
+    assert!(
+        v.failed("chi_squared")
+            && message.contains("+z is up")
+            && message.contains("must map its up axis to z"),
+        "{message}"
+    );
+    // About half of the samples are below the horizon (binomial: 0.5 +- 0.002 at 5 sd).
+    let (below, total): (f64, f64) = message
+        .split("; ")
+        .find_map(|part| {
+            let (b, rest) = part.split_once(" of the ")?;
+            let (t, _) = rest.split_once(' ')?;
+            Some((b.rsplit(' ').next()?.parse().ok()?, t.parse().ok()?))
+        })
+        .unwrap_or((f64::NAN, f64::NAN));
+    assert!(
+        (below / total - 0.5).abs() < 0.01,
+        "{below} / {total}: {message}"
+    );
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! plain EXRs as other renderers write them, and the refusal of images no comparison can
 //! use.
 //!
-//! Statistical tests (2 of the suite's budget of 200), on synthetic images with normal
+//! Statistical tests (3 of the suite's budget of 200), on synthetic images with normal
 //! noise of known size (no rendering: the tests cost milliseconds): the pixel z's of 2, 4
 //! and 16 candidates are standard normal and the verdict is *agree*; 4 candidates
 //! with normal critical values (the planted twin) raise false alarms; a 3 % brighter
@@ -223,6 +223,17 @@ fn equivalent_z_matches_the_t_table_and_satterthwaite_the_hand_count() {
         assert!((z - 1.959_964).abs() < 2e-5, "t = {t} with {dof}: z = {z}");
         assert!((equivalent_z(-t, 1.0, dof) + z).abs() < 1e-12);
     }
+    // Far out, z keeps growing with t (no cap where a p-value computed as 1 - cdf would
+    // round to 0 or 2^-53), so that the worst-pixel list keeps its order.
+    for dof in [1.0, 3.0, 15.0, 1023.0] {
+        let mut last = 0.0;
+        for k in 0..60 {
+            let t = 3.0 * 1.2_f64.powi(k);
+            let z = equivalent_z(t, 1.0, dof);
+            assert!(z > last, "dof {dof}: z({t}) = {z} after {last}");
+            last = z;
+        }
+    }
     assert_eq!(equivalent_z(2.5, 1.0, f64::INFINITY), 2.5);
     assert_eq!(equivalent_z(0.0, 0.0, 3.0), 0.0);
     assert_eq!(equivalent_z(1.0, 0.0, 3.0), f64::INFINITY);
@@ -392,4 +403,74 @@ fn images_no_comparison_can_use_are_refused_by_name() {
     one.write_exr(&path).unwrap();
     let e = ExrContents::read(&path).unwrap_err();
     assert!(e.problem.contains("at least 2 samples"), "{e}");
+}
+
+/// Four half-float candidates of a correct image whose noise (sd 2e-5) is below a half
+/// float's spacing there (2.4e-4 to 4.9e-4): in most pixels the four round alike and their
+/// spread is zero, so without the rounding's variance every such pixel's rounding error is
+/// a "difference" of many sd (the planted twin: it must DIFFER); with it they AGREE, and the
+/// same candidates 3 % brighter still DIFFER. Statistical: one test at the suite's level.
+#[test]
+fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
+    use raylemma::render::compare::add_half_rounding;
+    let mut rng = rng::seeded(2718);
+    let exact = |i: usize| DVec3::new(0.2 + 0.003 * i as f64, 0.5, 0.25 + 0.001 * (i % 7) as f64);
+    let noise = |rng: &mut Rng, sd: f64| {
+        sd * DVec3::new(
+            standard_normal(rng),
+            standard_normal(rng),
+            standard_normal(rng),
+        )
+    };
+    let reference = Estimate::from_variance(Image {
+        width: 16,
+        height: 16,
+        mean: (0..256).map(|i| exact(i) + noise(&mut rng, 1e-5)).collect(),
+        var: vec![DVec3::splat(1e-10); 256],
+        spp: Some(4096),
+    });
+    let mut candidates = |gain: f64, stem: &str| {
+        let files: Vec<ExrContents> = (0..4)
+            .map(|j| {
+                let values: Vec<DVec3> = (0..256)
+                    .map(|i| gain * exact(i) + noise(&mut rng, 2e-5))
+                    .collect();
+                let path = tmp(&format!("{stem}-{j}.exr"));
+                write_plain(&path, (16, 16), &["R", "G", "B"], true, |c, i| {
+                    values[i][c] as f32
+                });
+                ExrContents::read(&path).unwrap()
+            })
+            .collect();
+        assert!(files.iter().all(|f| f.half));
+        let means: Vec<&[DVec3]> = files.iter().map(|f| &f.mean[..]).collect();
+        Estimate::from_spread(16, 16, &means).unwrap()
+    };
+    let alpha = test_alpha();
+    let spread = candidates(1.0, "half-agree");
+    let zero = spread
+        .image
+        .var
+        .iter()
+        .flat_map(|v| v.to_array())
+        .filter(|&v| v == 0.0)
+        .count();
+    assert!(
+        zero > 384,
+        "only {zero} of 768 pixel-channels have zero spread"
+    );
+    let raw = compare(&reference, &spread, alpha).unwrap();
+    assert!(!raw.agree(), "{}", raw.report(["ref", "half"]));
+    let mut rounded = spread;
+    add_half_rounding(&mut rounded);
+    let c = compare(&reference, &rounded, alpha).unwrap();
+    assert!(c.agree(), "{}", c.report(["ref", "half"]));
+    assert!(
+        rounded.source.contains("half floats' rounding"),
+        "{}",
+        rounded.source
+    );
+    let mut bright = candidates(1.03, "half-bright");
+    add_half_rounding(&mut bright);
+    assert!(!compare(&reference, &bright, alpha).unwrap().agree());
 }
