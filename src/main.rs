@@ -40,6 +40,15 @@ enum Cmd {
     /// Render a scene file: SCENE.exr (linear sRGB and the variance of each pixel's mean),
     /// SCENE.png (display) and SCENE.json (scene hash, spp, seed, time, version) in --out.
     Render(cmd::render::RenderArgs),
+    /// Pool independent renders of one scene (different seeds) into one render, exactly:
+    /// means, variances and samples per pixel. Exit status 2 for renders of different
+    /// scenes, settings or builds, or two with one seed.
+    Merge(cmd::merge::MergeArgs),
+    /// Check another renderer on the conformance ladder (scenes/conformance/): each rung
+    /// written in its format, rendered several times with different seeds and compared
+    /// with its reference; a card per rung and depth (text, JSON, JUnit XML). Exit status
+    /// 0 if every rung agrees, 1 if one differs or the renderer failed on it, 2 for usage.
+    Conformance(cmd::conformance::ConformanceArgs),
     /// Does a candidate agree with a reference render within their noise? The candidate is
     /// one EXR with variance channels or several independent plain RGB EXRs. Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
@@ -76,6 +85,8 @@ fn main() -> ExitCode {
         Some(Cmd::Book) => cmd::book::build(),
         Some(Cmd::Render(args)) => cmd::render::run(args),
         Some(Cmd::Compare(args)) => cmd::compare::run(args),
+        Some(Cmd::Merge(args)) => cmd::merge::run(args),
+        Some(Cmd::Conformance(args)) => cmd::conformance::run(args),
         Some(Cmd::Check { command }) => cmd::check::run(command),
         Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
         Some(Cmd::Export(args)) => cmd::export::run(args),

@@ -14,9 +14,11 @@
 pub mod book;
 pub mod check;
 pub mod compare;
+pub mod conformance;
 pub mod exercises;
 pub mod export;
 pub mod figures;
+pub mod merge;
 pub mod render;
 
 use std::path::{Path, PathBuf};

@@ -58,7 +58,8 @@ fn render_scene(
         .map(|s| s.to_string_lossy().into_owned())
         .ok_or_else(|| format!("{}: not a file name", scene.display()))?;
     eprintln!("raylemma: rendering {}", scene.display());
-    let (_, image, sidecar) = render::render_file(scene, spp, seed, render::Progress::Bar)?;
+    let (_, image, mut sidecar) = render::render_file(scene, spp, seed, render::Progress::Bar)?;
+    sidecar.build = render::files::build_id();
     let files = render::write_outputs(out, &stem, &image, &sidecar).map_err(|e| e.to_string())?;
     eprintln!(
         "raylemma: {} spp in {:.2} s ({:.3e} pixel samples per second, {} threads)",

@@ -246,6 +246,8 @@ pub fn render_file(
         seconds,
         threads: rayon::current_num_threads(),
         made_from: None,
+        build: None,
+        seeds: Vec::new(),
     };
     Ok((scene, image, sidecar))
 }

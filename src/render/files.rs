@@ -32,6 +32,13 @@ pub struct Sidecar {
     pub threads: usize,
     /// What the render was made from, for a reference render ([`MadeFrom`]).
     pub made_from: Option<MadeFrom>,
+    /// The build that rendered it: the FNV-1a hash of the `raylemma` executable, which
+    /// `raylemma render` records ([`build_id`]) and `raylemma merge` requires to be the
+    /// same for every part (`None`: not recorded).
+    pub build: Option<String>,
+    /// For a merged render, the seeds of every render it pools (empty for one render,
+    /// whose seed is `seed`).
+    pub seeds: Vec<u64>,
 }
 
 /// The sidecar as written, key by key in the order of the renderer chapter.
@@ -53,6 +60,10 @@ struct Json<'a> {
     pixel_samples_per_second: u64,
     #[serde(skip_serializing_if = "Option::is_none")]
     made_from: Option<&'a MadeFrom>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    build: Option<&'a str>,
+    #[serde(skip_serializing_if = "<[u64]>::is_empty")]
+    seeds: &'a [u64],
 }
 
 /// The keys of a sidecar that are read back (by the reference job).
@@ -66,9 +77,30 @@ struct Read {
     seconds: f64,
     threads: usize,
     made_from: Option<MadeFrom>,
+    #[serde(default)]
+    build: Option<String>,
+    #[serde(default)]
+    seeds: Vec<u64>,
+}
+
+/// The FNV-1a hash of the running executable's bytes, in hexadecimal: the same for every
+/// render made by one build, whatever machine runs it (`None` if it cannot be read).
+pub fn build_id() -> Option<String> {
+    let exe = std::env::current_exe().ok()?;
+    let bytes = std::fs::read(exe).ok()?;
+    Some(format!("{:016x}", super::format::fnv1a(&bytes)))
 }
 
 impl Sidecar {
+    /// The seeds of the renders this one pools: `seeds`, or `[seed]` for one render.
+    pub fn all_seeds(&self) -> Vec<u64> {
+        if self.seeds.is_empty() {
+            vec![self.seed]
+        } else {
+            self.seeds.clone()
+        }
+    }
+
     /// The sidecar of `image` as pretty-printed JSON (the keys of the renderer chapter),
     /// ending with a newline.
     pub fn to_json(&self, image: &Image) -> String {
@@ -87,6 +119,8 @@ impl Sidecar {
             // A float-to-integer `as` saturates (and takes NaN to 0).
             pixel_samples_per_second: (samples / self.seconds.max(1e-9)).round() as u64,
             made_from: self.made_from.as_ref(),
+            build: self.build.as_deref(),
+            seeds: &self.seeds,
         };
         // Serialising plain strings and numbers into a string cannot fail.
         let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
@@ -113,6 +147,8 @@ impl Sidecar {
             seconds: r.seconds,
             threads: r.threads,
             made_from: r.made_from,
+            build: r.build,
+            seeds: r.seeds,
         })
     }
 }

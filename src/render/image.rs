@@ -17,7 +17,8 @@
 //! # What `compare` reads
 //!
 //! [`ExrContents::read`] reads any single-part scan-line or tiled OpenEXR file with channels
-//! `R`, `G`, `B` in any order, half or float (other channels are ignored), with or without
+//! `R`, `G`, `B` in any order, half or float (other channels are ignored; lacking `R`, `G`,
+//! `B`, the channels `X`, `Y`, `Z` are read as CIE XYZ and converted to linear sRGB), with or without
 //! the three variance channels and the `spp` attribute: the plain images that Mitsuba,
 //! pbrt or a student's renderer write. It refuses, naming the file and the pixel, what no
 //! comparison can use: a file that is not OpenEXR (a PNG is named as one), a truncated
@@ -180,6 +181,12 @@ pub struct ExrContents {
     pub spp: Option<u32>,
     /// Every channel's name, in the file's order (for messages).
     pub channels: Vec<String>,
+    /// Whether the means are stored as half floats (11 significant bits): their rounding
+    /// is then part of their error ([`crate::render::compare::add_half_rounding`]).
+    pub half: bool,
+    /// Whether the means were read from channels `X`, `Y`, `Z` (CIE XYZ, as Mitsuba's
+    /// spectral films write) and converted to linear sRGB, for lack of `R`, `G`, `B`.
+    pub from_xyz: bool,
 }
 
 impl ExrContents {
@@ -242,15 +249,36 @@ impl ExrContents {
             }
             Ok(Some(c.sample_data.values_as_f32().map(f64::from).collect()))
         };
+        let has = |name: &str| list.iter().any(|c| c.name.to_string() == name);
+        let from_xyz =
+            !CHANNELS[..3].iter().all(|n| has(n)) && ["X", "Y", "Z"].iter().all(|n| has(n));
+        let names: [&str; 3] = if from_xyz {
+            ["X", "Y", "Z"]
+        } else {
+            ["R", "G", "B"]
+        };
+        let half = list.iter().any(|c| {
+            names.contains(&c.name.to_string().as_str())
+                && matches!(c.sample_data, FlatSamples::F16(_))
+        });
         let mut rgb = Vec::new();
-        for name in &CHANNELS[..3] {
+        for name in names {
             match find(name)? {
                 Some(values) => rgb.push(values),
                 None => {
                     return Err(err(format!(
-                        "no channel {name:?}; the file has {} (compare needs R, G, B: linear sRGB)",
+                        "no channel {name:?}; the file has {} (compare needs R, G, B: linear sRGB, or X, Y, Z: CIE XYZ)",
                         channels.join(", ")
                     )));
+                }
+            }
+        }
+        if from_xyz {
+            let m = crate::spectral::cie::xyz_to_linear_srgb_matrix();
+            if let [x, y, z] = &mut rgb[..] {
+                for ((x, y), z) in x.iter_mut().zip(y.iter_mut()).zip(z.iter_mut()) {
+                    let v = m * DVec3::new(*x, *y, *z);
+                    (*x, *y, *z) = (v.x, v.y, v.z);
                 }
             }
         }
@@ -279,6 +307,8 @@ impl ExrContents {
             spp: spp_attribute(&image.attributes.other)
                 .or_else(|| spp_attribute(&layer.attributes.other)),
             channels,
+            half,
+            from_xyz,
         };
         contents.check().map_err(err)?;
         Ok(contents)

@@ -10,6 +10,7 @@
 //!   refuses the file with its line and the reason;
 //! * [`scene`]: the model, [`Scene`], and its geometric queries (the first surface along a
 //!   ray, the point and normal of a hit, the side a light emits to);
+//! * [`tracer`]: the scene's surfaces laid out for fast intersection;
 //! * [`camera`]: the pinhole camera;
 //! * [`integrator`]: the spectral path tracer (next-event estimation with MIS, roulette,
 //!   hero wavelengths) and ray offsets;
@@ -18,6 +19,10 @@
 //! * [`image`]: the means and variances of the pixels, and their EXR and PNG encodings;
 //! * [`files`]: the three files of a render (EXR, PNG, the JSON [`Sidecar`]), written
 //!   together or not at all;
+//! * [`provenance`]: what a reference render was made from (scene, data, code, settings);
+//! * [`merge`]: independent renders of one scene pooled exactly into one;
+//! * [`exr_header`]: an EXR header's claimed sizes checked against the file before the
+//!   reader allocates (chapter *Bad input*);
 //! * [`compare`]: do two renders agree within their noise?
 //! * [`export`]: the scene for other renderers: Mitsuba 3 XML and fully resolved JSON.
 
@@ -30,6 +35,7 @@ pub mod files;
 pub mod format;
 pub mod image;
 pub mod integrator;
+pub mod merge;
 pub mod pixel;
 pub mod provenance;
 pub mod scene;

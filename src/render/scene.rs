@@ -17,7 +17,7 @@ use crate::geometry::sphere::{Sphere, intersect_stable};
 use crate::optics::dispersion::Sellmeier;
 use crate::spectral::emission::{EmissionSampler, WavelengthSample};
 use crate::spectral::spectrum::Spectrum;
-use crate::spectral::wavelength::{N, Strategy, Wavelengths, wrap01};
+use crate::spectral::wavelength::{N, Strategy, Wavelengths, rotate01};
 use crate::transport::shadow::{Light, QuadLight, SphereLight};
 
 /// The strategies of direct lighting: the shadow-ray chapter's
@@ -86,7 +86,7 @@ impl Wavelength {
             Wavelength::Strategy(s) => s.sample(u),
             Wavelength::Emission(sampler) => {
                 let lanes: [WavelengthSample; N] =
-                    std::array::from_fn(|j| sampler.sample(wrap01(u + j as f64 / N as f64)));
+                    std::array::from_fn(|j| sampler.sample(rotate01(u, j as f64 / N as f64)));
                 Wavelengths {
                     lambda: lanes.map(|l| l.nm),
                     pdf: lanes.map(|l| l.pdf),

@@ -23,14 +23,15 @@ use crate::geometry::sphere::{Sphere, intersect_stable};
 use crate::spectral::spectrum::{Dense, Spectrum, WholeNm};
 
 /// The parallelograms of a scene, one array per number: plane `n . p = plane`, corner
-/// `c`, dual basis `a`, `b` ([`crate::geometry::parallelogram::Parallelogram`]).
+/// `c`, the edges across scaled by the area, `-e2 / A` and `e1 / A`, that read the edge
+/// coordinates off `(o - c) x d` ([`crate::geometry::parallelogram::Parallelogram`]).
 #[derive(Clone, Debug, Default)]
 struct Quads {
     n: Vec<DVec3>,
     plane: Vec<f64>,
     corner: Vec<DVec3>,
-    dual_a: Vec<DVec3>,
-    dual_b: Vec<DVec3>,
+    across_a: Vec<DVec3>,
+    across_b: Vec<DVec3>,
     surface: Vec<Surface>,
 }
 
@@ -40,12 +41,13 @@ impl Quads {
     #[inline]
     fn hit(&self, i: usize, o: DVec3, d: DVec3, nearest: f64) -> Option<f64> {
         let n = self.n[i];
-        let t = (self.plane[i] - n.dot(o)) / n.dot(d);
+        let nd = n.dot(d);
+        let t = (self.plane[i] - n.dot(o)) / nd;
         if !(t > 0.0 && t < nearest && t.is_finite()) {
             return None;
         }
-        let p = o + t * d - self.corner[i];
-        let (a, b) = (p.dot(self.dual_a[i]), p.dot(self.dual_b[i]));
+        let s = (o - self.corner[i]).cross(d);
+        let (a, b) = (s.dot(self.across_a[i]) / nd, s.dot(self.across_b[i]) / nd);
         ((0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b)).then_some(t)
     }
 }
@@ -210,12 +212,12 @@ impl<'a> Tracer<'a> {
                 axis_quads.push(a);
                 return;
             }
-            let (n, plane, dual_a, dual_b) = q.plane_and_duals();
+            let (n, plane, across_a, across_b) = q.plane_and_across();
             quads.n.push(n);
             quads.plane.push(plane);
             quads.corner.push(q.corner());
-            quads.dual_a.push(dual_a);
-            quads.dual_b.push(dual_b);
+            quads.across_a.push(across_a);
+            quads.across_b.push(across_b);
             quads.surface.push(s);
         };
         for (i, s) in scene.shapes.iter().enumerate() {

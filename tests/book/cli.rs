@@ -380,3 +380,232 @@ fn compare_refuses_headers_that_claim_what_the_file_cannot_hold() {
         }
     }
 }
+
+/// `k` plain float candidates of the synthetic scene (as [`synthetic`]'s, seed `seed`),
+/// each pixel put through `to_file` and written as the channels `names`.
+fn candidates_as(
+    stem: &str,
+    k: usize,
+    names: [&str; 3],
+    to_file: impl Fn(DVec3) -> DVec3,
+) -> Vec<PathBuf> {
+    let mut rng = rng::seeded(99);
+    (0..k)
+        .map(|j| {
+            let values: Vec<DVec3> = (0..256)
+                .map(|i| {
+                    let n = DVec3::new(
+                        standard_normal(&mut rng),
+                        standard_normal(&mut rng),
+                        standard_normal(&mut rng),
+                    );
+                    to_file(exact(i) + 1e-2 * n)
+                })
+                .collect();
+            let path = tmp(&format!("{stem}-{j}.exr"));
+            write_plain(&path, (16, 16), &names, false, |c, i| values[i][c] as f32);
+            path
+        })
+        .collect()
+}
+
+/// Candidates written as CIE XYZ, as Mitsuba's spectral films write them: read by their
+/// channel names X, Y, Z and converted to linear sRGB, they agree; the same values under
+/// the names R, G, B (XYZ mistaken for sRGB) differ, and the report's hint names the
+/// matrix; ordinary sRGB candidates 3 % too bright differ with no such hint.
+#[test]
+fn compare_reads_xyz_channels_and_hints_at_xyz_written_as_rgb() {
+    use raylemma::spectral::cie::linear_srgb_to_xyz;
+    let (reference, _) = synthetic("xyz", 1, 1.0);
+    let xyz = candidates_as("xyz-named", 4, ["X", "Y", "Z"], linear_srgb_to_xyz);
+    let out = compare_files(&reference, &xyz, &[]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{report}");
+    assert!(
+        report.contains("X, Y, Z (CIE XYZ) converted to linear sRGB"),
+        "{report}"
+    );
+    let mislabelled = candidates_as("xyz-as-rgb", 4, ["R", "G", "B"], linear_srgb_to_xyz);
+    let out = compare_files(&reference, &mislabelled, &[]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{report}");
+    assert!(
+        report.contains("hint:") && report.contains("taken as CIE XYZ"),
+        "{report}"
+    );
+    let bright = candidates_as("xyz-bright", 4, ["R", "G", "B"], |v| 1.03 * v);
+    let out = compare_files(&reference, &bright, &[]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{report}");
+    assert!(!report.contains("hint:"), "{report}");
+}
+
+/// The difference image outlines a failed block in yellow even where no pixel fails: a
+/// candidate 1 % brighter (a tenth of a pixel's sd, far beyond a 16 x 16 block's) fails the
+/// block and the whole image but hardly a pixel; the agreeing candidates get no outline.
+#[test]
+fn the_difference_image_outlines_failed_blocks() {
+    let (reference, _) = synthetic("blocks", 1, 1.0);
+    let png_of = |candidates: &[PathBuf], name: &str| {
+        let png = tmp(name);
+        let out = compare_files(&reference, candidates, &["--diff", png.to_str().unwrap()]);
+        let image = image::open(&png)
+            .expect("the difference image reads")
+            .to_rgb8();
+        (out.status.code(), image)
+    };
+    let yellow = |p: &image::Rgb<u8>| p[0] > 200 && p[1] > 180 && p[2] < 60;
+    let (status, ok) = png_of(
+        &candidates_as("blocks-ok", 8, ["R", "G", "B"], |v| v),
+        "ok.png",
+    );
+    assert_eq!(status, Some(0));
+    assert!(!ok.pixels().any(yellow), "an outline where nothing failed");
+    let bright = candidates_as("blocks-bright", 8, ["R", "G", "B"], |v| 1.01 * v);
+    let (status, diff) = png_of(&bright, "bright.png");
+    assert_eq!(status, Some(1));
+    for (x, y) in [(0, 0), (15, 0), (0, 15), (15, 15), (7, 0), (0, 9)] {
+        assert!(
+            yellow(diff.get_pixel(x, y)),
+            "({x}, {y}): {:?}",
+            diff.get_pixel(x, y)
+        );
+    }
+    assert!(
+        !yellow(diff.get_pixel(7, 7)),
+        "the block's inside is its pixels' colours"
+    );
+}
+
+/// `check sampler --failure-images DIR` writes the failure images into DIR, and the
+/// message names it: a file of uniform hemisphere samples claimed as cosine-weighted.
+#[test]
+fn check_sampler_writes_failure_images_where_it_is_told() {
+    use raylemma::check::warp::{self, planted};
+    let dir = tmp("failure-images");
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut rng = rng::seeded(5);
+    let mut text = String::from("x,y,z\n");
+    for _ in 0..20_000 {
+        let p = planted::hemisphere_uniform(warp::square_point(&mut rng));
+        text.push_str(&format!("{:?},{:?},{:?}\n", p.x, p.y, p.z));
+    }
+    let samples = tmp("uniform-as-cosine.csv");
+    std::fs::write(&samples, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_raylemma"))
+        .args([
+            "check",
+            "sampler",
+            "--target",
+            "cosine-hemisphere",
+            "--samples",
+        ])
+        .arg(&samples)
+        .arg("--failure-images")
+        .arg(&dir)
+        .output()
+        .expect("the binary runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{text}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        text.contains(&format!("images in {}", dir.display())),
+        "{text}"
+    );
+    let written: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert_eq!(written.len(), 1, "{text}");
+    let folder = written[0].as_ref().unwrap().path();
+    for f in ["observed.png", "expected.png", "difference.png"] {
+        assert!(
+            folder.join(f).is_file(),
+            "{f} missing in {}",
+            folder.display()
+        );
+    }
+}
+
+/// `raylemma conformance` with raylemma itself as the renderer passes rung 1 (exit 0, the
+/// card as JSON and JUnit); the same renderer with its light 5 % too bright fails it and the
+/// card's first failing rung names what it tests; a renderer that writes nothing is an
+/// error on the rung (exit 1) and the suite goes on; an unknown rung is a usage error.
+#[test]
+fn conformance_passes_raylemma_and_points_at_a_fault() {
+    let bin = env!("CARGO_BIN_EXE_raylemma");
+    let work = tmp("conformance");
+    let _ = std::fs::remove_dir_all(&work);
+    let run = |renderer: &str, extra: &[&str]| {
+        Command::new(bin)
+            .args([
+                "conformance",
+                "--format",
+                "toml",
+                "--rungs",
+                "1",
+                "--runs",
+                "3",
+                "--spp",
+                "16",
+            ])
+            .arg("--renderer")
+            .arg(renderer)
+            .arg("--work")
+            .arg(&work)
+            .args(extra)
+            .output()
+            .expect("the binary runs")
+    };
+    let ours = format!("{bin} render {{scene}} --spp {{spp}} --seed {{seed}} --out {{outdir}}");
+    let (json, junit) = (tmp("card.json"), tmp("card.xml"));
+    let out = run(
+        &ours,
+        &[
+            "--json",
+            json.to_str().unwrap(),
+            "--junit",
+            junit.to_str().unwrap(),
+        ],
+    );
+    let card = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{card}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(card.contains("every rung AGREES"), "{card}");
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(v["rungs"][0]["verdict"], "agree", "{v}");
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(
+        xml.contains("tests=\"1\" failures=\"0\" errors=\"0\""),
+        "{xml}"
+    );
+    // The planted fault: every emitter 5 % too bright.
+    let bright = format!(
+        "sed 's/^emission = 10$/emission = 10.5/' {{scene}} > {{outdir}}/b.toml && {bin} render {{outdir}}/b.toml --spp {{spp}} --seed {{seed}} --out {{outdir}} && mv {{outdir}}/b.exr {{out}}"
+    );
+    let out = run(&bright, &[]);
+    let card = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{card}");
+    assert!(
+        card.contains("first failing: rung 1")
+            && card.contains("a failure here usually means")
+            && card.contains("differ"),
+        "{card}"
+    );
+    let out = run("true", &[]);
+    let card = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{card}");
+    assert!(
+        card.contains("error") && card.contains("wrote no"),
+        "{card}"
+    );
+    let out = run(&ours, &["--rungs", "99"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no rung 99"));
+}

@@ -76,7 +76,7 @@ impl Program {
     /// A [`DataError`] naming the program: it cannot be started, exits with a status other
     /// than 0 or by a signal, does not finish within its timeout, writes text that is not
     /// UTF-8, or writes fewer or more lines than questions (with the line).
-    pub(super) fn ask(&self, questions: &[String], run: usize) -> Result<Vec<String>, DataError> {
+    pub(crate) fn ask(&self, questions: &[String], run: usize) -> Result<Vec<String>, DataError> {
         let command = &self.command;
         let whole = |problem: String| DataError::new(command, 0, problem);
         let mut input = String::with_capacity(questions.iter().map(|q| q.len() + 1).sum());
@@ -190,7 +190,7 @@ impl Program {
     }
 
     /// The name of the program's answers in messages: `COMMAND (stdout)`.
-    pub(super) fn output_name(&self) -> String {
+    pub(crate) fn output_name(&self) -> String {
         format!("{} (stdout)", self.command)
     }
 }
@@ -223,6 +223,41 @@ fn spawn(command: &str, dir: Option<&std::path::Path>) -> std::io::Result<Child>
     #[cfg(unix)]
     std::os::unix::process::CommandExt::process_group(&mut sh, 0);
     sh.spawn()
+}
+
+/// Runs `command` by `sh -c` in a process group of its own, its standard output and error
+/// into the file `log`, for at most `timeout` (then it is killed, with every process it
+/// started): a renderer run by `raylemma conformance`.
+///
+/// # Errors
+/// The command cannot be started, fails (its status), or does not finish in time.
+pub fn run_logged(command: &str, log: &std::path::Path, timeout: Duration) -> Result<(), String> {
+    let out = std::fs::File::create(log).map_err(|e| format!("{}: {e}", log.display()))?;
+    let err = out
+        .try_clone()
+        .map_err(|e| format!("{}: {e}", log.display()))?;
+    let mut sh = Command::new("sh");
+    sh.arg("-c")
+        .arg(command)
+        .stdin(Stdio::null())
+        .stdout(out)
+        .stderr(err);
+    #[cfg(unix)]
+    std::os::unix::process::CommandExt::process_group(&mut sh, 0);
+    let mut child = sh
+        .spawn()
+        .map_err(|e| format!("cannot start `sh -c`: {e}"))?;
+    match wait_until(&mut child, Instant::now() + timeout) {
+        Some(status) if status.success() => Ok(()),
+        Some(status) => Err(format!("`{command}` {}{}", describe(status), hint(status))),
+        None => {
+            kill(&mut child);
+            Err(format!(
+                "`{command}` did not finish in {:.0} s: killed it",
+                timeout.as_secs_f64()
+            ))
+        }
+    }
 }
 
 /// Waits for `child` to exit until `deadline`; `None` if it is still running then.

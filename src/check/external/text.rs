@@ -14,7 +14,7 @@ pub(super) fn number_text(x: f64) -> String {
 }
 
 /// The fields of an answer or a table row: separated by spaces, tabs or commas.
-pub(super) fn fields(line: &str) -> Vec<&str> {
+pub(crate) fn fields(line: &str) -> Vec<&str> {
     line.split(|c: char| c.is_whitespace() || c == ',')
         .filter(|s| !s.is_empty())
         .collect()
@@ -22,7 +22,7 @@ pub(super) fn fields(line: &str) -> Vec<&str> {
 
 /// One field as a finite number; why not, otherwise (phrased to follow "the answer" or
 /// "the row").
-pub(super) fn number(field: &str) -> Result<f64, String> {
+pub(crate) fn number(field: &str) -> Result<f64, String> {
     match field.parse::<f64>() {
         Ok(x) if x.is_finite() => Ok(x),
         Ok(_) => Err(format!("has `{field}`, which is not a finite number")),

@@ -19,6 +19,7 @@
 //! known size that each check must reject.
 
 pub mod exact;
+pub mod ladder;
 pub mod planted;
 pub mod pool;
 pub mod references;

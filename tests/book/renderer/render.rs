@@ -679,6 +679,8 @@ fn sidecar_strings_are_valid_json() {
             seconds: 0.25,
             threads: 2,
             made_from: None,
+            build: None,
+            seeds: Vec::new(),
         };
         let text = sidecar.to_json(&image);
         assert!(text.contains(&format!("\"scene\": {written}")), "{text}");
@@ -723,6 +725,8 @@ fn a_failed_write_leaves_the_earlier_render_whole() {
         seconds: 1.0,
         threads: 1,
         made_from: None,
+        build: None,
+        seeds: Vec::new(),
     };
     let first = render(&s, 2, Progress::Silent);
     let [exr, png, json] = write_outputs(&dir, "tiny", &first, &sidecar(1)).unwrap();
@@ -918,4 +922,49 @@ fn the_tracer_finds_the_first_surface_the_book_loop_finds() {
         }
         assert_eq!(agree, 20_000);
     }
+}
+
+/// A sidecar that is not one is refused with its path and the reason, never read as zeros
+/// (the reader of `references`; the fuzz target `sidecar` runs it on any bytes).
+#[test]
+fn a_bad_sidecar_is_refused_with_its_path() {
+    let dir = tmp("bad-sidecar");
+    std::fs::create_dir_all(&dir).unwrap();
+    let image = render(&small(load("cornell.toml"), 4, 1), 1, Progress::Silent);
+    let good = Sidecar {
+        scene: "cornell.toml".into(),
+        scene_hash: 0xabc,
+        spp: 2,
+        seed: 1,
+        wavelengths: "hero-visible".into(),
+        seconds: 1.0,
+        threads: 1,
+        made_from: None,
+        build: None,
+        seeds: Vec::new(),
+    }
+    .to_json(&image);
+    let path = dir.join("s.json");
+    std::fs::write(&path, &good).unwrap();
+    assert_eq!(Sidecar::read(&path).unwrap().scene_hash, 0xabc);
+    for (text, words) in [
+        ("{", "not a render's sidecar"),
+        ("", "not a render's sidecar"),
+        (
+            &good.replace("\"spp\": 2", "\"spp\": -2")[..],
+            "not a render's sidecar",
+        ),
+        (&good.replace("abc", "xyz")[..], "scene_hash"),
+    ] {
+        std::fs::write(&path, text).unwrap();
+        let e = Sidecar::read(&path).unwrap_err().to_string();
+        assert!(e.contains("s.json") && e.contains(words), "{text:?}: {e}");
+    }
+    let e = Sidecar::read(&dir.join("missing.json"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("missing.json") && e.contains("cannot read"),
+        "{e}"
+    );
 }
