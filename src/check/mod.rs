@@ -20,6 +20,8 @@
 //!
 //! One module per concept checked, each with its planted bugs beside it (`planted`):
 //!
+//! * [`accuracy`]: every numerical routine on a corpus of hard inputs against exact
+//!   arithmetic (*Accuracy against exact arithmetic*; `raylemma check corpus`);
 //! * [`sphere`]: ray-sphere intersection (*Ray-sphere intersection*);
 //! * [`warp`]: any sampler and the pdf it claims (*Checking a sampler*);
 //! * [`reflect`]: mirror reflection and Snell refraction (*Reflection and refraction*);
@@ -39,7 +41,13 @@
 //! * [`roulette`]: Russian roulette (*Russian roulette*);
 //! * [`shadow`]: the change of variables from area to solid angle (*Shadow-ray pdfs*);
 //! * [`wavelength`]: uniform hero wavelengths (*Wavelength sampling*);
-//! * [`display`]: the sRGB transfer curve (*From spectrum to display*).
+//! * [`display`]: the sRGB transfer curve (*From spectrum to display*);
+//! * [`render`]: the path tracer against images known exactly, its estimators against one
+//!   another, its canonical scenes against their references, and the conformance ladder
+//!   (*Testing the renderer*, *Reference scenes and interop*).
+//!
+//! [`Real`] (a scalar, `f32` or `f64`, with its vector, ray and sphere, so that one checker
+//! serves both precisions) and [`max_abs`] are shared by all of them.
 //!
 //! The report card of the student edition ([`crate::exercise::card`]) runs these on the
 //! crate's own functions, one exercise at a time.
@@ -48,6 +56,7 @@
 //! and on the planted bugs (which must fail), so a student's implementation is held to
 //! exactly the standard the book's code is.
 
+pub mod accuracy;
 pub mod dispersion;
 pub mod display;
 pub mod external;

@@ -265,7 +265,7 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
     let generated = [
         ("Cargo.toml", manifest),
         ("README.md", readme(&exercises, kind)),
-        (".gitignore", "/target\n".to_string()),
+        (".gitignore", "/target\n/warp-failures\n".to_string()),
         (
             STAMP,
             format!("raylemma student edition: {}\n", kind.name()),

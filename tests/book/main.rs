@@ -11,6 +11,7 @@ mod geometry {
 }
 
 mod checking {
+    mod accuracy;
     mod external;
     mod statistics;
     mod warps;

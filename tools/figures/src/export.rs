@@ -1,6 +1,7 @@
-//! The renderer chapter's examples of `raylemma export`: the JSON and the Mitsuba 3 XML of
+//! The scenes chapter's examples of `raylemma export`: the JSON and the Mitsuba 3 XML of
 //! `scenes/furnace-grey.toml`, written by the library's exporter exactly as the command
-//! writes them (the chapter includes their first lines).
+//! writes them (the chapter includes their first lines); and the table of the conformance
+//! ladder, read from its scene files' headers.
 
 use super::{Output, Record, Settings};
 use crate::plot::BoxError;
@@ -19,7 +20,48 @@ pub fn outputs() -> Vec<Output> {
             what: "raylemma export scenes/furnace-grey.toml --to mitsuba",
             make: xml_example,
         },
+        Output {
+            file: "conformance_ladder.md",
+            what: "the conformance ladder, from the headers of scenes/conformance/",
+            make: ladder_table,
+        },
     ]
+}
+
+/// The rungs of [`raylemma::check::render::ladder::LADDER`], each with what its file's header says it tests, where it is
+/// derived and what a failure there usually means.
+fn ladder_table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+    use raylemma::check::render::ladder::{LADDER, header};
+    let mut md = String::from(
+        "| rung | scene | tests | derived in | a failure here usually means |\n|---:|---|---|---|---|\n",
+    );
+    for rung in &LADDER {
+        let text =
+            std::fs::read_to_string(settings.root.join("scenes/conformance").join(rung.file))?;
+        let h = header(&text);
+        let depths: Vec<String> = rung
+            .depths
+            .iter()
+            .map(|d| d.map_or("unbounded".to_string(), |d| d.to_string()))
+            .collect();
+        let depth_note = if rung.depths.len() > 1 {
+            format!(" (references at depths {})", depths.join(", "))
+        } else {
+            String::new()
+        };
+        let spectral = if rung.spectral_only {
+            " (spectral renderers only)"
+        } else {
+            ""
+        };
+        md += &format!(
+            "| {} | `{}`: {}{depth_note}{spectral} | {} | {} | {} |\n",
+            rung.number, rung.file, h.title, h.tests, h.chapter, h.failure
+        );
+    }
+    r.number("rungs", LADDER.len() as f64, "int");
+    md += "\n*Read from the header comments of `scenes/conformance/*.toml` by `tools/figures/src/export.rs`.*\n";
+    Ok(md.into_bytes())
 }
 
 /// The example scene, named as the command line names it from the project root.

@@ -16,9 +16,9 @@ use raylemma_values::{Entry, Values};
 
 use crate::plot::BoxError;
 use crate::{
-    colour, compare, coursework, diagram, dispersion, display, emission, export, external, frame,
-    fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow, specular, sphere, stats,
-    tabulated, testing, thinfilm, upsample, wavelength,
+    accuracy, colour, compare, coursework, diagram, dispersion, display, emission, export,
+    external, frame, fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow,
+    specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -54,6 +54,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(frame::outputs());
     outputs.extend(reflect::outputs());
     outputs.extend(fresnel::outputs());
+    outputs.extend(accuracy::outputs());
     outputs.extend(specular::outputs());
     outputs.extend(dispersion::outputs());
     outputs.extend(thinfilm::outputs());

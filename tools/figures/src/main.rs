@@ -13,6 +13,7 @@ mod plot;
 mod render;
 mod timing;
 
+mod accuracy;
 mod colour;
 mod compare;
 mod coursework;

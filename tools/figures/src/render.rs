@@ -13,6 +13,7 @@ use std::time::Instant;
 use super::timing::{machine_name, quick_note};
 use super::{Output, Record, Settings, job};
 use crate::plot::{self, BoxError, Panel, Series};
+use raylemma::check::render::ladder::{self, LADDER};
 use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
 use raylemma::render::compare::{mse_against, noise_level};
@@ -22,10 +23,25 @@ use raylemma::render::scene::Scene;
 use raylemma::render::{self, Progress, Sidecar};
 use raylemma::spectral::display;
 
-/// The canonical scenes: the name of the reference files, and the scene file under
-/// `scenes/` (the library's list, which the renderer's tests also read).
-fn scenes() -> impl Iterator<Item = (&'static str, &'static str)> {
-    CANONICAL.iter().map(|c| (c.name, c.file))
+/// Every reference: the name of its files under `figures/reference/`, its scene file under
+/// `scenes/`, and the maximum depth it is rendered at (`None`: the scene's own). The
+/// canonical scenes (the library's list, which the renderer's tests also read), then each
+/// rung of the conformance ladder at each of its depths (`conformance/NN-name`, with
+/// `-depthD` for a depth other than the scene's own).
+fn scenes() -> Vec<(&'static str, &'static str, Option<u32>)> {
+    let mut all: Vec<_> = CANONICAL.iter().map(|c| (c.name, c.file, None)).collect();
+    for rung in &LADDER {
+        for &depth in rung.depths {
+            // A few names, made once for the life of the job.
+            let name: &'static str = Box::leak(
+                format!("conformance/{}", ladder::reference_name(rung, depth)).into_boxed_str(),
+            );
+            let file: &'static str =
+                Box::leak(format!("conformance/{}", rung.file).into_boxed_str());
+            all.push((name, file, depth));
+        }
+    }
+    all
 }
 
 /// The samples per pixel of a reference: the scene file's in full mode, a 32nd of it (at
@@ -52,12 +68,16 @@ fn scenes_dir(settings: &Settings) -> PathBuf {
 /// What a reference is made from now (its scene at the job's samples per pixel).
 fn made_from_now(
     file: &str,
+    depth: Option<u32>,
     settings: &Settings,
     code: &(String, usize),
 ) -> Result<(Scene, MadeFrom), BoxError> {
     let path = scenes_dir(settings).join(file);
     let mut s = render::load(&path)?;
     s.settings.spp = reference_spp(&s, settings);
+    if let Some(d) = depth {
+        s.settings.max_depth = d;
+    }
     let now = MadeFrom::of(&settings.root, &path, &s, code)?;
     Ok((s, now))
 }
@@ -103,6 +123,8 @@ fn render_one(
         seconds: start.elapsed().as_secs_f64(),
         threads: rayon::current_num_threads(),
         made_from: Some(made_from),
+        build: None,
+        seeds: Vec::new(),
     };
     Ok(Rendered {
         name,
@@ -133,8 +155,8 @@ pub fn stale_references(
 ) -> Result<Vec<(&'static str, Vec<String>)>, BoxError> {
     let code = provenance::code_version(&settings.root)?;
     let mut stale = Vec::new();
-    for (name, file) in scenes() {
-        let (_, now) = made_from_now(file, settings, &code)?;
+    for (name, file, depth) in scenes() {
+        let (_, now) = made_from_now(file, depth, settings, &code)?;
         let why = staleness(figures, name, &now);
         if !why.is_empty() {
             stale.push((name, why));
@@ -336,8 +358,8 @@ pub fn write_references(
     );
     let mut rendered = Vec::new();
     let mut fresh = Vec::new();
-    for (name, file) in scenes() {
-        let (scene, now) = made_from_now(file, settings, &code)?;
+    for (name, file, depth) in scenes() {
+        let (scene, now) = made_from_now(file, depth, settings, &code)?;
         let why = staleness(figures, name, &now);
         if why.is_empty() && !force {
             eprintln!(
@@ -365,6 +387,7 @@ pub fn write_references(
     let series = speed_series(&rendered[0].image, settings)?;
     let mut files = FileSet::new();
     let refs = figures.join("reference");
+    raylemma::output::create_dir_all(&refs.join("conformance"))?;
     for r in rendered.iter().filter(|r| fresh.contains(&r.name)) {
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }

@@ -112,6 +112,11 @@ impl Record {
         }
     }
 
+    /// The output this record is for.
+    pub fn file(&self) -> &str {
+        &self.entry.file
+    }
+
     fn name_ok(&mut self, name: &str) -> bool {
         if !valid_name(name) {
             self.errors.push(format!(
