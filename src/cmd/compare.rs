@@ -169,6 +169,11 @@ fn xyz_hint(reference: &Image, candidate: &Image, from_xyz: bool) -> Option<Stri
 /// image: their spread is zero, and every pixel that differs from the reference at all
 /// would fail. Two identical candidates are refused, naming them.
 fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), String> {
+    // Black images are the same whatever the seed: they have no noise to hide, and a
+    // black candidate is compared (and differs from any reference that is not black).
+    if means.iter().all(|m| m.iter().all(|&p| p == glam::DVec3::ZERO)) {
+        return Ok(());
+    }
     let same: Vec<usize> = (1..means.len()).filter(|&j| means[j] == means[0]).collect();
     if same.len() + 1 == means.len() {
         return Err(format!(

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
+use raylemma::check::render::diagnose::{self, diagnose};
 use raylemma::check::render::ladder::{self, LADDER, Rung, header};
 use raylemma::render::compare;
 use raylemma::render::export::{SceneFile, json, mitsuba};
@@ -76,6 +77,8 @@ struct Row {
     bias: Option<[(f64, f64); 3]>,
     /// The worst block, or the error, or why it was skipped.
     detail: String,
+    /// What the difference looks like ([`diagnose`]), when it differs.
+    diagnosis: Vec<String>,
 }
 
 /// Runs `raylemma conformance`.
@@ -157,6 +160,7 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
         verdict,
         bias: None,
         detail,
+        diagnosis: Vec::new(),
     };
     if rung.spectral_only && args.format == Format::Mitsuba {
         return row(
@@ -166,7 +170,7 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
     }
     let name = ladder::reference_name(&rung, depth);
     let dir = args.work.join(&name);
-    let scene = match write_scene(rung, depth, args.format, &dir) {
+    let (scene, file) = match write_scene(rung, depth, args.format, &dir) {
         Ok(p) => p,
         Err(e) => return row("error", format!("the scene could not be written: {e}")),
     };
@@ -202,17 +206,40 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
         }
         outs.push(out);
     }
-    let reference_path = root()
-        .join("figures/reference/conformance")
-        .join(format!("{name}.exr"));
-    let result = super::compare::reference(&reference_path).and_then(|reference| {
+    let reference_of = |d: Option<u32>| {
+        let path = root()
+            .join("figures/reference/conformance")
+            .join(format!("{}.exr", ladder::reference_name(&rung, d)));
+        super::compare::reference(&path)
+    };
+    let result = reference_of(depth).and_then(|reference| {
         let size = (reference.image.width, reference.image.height);
         let (candidate, _, _) = super::compare::candidate(&outs, size)?;
-        compare::compare(&reference, &candidate, level)
+        let c = compare::compare(&reference, &candidate, level)?;
+        Ok((reference, candidate, c))
     });
     match result {
         Err(e) => row("error", e),
-        Ok(c) => {
+        Ok((reference, candidate, c)) => {
+            let diagnosis = if c.agree() {
+                Vec::new()
+            } else {
+                let context = diagnose::Context {
+                    scene: &file.scene,
+                    materials: &file
+                        .materials
+                        .iter()
+                        .map(|(n, _)| n.clone())
+                        .collect::<Vec<_>>(),
+                    other_depths: rung
+                        .depths
+                        .iter()
+                        .filter(|&&d| d != depth)
+                        .filter_map(|&d| reference_of(d).ok().map(|r| (d, r)))
+                        .collect(),
+                };
+                diagnose(&reference, &candidate, level, &context)
+            };
             let worst = c.regions.first().map_or(String::new(), |r| {
                 format!(
                     "worst block at ({}, {}) channel {}: z = {:.1}",
@@ -228,18 +255,19 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
                 verdict: if c.agree() { "agree" } else { "differ" },
                 bias: Some(c.image.map(|(_, _, rel)| rel)),
                 detail: worst,
+                diagnosis,
             }
         }
     }
 }
 
-/// The rung's scene at `depth` in `format`, written into `dir`.
+/// The rung's scene at `depth` in `format`, written into `dir`, and the scene itself.
 fn write_scene(
     rung: Rung,
     depth: Option<u32>,
     format: Format,
     dir: &Path,
-) -> Result<PathBuf, String> {
+) -> Result<(PathBuf, SceneFile), String> {
     let source = root().join("scenes/conformance").join(rung.file);
     let text =
         std::fs::read_to_string(&source).map_err(|e| format!("{}: {e}", source.display()))?;
@@ -272,7 +300,7 @@ fn write_scene(
     };
     let path = dir.join(format!("scene.{ext}"));
     raylemma::output::write_file(&path, body.as_bytes()).map_err(|e| e.to_string())?;
-    Ok(path)
+    Ok((path, file))
 }
 
 fn bias_text(bias: &Option<[(f64, f64); 3]>) -> String {
@@ -319,18 +347,44 @@ fn card_text(rows: &[Row], args: &ConformanceArgs) -> String {
             let h = header(&text);
             let _ = writeln!(
                 s,
-                "first failing: rung {} ({}) at {}: it tests {}\n  a failure here usually means: {}\n  derived in: {}",
+                "first failing: rung {} ({}) at {}: it tests {}",
                 r.rung.number,
                 h.title,
                 depth_name(r.depth),
                 h.tests,
-                h.failure,
-                h.chapter
+            );
+            if let Some(at) = depth_meaning(r.depth, r.rung) {
+                let _ = writeln!(s, "  {at}");
+            }
+            if !r.diagnosis.is_empty() {
+                s += "  what the difference looks like:\n";
+                for d in &r.diagnosis {
+                    let _ = writeln!(s, "    - {d}");
+                }
+            }
+            let _ = writeln!(
+                s,
+                "  a failure here usually means: {}\n  derived in: {}",
+                h.failure, h.chapter
             );
             s += "verdict: the renderer DIFFERS\n";
         }
     }
     s
+}
+
+/// What the first failing depth of a rung says, when the rung has several: the bounce that
+/// depth adds.
+fn depth_meaning(depth: Option<u32>, rung: Rung) -> Option<&'static str> {
+    if rung.depths.len() < 2 {
+        return None;
+    }
+    Some(match depth {
+        Some(1) => "at depth 1 the paths have two segments: the direct light (next-event estimation, the BSDF sample that reaches a light, their MIS weights)",
+        Some(2) => "depth 1 agrees: what depth 2 adds is the first indirect bounce (the bounce's throughput, light sampled from the second vertex)",
+        Some(_) => "depths 1 and 2 agree: what depth 3 adds is the second indirect bounce (throughput carried across bounces, where roulette may start)",
+        None => "every bounded depth agrees: what is left is the depth limit itself or Russian roulette (the survival probability divided out)",
+    })
 }
 
 fn card_json(rows: &[Row], args: &ConformanceArgs) -> String {
@@ -344,6 +398,7 @@ fn card_json(rows: &[Row], args: &ConformanceArgs) -> String {
                 "verdict": r.verdict,
                 "relative_difference": r.bias.map(|b| b.map(|(rel, half)| serde_json::json!({"value": rel, "half_width_95": half}))),
                 "detail": r.detail,
+                "diagnosis": r.diagnosis,
             })
         })
         .collect();

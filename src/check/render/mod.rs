@@ -18,6 +18,7 @@
 //! claims of one check, with a fixed seed; the planted twins of [`planted`] are biases of
 //! known size that each check must reject.
 
+pub mod diagnose;
 pub mod exact;
 pub mod ladder;
 pub mod planted;

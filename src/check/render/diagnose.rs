@@ -1,0 +1,351 @@
+//! What a differing image looks like: the conformance card's diagnosis. Chapter:
+//! *Reference scenes and interop* (`chapters/renderer/scenes.md`, *Reading the card*).
+//!
+//! A comparison says *that* a candidate differs from the reference and where the worst
+//! block is. The common mistakes of a renderer leave recognisable marks on the whole
+//! image, and each is a hypothesis that can be tested: the candidate with the mistake
+//! undone is compared with the reference again, by the same test
+//! ([`crate::render::compare::compare`]) at the same level. A hypothesis *explains* the
+//! difference when the undone candidate agrees; it *explains most of it* when it leaves at
+//! most 20 % of the failing tests of blocks and of the whole image, and of the excess of
+//! the blocks' `Σ z²` over its expectation (one per block and channel).
+//!
+//! * a uniform factor `k = Σ c / Σ r` (all three channels alike: a light's power, the `1/π`
+//!   of a BRDF, a normalisation), or one factor per channel (the colour conversion);
+//! * a gamma-encoded image: the candidate through the sRGB decoding is compared;
+//! * a field of view: the reference magnified about the image's centre by `m`
+//!   (bilinear), the best `m` on a grid from 0.97 to 1.03, is compared; the candidate's
+//!   vertical field of view is then `2 atan(tan(fov/2) / m)`;
+//! * another maximum depth: the candidate against the rung's references at its other
+//!   depths;
+//! * and, as a pointer rather than a test, the factor `Σ c / Σ r` over the pixels where
+//!   the camera sees each material directly, with its standard error, for the materials
+//!   that differ by more than four of them.
+
+use glam::{DVec2, DVec3};
+
+use crate::render::camera::Camera;
+use crate::render::compare::{Comparison, Estimate, compare};
+use crate::render::image::Image;
+use crate::render::scene::{Scene, Surface};
+
+/// The fraction of the failing tests, and of the excess of the blocks' `Σ z²`, a
+/// hypothesis must remove to be reported as explaining most of a difference.
+pub const MOST: f64 = 0.8;
+
+/// What the card is given besides the two images.
+pub struct Context<'a> {
+    /// The rung's scene at the compared depth (its camera, its materials' names).
+    pub scene: &'a Scene,
+    /// The materials' names, in the order of [`Scene::materials`].
+    pub materials: &'a [String],
+    /// The rung's references at its other depths: `(depth, reference)`, `None` unbounded.
+    pub other_depths: Vec<(Option<u32>, Estimate)>,
+}
+
+/// The diagnosis of a candidate that differs from `reference` at the test level `level`:
+/// one sentence per finding, the most telling first. Empty when nothing fits.
+pub fn diagnose(
+    reference: &Estimate,
+    candidate: &Estimate,
+    level: f64,
+    context: &Context,
+) -> Vec<String> {
+    let Ok(base) = compare(reference, candidate, level) else {
+        return Vec::new();
+    };
+    let (fail0, excess0) = (failures(&base), excess(&base));
+    // (rank, sentence): a full explanation ranks above every partial one, and partial
+    // ones by how few failing tests they leave.
+    let mut found: Vec<(f64, String)> = Vec::new();
+    let (k, se) = factor(reference, candidate, |_| true);
+    let channel = [0, 1, 2].map(|c| channel_factor(reference, candidate, c));
+    if k < 0.05 {
+        found.push((
+            3.0,
+            format!(
+                "the candidate has {:.1} % of the reference's light: it misses what every path of this rung carries (light sampling, or a maximum depth counted one bounce short: raylemma's max_depth counts bounces, so max_depth = 1 is paths of two segments)",
+                100.0 * k
+            ),
+        ));
+    }
+    let mut judge = |undone: Result<Comparison, String>, what: String| {
+        if let Ok(c) = undone {
+            let (fail, left) = (failures(&c), excess(&c) / excess0);
+            if c.agree() {
+                found.push((2.0, format!("{what}: undoing it, the candidate AGREES")));
+            } else if fail as f64 <= (1.0 - MOST) * fail0 as f64 && left <= 1.0 - MOST {
+                found.push((
+                    1.0 - fail as f64 / fail0 as f64,
+                    format!(
+                        "{what}: undoing it leaves {fail} of the {fail0} failing tests of blocks and of the whole image"
+                    ),
+                ));
+            }
+        }
+    };
+
+    judge(
+        compare(reference, &scaled(candidate, DVec3::splat(1.0 / k)), level),
+        format!(
+            "a uniform factor: the candidate is {k:.4} ± {se:.4} times the reference in all channels (a light's power, the 1/π of a BRDF, a normalisation)"
+        ),
+    );
+    let per = DVec3::new(channel[0], channel[1], channel[2]);
+    if (per - DVec3::splat(k)).abs().max_element() > 3.0 * se {
+        judge(
+            compare(reference, &scaled(candidate, DVec3::ONE / per), level),
+            format!(
+                "one factor per channel: R {:.4}, G {:.4}, B {:.4} times the reference (the colour conversion: the XYZ-to-sRGB matrix or the CIE normalisation, or a spectrum's values)",
+                per.x, per.y, per.z
+            ),
+        );
+    }
+    judge(
+        compare(reference, &decoded(candidate), level),
+        "the image is gamma-encoded: its values went through the sRGB encoding (save linear values, as an EXR holds them)".to_string(),
+    );
+    if let Some((m, c)) = best_magnification(reference, candidate, level) {
+        let fov = context.scene.camera.fov_y_deg;
+        let fov_c = 2.0 * ((fov.to_radians() / 2.0).tan() / m).atan().to_degrees();
+        judge(
+            Ok(c),
+            format!(
+                "the camera: the candidate is the reference magnified {m:.3} times about the centre, as if seen with a vertical field of view of {fov_c:.1}° instead of {fov}° (the field of view, its axis, or the camera's position)"
+            ),
+        );
+    }
+    for (d, r) in &context.other_depths {
+        let name = d.map_or("unbounded depth".to_string(), |d| format!("depth {d}"));
+        judge(
+            compare(r, candidate, level),
+            format!(
+                "the maximum depth: the candidate is this rung's reference at {name} (a depth counted differently: raylemma's max_depth counts bounces, no light sampled at the last)"
+            ),
+        );
+    }
+    found.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let explained = !found.is_empty();
+    let mut lines: Vec<String> = found.into_iter().map(|(_, s)| s).collect();
+    if !explained {
+        lines.extend(by_material(reference, candidate, context, k, se));
+    }
+    lines
+}
+
+/// The excess of the blocks' `Σ z²` over its expectation (one per block and channel), at
+/// least one.
+fn excess(c: &Comparison) -> f64 {
+    let sum: f64 = c.regions.iter().map(|r| r.zs.length_squared()).sum();
+    (sum - 3.0 * c.regions.len() as f64).max(1.0)
+}
+
+/// The failing tests of a comparison that a smooth mistake shows in: the blocks and the
+/// whole image's channels (a pixel's test, on a few runs' spread, is too noisy to weigh
+/// hypotheses by).
+fn failures(c: &Comparison) -> usize {
+    c.block_failure_count + c.image_failure_count()
+}
+
+/// `Σ c / Σ r` over the pixels `keep` selects and all channels, with its standard error
+/// from both images' variances.
+fn factor(reference: &Estimate, candidate: &Estimate, keep: impl Fn(usize) -> bool) -> (f64, f64) {
+    let (r, c) = (&reference.image, &candidate.image);
+    let (mut sr, mut sc, mut vr, mut vc) = (0.0, 0.0, 0.0, 0.0);
+    for i in (0..r.mean.len()).filter(|&i| keep(i)) {
+        sr += r.mean[i].element_sum();
+        sc += c.mean[i].element_sum();
+        vr += finite(r.var[i]).element_sum();
+        vc += finite(c.var[i]).element_sum();
+    }
+    let k = sc / sr;
+    (k, (vc + k * k * vr).sqrt() / sr.abs())
+}
+
+fn channel_factor(reference: &Estimate, candidate: &Estimate, ch: usize) -> f64 {
+    let sr: f64 = reference.image.mean.iter().map(|m| m[ch]).sum();
+    let sc: f64 = candidate.image.mean.iter().map(|m| m[ch]).sum();
+    sc / sr
+}
+
+fn finite(v: DVec3) -> DVec3 {
+    DVec3::new(
+        if v.x.is_finite() { v.x } else { 0.0 },
+        if v.y.is_finite() { v.y } else { 0.0 },
+        if v.z.is_finite() { v.z } else { 0.0 },
+    )
+}
+
+/// The estimate with every mean multiplied by `s` (its variance by `s²`).
+fn scaled(e: &Estimate, s: DVec3) -> Estimate {
+    let mut out = e.clone();
+    for (m, v) in out.image.mean.iter_mut().zip(out.image.var.iter_mut()) {
+        *m *= s;
+        *v *= s * s;
+    }
+    out
+}
+
+/// The sRGB decoding of a value (odd in its sign) and its derivative.
+fn srgb_decode(x: f64) -> (f64, f64) {
+    let a = x.abs();
+    let (y, dy) = if a <= 0.04045 {
+        (a / 12.92, 1.0 / 12.92)
+    } else {
+        let b = (a + 0.055) / 1.055;
+        (b.powf(2.4), 2.4 / 1.055 * b.powf(1.4))
+    };
+    (y.copysign(x), dy)
+}
+
+/// The estimate through the sRGB decoding, its variance by the delta method.
+fn decoded(e: &Estimate) -> Estimate {
+    let mut out = e.clone();
+    for (m, v) in out.image.mean.iter_mut().zip(out.image.var.iter_mut()) {
+        for c in 0..3 {
+            let (y, dy) = srgb_decode(m[c]);
+            m[c] = y;
+            v[c] *= dy * dy;
+        }
+    }
+    out
+}
+
+/// The image magnified `m` times about its centre: the value at pixel centre `p` is the
+/// original's at `centre + (p - centre) / m`, bilinear between pixel centres (edge pixels
+/// repeated beyond the border).
+pub fn magnified(image: &Image, m: f64) -> Image {
+    let (w, h) = (image.width as usize, image.height as usize);
+    let centre = DVec2::new(w as f64 / 2.0, h as f64 / 2.0);
+    let at = |v: &[DVec3], x: isize, y: isize| {
+        let x = x.clamp(0, w as isize - 1) as usize;
+        let y = y.clamp(0, h as isize - 1) as usize;
+        v[y * w + x]
+    };
+    let sample = |v: &[DVec3], p: DVec2, square: bool| {
+        let q = centre + (p - centre) / m - DVec2::splat(0.5);
+        let (x0, y0) = (q.x.floor(), q.y.floor());
+        let (fx, fy) = (q.x - x0, q.y - y0);
+        let (x0, y0) = (x0 as isize, y0 as isize);
+        // Means interpolate linearly; the variance of a weighted sum of independent
+        // pixels has the squared weights.
+        let wt = |f: f64| if square { f * f } else { f };
+        at(v, x0, y0) * wt((1.0 - fx) * (1.0 - fy))
+            + at(v, x0 + 1, y0) * wt(fx * (1.0 - fy))
+            + at(v, x0, y0 + 1) * wt((1.0 - fx) * fy)
+            + at(v, x0 + 1, y0 + 1) * wt(fx * fy)
+    };
+    let mut out = image.clone();
+    for y in 0..h {
+        for x in 0..w {
+            let p = DVec2::new(x as f64 + 0.5, y as f64 + 0.5);
+            out.mean[y * w + x] = sample(&image.mean, p, false);
+            out.var[y * w + x] = sample(&image.var, p, true);
+        }
+    }
+    out
+}
+
+/// The magnification of the reference, on a grid of 0.001 from 0.97 to 1.03, that leaves
+/// the least `Σ z²` against the candidate, with that comparison; `None` when 1 is best.
+fn best_magnification(
+    reference: &Estimate,
+    candidate: &Estimate,
+    level: f64,
+) -> Option<(f64, Comparison)> {
+    let mut best: Option<(f64, f64, Comparison)> = None;
+    for i in -30..=30 {
+        let m = 1.0 + f64::from(i) * 1e-3;
+        let r = Estimate {
+            image: magnified(&reference.image, m),
+            ..reference.clone()
+        };
+        if let Ok(c) = compare(&r, candidate, level) {
+            let e = excess(&c);
+            if best.as_ref().is_none_or(|b| e < b.1) {
+                best = Some((m, e, c));
+            }
+        }
+    }
+    best.filter(|b| b.0 != 1.0).map(|(m, _, c)| (m, c))
+}
+
+/// The material, light or background the camera sees through each pixel's centre.
+pub fn labels(scene: &Scene, materials: &[String]) -> Vec<String> {
+    let camera = Camera::new(&scene.camera);
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let mut out = Vec::with_capacity((w * h) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let ray = camera.ray(x, y, DVec2::splat(0.5));
+            out.push(match scene.intersect(ray.origin, ray.dir) {
+                None => "the background".to_string(),
+                Some(hit) => match hit.surface {
+                    Surface::Shape(i) => {
+                        let m = scene.shapes[i].material;
+                        format!("material {:?}", materials.get(m).map_or("?", String::as_str))
+                    }
+                    Surface::Light(i) => format!("light {}", i + 1),
+                },
+            });
+        }
+    }
+    out
+}
+
+/// The factor per material seen directly, for those that differ from 1 by more than four
+/// standard errors, the furthest first, and the ones that agree (a pointer to which
+/// surface is wrong).
+fn by_material(
+    reference: &Estimate,
+    candidate: &Estimate,
+    context: &Context,
+    k: f64,
+    se: f64,
+) -> Vec<String> {
+    let labels = labels(context.scene, context.materials);
+    if labels.len() != reference.image.mean.len() {
+        return Vec::new();
+    }
+    let mut names: Vec<&String> = labels.iter().collect();
+    names.sort();
+    names.dedup();
+    let mut off: Vec<(f64, String)> = Vec::new();
+    let mut fine = Vec::new();
+    for name in names {
+        let n = labels.iter().filter(|l| *l == name).count();
+        if n < 8 {
+            continue;
+        }
+        let (kl, sel) = factor(reference, candidate, |i| labels[i] == *name);
+        if !kl.is_finite() {
+            continue;
+        }
+        if (kl - 1.0).abs() > 4.0 * sel {
+            off.push(((kl - 1.0).abs() / sel, format!(
+                "where the camera sees {name} ({n} pixels) the candidate is {:+.2} % ± {:.2} %",
+                100.0 * (kl - 1.0),
+                100.0 * sel
+            )));
+        } else {
+            fine.push(name.clone());
+        }
+    }
+    if off.is_empty() {
+        return Vec::new();
+    }
+    off.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut lines: Vec<String> = off.into_iter().map(|(_, s)| s).collect();
+    if !fine.is_empty() {
+        lines.push(format!(
+            "it agrees where the camera sees {}",
+            fine.join(", ")
+        ));
+    }
+    lines.push(format!(
+        "over the whole image it is {:+.2} % ± {:.2} %",
+        100.0 * (k - 1.0),
+        100.0 * se
+    ));
+    lines
+}
