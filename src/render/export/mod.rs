@@ -7,10 +7,10 @@
 //! scene*).
 //!
 //! All three start from a [`SceneFile`]: the checked [`Scene`] and, for every material,
-//! shape and light, the camera and the environment, the line of the file where it is written, so
-//! that what Mitsuba or pbrt cannot express (thin films, a gradient sky; for Mitsuba also
-//! Sellmeier dispersion) is refused as `file:line: reason`, like every other problem of a
-//! scene file.
+//! shape and light, the camera and the environment, the line of the file where it is
+//! written, so that what Mitsuba or pbrt cannot express (thin films, a gradient sky; for
+//! Mitsuba also Sellmeier dispersion) is refused as `file:line: reason`, like every other
+//! problem of a scene file.
 
 pub mod json;
 pub mod mitsuba;
