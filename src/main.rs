@@ -64,8 +64,9 @@ enum Cmd {
     /// stub, whose `cargo test` ends with a report card (--solutions: the solutions in
     /// place).
     Exercises(cmd::exercises::ExercisesArgs),
-    /// Write a scene for other renderers: a Mitsuba 3 XML file, or fully resolved JSON
-    /// (defaults filled in, spectra on the 1 nm grid, transforms explicit).
+    /// Write a scene for other renderers: a Mitsuba 3 XML file, a pbrt-v4 scene file, or
+    /// fully resolved JSON (defaults filled in, spectra on the 1 nm grid, transforms
+    /// explicit).
     Export(cmd::export::ExportArgs),
 }
 

@@ -15,7 +15,7 @@ use clap::{Args, ValueEnum};
 use raylemma::check::render::diagnose::{self, diagnose};
 use raylemma::check::render::ladder::{self, LADDER, Rung, header};
 use raylemma::render::compare;
-use raylemma::render::export::{SceneFile, json, mitsuba};
+use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
 use super::{CmdResult, Failure, Outcome, root};
 
@@ -26,8 +26,11 @@ pub enum Format {
     Toml,
     /// Fully resolved JSON (`raylemma export --to json`).
     Json,
-    /// Mitsuba 3 XML (`raylemma export --to mitsuba`); spectral-only rungs are skipped.
+    /// Mitsuba 3 XML (`raylemma export --to mitsuba`); the rungs it refuses (the
+    /// spectral-only ones) are skipped.
     Mitsuba,
+    /// pbrt-v4 (`raylemma export --to pbrt`); the rungs it refuses (thin films) are skipped.
+    Pbrt,
 }
 
 /// `raylemma conformance`.
@@ -162,16 +165,16 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
         detail,
         diagnosis: Vec::new(),
     };
-    if rung.spectral_only && args.format == Format::Mitsuba {
-        return row(
-            "skipped",
-            "needs a spectral renderer (Mitsuba's export refuses it)".into(),
-        );
-    }
     let name = ladder::reference_name(&rung, depth);
     let dir = args.work.join(&name);
     let (scene, file) = match write_scene(rung, depth, args.format, &dir) {
-        Ok(p) => p,
+        Ok(Written::Scene(p, file)) => (p, file),
+        Ok(Written::Refused(why)) => {
+            return row(
+                "skipped",
+                format!("the {:?} export refuses it: {why}", args.format),
+            );
+        }
         Err(e) => return row("error", format!("the scene could not be written: {e}")),
     };
     let mut outs = Vec::new();
@@ -261,13 +264,21 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
     }
 }
 
-/// The rung's scene at `depth` in `format`, written into `dir`, and the scene itself.
+/// What [`write_scene`] did.
+enum Written {
+    /// The scene file it wrote, and the scene.
+    Scene(PathBuf, SceneFile),
+    /// The format cannot express the rung: the export's refusal (`file:line: reason`).
+    Refused(String),
+}
+
+/// The rung's scene at `depth` in `format`, written into `dir`, or the export's refusal.
 fn write_scene(
     rung: Rung,
     depth: Option<u32>,
     format: Format,
     dir: &Path,
-) -> Result<(PathBuf, SceneFile), String> {
+) -> Result<Written, String> {
     let source = root().join("scenes/conformance").join(rung.file);
     let text =
         std::fs::read_to_string(&source).map_err(|e| format!("{}: {e}", source.display()))?;
@@ -290,17 +301,22 @@ fn write_scene(
         .collect::<Vec<_>>()
         .join("\n");
     text.push('\n');
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let file = SceneFile::parse(&text, rung.file, &root().join("scenes/conformance"))
         .map_err(|e| e.to_string())?;
-    let (ext, body) = match format {
-        Format::Toml => ("toml", text),
-        Format::Json => ("json", json::to_json(&file)),
-        Format::Mitsuba => ("xml", mitsuba::to_xml(&file).map_err(|e| e.to_string())?),
+    let exported = match format {
+        Format::Toml => Ok(("toml", text)),
+        Format::Json => Ok(("json", json::to_json(&file))),
+        Format::Mitsuba => mitsuba::to_xml(&file).map(|x| ("xml", x)),
+        Format::Pbrt => pbrt::to_pbrt(&file).map(|x| ("pbrt", x)),
     };
+    let (ext, body) = match exported {
+        Ok(e) => e,
+        Err(e) => return Ok(Written::Refused(e.to_string())),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let path = dir.join(format!("scene.{ext}"));
     raylemma::output::write_file(&path, body.as_bytes()).map_err(|e| e.to_string())?;
-    Ok((path, file))
+    Ok(Written::Scene(path, file))
 }
 
 fn bias_text(bias: &Option<[(f64, f64); 3]>) -> String {

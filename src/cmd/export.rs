@@ -1,5 +1,5 @@
-//! `raylemma export SCENE --to mitsuba|json --out FILE`: the scene for other renderers, as
-//! a Mitsuba 3 XML file or as fully resolved JSON. A bad scene, or a feature the target
+//! `raylemma export SCENE --to mitsuba|pbrt|json --out FILE`: the scene for other
+//! renderers, as a Mitsuba 3 XML file, a pbrt-v4 scene file or fully resolved JSON. A bad scene, or a feature the target
 //! cannot express, is refused with file, line and reason (exit status 2), and nothing is
 //! written; the file is written atomically, so an earlier one is never left half
 //! overwritten.
@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
-use raylemma::render::export::{SceneFile, json, mitsuba};
+use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
 use super::{CmdResult, done_or_bad_input};
 
@@ -16,6 +16,8 @@ use super::{CmdResult, done_or_bad_input};
 pub enum Target {
     /// A Mitsuba 3 scene (XML) for `mitsuba.load_file`, spectral variants.
     Mitsuba,
+    /// A pbrt-v4 scene file for `pbrt` (rules: tools/pbrt/NOTES.md).
+    Pbrt,
     /// Fully resolved JSON: defaults filled in, spectra on the 1 nm grid, transforms explicit.
     Json,
 }
@@ -42,6 +44,7 @@ fn export(scene: &Path, to: Target, out: &Path) -> Result<(), String> {
     let file = SceneFile::load(scene).map_err(|e| e.to_string())?;
     let text = match to {
         Target::Mitsuba => mitsuba::to_xml(&file).map_err(|e| e.to_string())?,
+        Target::Pbrt => pbrt::to_pbrt(&file).map_err(|e| e.to_string())?,
         Target::Json => json::to_json(&file),
     };
     raylemma::output::write_file(out, text.as_bytes()).map_err(|e| e.to_string())?;

@@ -257,10 +257,11 @@ fn export(args: &[&str]) -> std::process::Output {
 }
 
 #[test]
-fn export_writes_both_formats_and_refuses_bad_input_without_touching_earlier_files() {
+fn export_writes_every_format_and_refuses_bad_input_without_touching_earlier_files() {
     let xml = tmp("cornell.xml");
     let json = tmp("cornell.json");
-    for (to, out) in [("mitsuba", &xml), ("json", &json)] {
+    let pbrt = tmp("cornell.pbrt");
+    for (to, out) in [("mitsuba", &xml), ("json", &json), ("pbrt", &pbrt)] {
         let o = export(&[
             "scenes/cornell.toml",
             "--to",
@@ -323,12 +324,34 @@ fn export_writes_both_formats_and_refuses_bad_input_without_touching_earlier_fil
         &["scenes/none.toml", "cannot read"],
     );
     assert_eq!(std::fs::read(&xml).unwrap(), earlier);
+    // pbrt-v4: the Cornell box is written; a thin film is refused with its line, and the
+    // earlier file is left byte for byte.
+    let earlier = std::fs::read(&pbrt).unwrap();
+    assert!(String::from_utf8_lossy(&earlier).contains("\nWorldBegin\n"));
+    refused(
+        &export(&[
+            "scenes/bubble.toml",
+            "--to",
+            "pbrt",
+            "--out",
+            pbrt.to_str().unwrap(),
+        ]),
+        &["scenes/bubble.toml:25:", "thin film", "pbrt-v4"],
+    );
+    assert_eq!(
+        std::fs::read(&pbrt).unwrap(),
+        earlier,
+        "a refused export touched the file"
+    );
     // An unknown format is a usage error that lists the formats.
-    let o = export(&["scenes/cornell.toml", "--to", "pbrt", "--out", out]);
+    let o = export(&["scenes/cornell.toml", "--to", "povray", "--out", out]);
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
-        err.contains("pbrt") && err.contains("mitsuba") && err.contains("json"),
+        err.contains("povray")
+            && err.contains("pbrt")
+            && err.contains("mitsuba")
+            && err.contains("json"),
         "{err}"
     );
     // An --out that cannot be written: its folder is a file.
@@ -608,4 +631,28 @@ fn conformance_passes_raylemma_and_points_at_a_fault() {
     let out = run(&ours, &["--rungs", "99"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no rung 99"));
+    // A rung the format's export refuses is skipped with the refusal, file and line, and
+    // its renderer is never run (here one that would fail).
+    let out = Command::new(bin)
+        .args([
+            "conformance",
+            "--format",
+            "pbrt",
+            "--rungs",
+            "10",
+            "--runs",
+            "2",
+        ])
+        .args(["--renderer", "false", "--work"])
+        .arg(&work)
+        .output()
+        .expect("the binary runs");
+    let card = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{card}");
+    assert!(
+        card.contains("skipped")
+            && card.contains("10-thin-film.toml:")
+            && card.contains("thin film"),
+        "{card}"
+    );
 }

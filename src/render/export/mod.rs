@@ -1,17 +1,20 @@
 //! A scene file for other renderers: as a Mitsuba 3 scene ([`mitsuba::to_xml`]) that
-//! `mitsuba.load_file` renders unchanged, and as fully resolved JSON ([`json::to_json`]:
-//! every default filled in, every spectrum on the 1 nm grid, every transform explicit),
-//! which an implementer in any language reads without re-implementing the TOML parser.
+//! `mitsuba.load_file` renders unchanged, as a pbrt-v4 scene ([`pbrt::to_pbrt`]), and as
+//! fully resolved JSON ([`json::to_json`]: every default filled in, every spectrum on the
+//! 1 nm grid, every transform explicit), which an implementer in any language reads
+//! without re-implementing the TOML parser.
 //! Chapter: *Reference scenes and interop* (`chapters/renderer/scenes.md`, *Exporting a
 //! scene*).
 //!
-//! Both start from a [`SceneFile`]: the checked [`Scene`] and, for every material and
-//! shape, the camera and the environment, the line of the file where it is written, so
-//! that what Mitsuba cannot express (Sellmeier dispersion, thin films, a gradient sky) is
-//! refused as `file:line: reason`, like every other problem of a scene file.
+//! All three start from a [`SceneFile`]: the checked [`Scene`] and, for every material,
+//! shape and light, the camera and the environment, the line of the file where it is
+//! written, so that what Mitsuba or pbrt cannot express (thin films, a gradient sky; for
+//! Mitsuba also Sellmeier dispersion) is refused as `file:line: reason`, like every other
+//! problem of a scene file.
 
 pub mod json;
 pub mod mitsuba;
+pub mod pbrt;
 
 use std::path::{Path, PathBuf};
 
@@ -39,6 +42,8 @@ pub struct SceneFile {
     pub materials: Vec<(String, usize)>,
     /// The line of every `[[shape]]`, in order.
     pub shape_lines: Vec<usize>,
+    /// The line of every `[[light]]`, in the order of [`Scene::lights`].
+    pub light_lines: Vec<usize>,
 }
 
 impl SceneFile {
@@ -63,6 +68,7 @@ impl SceneFile {
                 .map(|(name, m)| (name.clone(), line(m.span())))
                 .collect(),
             shape_lines: raw.shape.iter().map(|s| line(s.span())).collect(),
+            light_lines: raw.light.iter().map(|l| line(l.span())).collect(),
         })
     }
 

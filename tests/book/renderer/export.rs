@@ -4,11 +4,13 @@
 //! `tools/mitsuba/NOTES.md`; what Mitsuba cannot express is refused with its line and
 //! kept by the JSON. Every expected value comes from the data files, the NOTES or
 //! arithmetic done here, never from the exporter. That Mitsuba renders the files is the
-//! job of `tools/mitsuba/compare_all.sh`, outside `cargo test`.
+//! job of `tools/mitsuba/compare_all.sh`, outside `cargo test`. The pbrt-v4 file follows the
+//! rules of `tools/pbrt/NOTES.md` (checked against pbrt-v4's source, not by rendering): a
+//! small tokenizer here checks its syntax and reads its numbers back.
 
 use std::path::{Path, PathBuf};
 
-use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml};
+use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
 use serde_json::Value;
 
 fn root() -> PathBuf {
@@ -448,4 +450,711 @@ fn mitsuba_refuses_what_it_cannot_express_with_the_line_and_json_keeps_it() {
     let dir: &Path = &std::env::temp_dir();
     let e = SceneFile::parse(&bad, "bad.toml", dir).unwrap_err();
     assert_eq!(e.line, line_with(&bad, "reflectance = 2"), "{e}");
+}
+
+// ---------------------------------------------------------------------------------------
+// pbrt-v4
+
+/// A value of a pbrt-v4 file: a number (read back from its text), a quoted string or a
+/// bare `true` / `false`.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum PbrtValue {
+    Num(f64),
+    Str(String),
+    Bool(bool),
+}
+
+/// One directive: its name, its positional arguments (`LookAt`'s nine numbers, `Shape`'s
+/// type) and its `"type name" [ values ]` parameters.
+#[derive(Debug)]
+pub(super) struct Directive {
+    pub name: String,
+    pub args: Vec<PbrtValue>,
+    pub params: Vec<(String, String, Vec<PbrtValue>)>,
+}
+
+impl Directive {
+    /// The values of parameter `name`, with its type.
+    pub fn param(&self, name: &str) -> Option<(&str, &[PbrtValue])> {
+        self.params
+            .iter()
+            .find(|(_, n, _)| n == name)
+            .map(|(t, _, v)| (t.as_str(), v.as_slice()))
+    }
+
+    /// The numbers of parameter `name` (panics if it is missing or not numbers).
+    pub fn nums(&self, name: &str) -> Vec<f64> {
+        let (_, v) = self
+            .param(name)
+            .unwrap_or_else(|| panic!("{} has no {name}: {self:?}", self.name));
+        v.iter()
+            .map(|x| match x {
+                PbrtValue::Num(n) => *n,
+                other => panic!("{name}: {other:?} is not a number"),
+            })
+            .collect()
+    }
+
+    /// The one string of parameter `name`, or the first positional string.
+    pub fn string(&self, name: Option<&str>) -> String {
+        let v = match name {
+            Some(n) => self.param(n).map(|(_, v)| v.to_vec()).unwrap_or_default(),
+            None => self.args.clone(),
+        };
+        match v.as_slice() {
+            [PbrtValue::Str(s), ..] => s.clone(),
+            other => panic!("{}: no string {name:?}: {other:?}", self.name),
+        }
+    }
+}
+
+#[derive(Debug)]
+enum Token {
+    Word(String),
+    Value(PbrtValue),
+    Open,
+    Close,
+}
+
+/// The tokens of a pbrt-v4 file: `#` comments to the end of the line, quoted strings,
+/// brackets, and bare words, each number of which must read back as the text written
+/// (the shortest decimal of a finite double: NaN and infinities are refused).
+fn pbrt_tokens(text: &str) -> Vec<Token> {
+    let mut out = Vec::new();
+    let mut chars = text.chars().peekable();
+    while let Some(&c) = chars.peek() {
+        if c.is_whitespace() {
+            chars.next();
+        } else if c == '#' {
+            while chars.peek().is_some_and(|&c| c != '\n') {
+                chars.next();
+            }
+        } else if c == '"' {
+            chars.next();
+            let s: String = chars.by_ref().take_while(|&c| c != '"').collect();
+            assert!(!s.contains('\n'), "a string over a line end: {s:?}");
+            out.push(Token::Value(PbrtValue::Str(s)));
+        } else if c == '[' || c == ']' {
+            chars.next();
+            out.push(if c == '[' { Token::Open } else { Token::Close });
+        } else {
+            let mut w = String::new();
+            while let Some(&c) = chars.peek() {
+                if c.is_whitespace() || "[]\"#".contains(c) {
+                    break;
+                }
+                w.push(c);
+                chars.next();
+            }
+            out.push(match w.as_str() {
+                "true" => Token::Value(PbrtValue::Bool(true)),
+                "false" => Token::Value(PbrtValue::Bool(false)),
+                _ if w.starts_with(|c: char| c.is_ascii_uppercase()) => Token::Word(w),
+                _ => {
+                    let x: f64 = w.parse().unwrap_or_else(|_| panic!("not a number: {w:?}"));
+                    assert!(x.is_finite(), "{w}");
+                    assert_eq!(format!("{x}"), w, "the number does not round-trip");
+                    Token::Value(PbrtValue::Num(x))
+                }
+            });
+        }
+    }
+    out
+}
+
+/// The parameter types of pbrt-v4's format (`ParsedParameter`, pbrt.org/fileformat-v4).
+const PBRT_TYPES: [&str; 13] = [
+    "integer",
+    "float",
+    "point2",
+    "vector2",
+    "point3",
+    "vector3",
+    "normal",
+    "normal3",
+    "spectrum",
+    "rgb",
+    "blackbody",
+    "bool",
+    "string",
+];
+
+/// The directives of a pbrt-v4 file, checked: known names, the options before one
+/// `WorldBegin` and the world after it, balanced attribute blocks with a material before
+/// every shape, spectra of increasing wavelengths, triangle meshes whose indices name
+/// their points, integers that are integers, no parameter given twice.
+pub(super) fn pbrt_well_formed(text: &str) -> Vec<Directive> {
+    let mut tokens = pbrt_tokens(text).into_iter().peekable();
+    let mut out: Vec<Directive> = Vec::new();
+    while let Some(t) = tokens.next() {
+        let Token::Word(name) = t else {
+            panic!("a value outside a directive: {t:?}")
+        };
+        let mut d = Directive {
+            name,
+            args: Vec::new(),
+            params: Vec::new(),
+        };
+        while let Some(Token::Value(_)) = tokens.peek() {
+            let Some(Token::Value(v)) = tokens.next() else {
+                unreachable!()
+            };
+            let param = match &v {
+                PbrtValue::Str(s) => s
+                    .split_once(' ')
+                    .filter(|(ty, _)| PBRT_TYPES.contains(ty))
+                    .map(|(ty, n)| (ty.to_string(), n.to_string())),
+                _ => None,
+            };
+            let Some((ty, pname)) = param else {
+                assert!(
+                    d.params.is_empty(),
+                    "{}: {v:?} after the parameters",
+                    d.name
+                );
+                d.args.push(v);
+                continue;
+            };
+            let values = match tokens.next() {
+                Some(Token::Open) => {
+                    let mut vs = Vec::new();
+                    loop {
+                        match tokens.next() {
+                            Some(Token::Value(x)) => vs.push(x),
+                            Some(Token::Close) => break,
+                            other => panic!("{pname}: {other:?} in a list"),
+                        }
+                    }
+                    vs
+                }
+                Some(Token::Value(x)) => vec![x],
+                other => panic!("{pname}: {other:?} instead of its values"),
+            };
+            assert!(!values.is_empty(), "{pname} has no values");
+            let all = |f: fn(&PbrtValue) -> bool| values.iter().all(f);
+            match ty.as_str() {
+                "integer" => assert!(all(|v| matches!(v, PbrtValue::Num(x) if x.fract() == 0.0))),
+                "bool" => assert!(all(|v| matches!(v, PbrtValue::Bool(_)))),
+                "string" => assert!(all(|v| matches!(v, PbrtValue::Str(_)))),
+                _ => assert!(
+                    all(|v| matches!(v, PbrtValue::Num(_))),
+                    "{pname}: {values:?}"
+                ),
+            }
+            if ty == "spectrum" {
+                let x: Vec<f64> = values
+                    .iter()
+                    .map(|v| match v {
+                        PbrtValue::Num(x) => *x,
+                        _ => unreachable!(),
+                    })
+                    .collect();
+                assert!(
+                    x.len() >= 4 && x.len().is_multiple_of(2),
+                    "{pname}: {} numbers",
+                    x.len()
+                );
+                let nm: Vec<f64> = x.iter().step_by(2).copied().collect();
+                assert!(
+                    nm.windows(2).all(|w| w[1] > w[0]),
+                    "{pname}: wavelengths {nm:?}"
+                );
+            }
+            assert!(
+                !d.params.iter().any(|(_, n, _)| *n == pname),
+                "{}: {pname} twice",
+                d.name
+            );
+            d.params.push((ty, pname, values));
+        }
+        out.push(d);
+    }
+    let world = out
+        .iter()
+        .position(|d| d.name == "WorldBegin")
+        .expect("no WorldBegin");
+    let options = [
+        "Scale",
+        "LookAt",
+        "Camera",
+        "Sampler",
+        "PixelFilter",
+        "Film",
+        "Integrator",
+    ];
+    for name in ["Camera", "Sampler", "PixelFilter", "Film", "Integrator"] {
+        assert_eq!(
+            out[..world].iter().filter(|d| d.name == name).count(),
+            1,
+            "{name}"
+        );
+    }
+    assert!(
+        out[..world]
+            .iter()
+            .all(|d| options.contains(&d.name.as_str()))
+    );
+    let scene = [
+        "MakeNamedMaterial",
+        "NamedMaterial",
+        "Material",
+        "AttributeBegin",
+        "AttributeEnd",
+        "AreaLightSource",
+        "Translate",
+        "Shape",
+        "LightSource",
+    ];
+    let mut depth = 0;
+    let mut has_material = false;
+    for d in &out[world + 1..] {
+        assert!(scene.contains(&d.name.as_str()), "{} in the world", d.name);
+        match d.name.as_str() {
+            "AttributeBegin" => {
+                depth += 1;
+                has_material = false;
+            }
+            "AttributeEnd" => depth -= 1,
+            "NamedMaterial" | "Material" => has_material = true,
+            "Shape" => assert!(
+                depth == 1 && has_material,
+                "a shape outside a block or without a material"
+            ),
+            _ => {}
+        }
+        assert!((0..=1).contains(&depth), "unbalanced AttributeBegin/End");
+        if d.name == "Shape" && d.string(None) == "trianglemesh" {
+            let p = d.nums("P");
+            let idx = d.nums("indices");
+            assert!(p.len().is_multiple_of(3) && idx.len().is_multiple_of(3) && !idx.is_empty());
+            assert!(idx.iter().all(|&i| i >= 0.0 && (i as usize) < p.len() / 3));
+        }
+        if d.name == "MakeNamedMaterial" {
+            assert!(d.param("type").is_some(), "{d:?}");
+        }
+    }
+    assert_eq!(depth, 0, "unbalanced AttributeBegin/End");
+    out
+}
+
+/// The attribute blocks of the world, each as its directives.
+fn blocks(ds: &[Directive]) -> Vec<&[Directive]> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, d) in ds.iter().enumerate() {
+        match d.name.as_str() {
+            "AttributeBegin" => start = Some(i + 1),
+            "AttributeEnd" => out.push(&ds[start.take().unwrap()..i]),
+            _ => {}
+        }
+    }
+    out
+}
+
+fn find<'a>(block: &'a [Directive], name: &str) -> Option<&'a Directive> {
+    block.iter().find(|d| d.name == name)
+}
+
+/// `"spectrum"` values as (nm, value) pairs.
+fn pairs(x: &[f64]) -> Vec<(f64, f64)> {
+    x.chunks(2).map(|c| (c[0], c[1])).collect()
+}
+
+/// A piecewise-linear spectrum at `l`: linear between knots, 0 outside (pbrt's
+/// `PiecewiseLinearSpectrum::operator()`).
+fn linear(knots: &[(f64, f64)], l: f64) -> f64 {
+    if l < knots[0].0 || l > knots[knots.len() - 1].0 {
+        return 0.0;
+    }
+    let i = knots
+        .iter()
+        .rposition(|k| k.0 <= l)
+        .unwrap()
+        .min(knots.len() - 2);
+    let ((a, va), (b, vb)) = (knots[i], knots[i + 1]);
+    va + (l - a) / (b - a) * (vb - va)
+}
+
+/// pbrt's `SpectrumToPhotometric`: the sum of ȳ(λ) L(λ) over λ = 360, 361, ..., 830 nm,
+/// with ȳ from the data file.
+fn photometric(knots: &[(f64, f64)]) -> f64 {
+    let ybar = column("cie1931_2deg_cmf_1nm.csv", "ybar");
+    (0..471)
+        .map(|i| ybar[i] * linear(knots, 360.0 + i as f64))
+        .sum()
+}
+
+/// The triangles of a mesh: their unit normals `Cross(p1 - p0, p2 - p0)` (pbrt's
+/// `Triangle::Sample`) and their areas.
+fn triangles(d: &Directive) -> Vec<([f64; 3], f64)> {
+    let p = d.nums("P");
+    let at = |i: f64| {
+        [
+            p[3 * i as usize],
+            p[3 * i as usize + 1],
+            p[3 * i as usize + 2],
+        ]
+    };
+    d.nums("indices")
+        .chunks(3)
+        .map(|t| {
+            let (a, b, c) = (at(t[0]), at(t[1]), at(t[2]));
+            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+            let n = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            ([n[0] / len, n[1] / len, n[2] / len], len / 2.0)
+        })
+        .collect()
+}
+
+/// raylemma's `∫ȳ dλ`: the trapezoid rule on the 1 nm table.
+fn y_integral() -> f64 {
+    let y = column("cie1931_2deg_cmf_1nm.csv", "ybar");
+    y.iter().sum::<f64>() - (y[0] + y[y.len() - 1]) / 2.0
+}
+
+#[test]
+fn pbrt_follows_the_checked_rules() {
+    let text = to_pbrt(&load("cornell.toml")).unwrap();
+    let ds = pbrt_well_formed(&text);
+    let get = |name: &str| ds.iter().find(|d| d.name == name).unwrap();
+    let args = |name: &str| -> Vec<f64> {
+        get(name)
+            .args
+            .iter()
+            .map(|a| match a {
+                PbrtValue::Num(x) => *x,
+                other => panic!("{other:?}"),
+            })
+            .collect()
+    };
+    // The camera: mirrored in x first (pbrt's image right is up x forward), then LookAt
+    // with cornell.toml's numbers; the picture is square, so fov is fov_y.
+    let scale = ds.iter().position(|d| d.name == "Scale").unwrap();
+    assert_eq!(ds[scale + 1].name, "LookAt");
+    assert_eq!(args("Scale"), [-1.0, 1.0, 1.0]);
+    assert_eq!(
+        args("LookAt"),
+        [278.0, 273.0, -800.0, 278.0, 273.0, 0.0, 0.0, 1.0, 0.0]
+    );
+    assert_eq!(get("Camera").string(None), "perspective");
+    assert_eq!(get("Camera").nums("fov"), [39.3077]);
+    let sampler = get("Sampler");
+    assert_eq!(sampler.string(None), "independent");
+    assert_eq!(sampler.nums("pixelsamples"), [4096.0]);
+    // No seed in the file: pbrt's --seed would be overridden by it.
+    assert!(sampler.param("seed").is_none());
+    assert_eq!(get("PixelFilter").string(None), "box");
+    assert_eq!(get("PixelFilter").nums("xradius"), [0.5]);
+    assert_eq!(get("PixelFilter").nums("yradius"), [0.5]);
+    let film = get("Film");
+    assert_eq!(film.string(None), "rgb");
+    assert_eq!(
+        (film.nums("xresolution"), film.nums("yresolution")),
+        (vec![256.0], vec![256.0])
+    );
+    assert_eq!(film.string(Some("sensor")), "cie1931");
+    assert_eq!(
+        film.param("savefp16"),
+        Some(("bool", &[PbrtValue::Bool(false)][..]))
+    );
+    // iso / 100 is the imaging ratio: 1 / ∫ȳ makes pbrt's ∫ x̄ L dλ raylemma's X.
+    assert!(close(film.nums("iso")[0], 100.0 / y_integral(), 1e-12));
+    let integrator = get("Integrator");
+    assert_eq!(integrator.string(None), "path");
+    // raylemma's default max_depth, 1000 bounces, is pbrt's maxdepth as it is.
+    assert_eq!(integrator.nums("maxdepth"), [1000.0]);
+    assert_eq!(
+        integrator.param("regularize"),
+        Some(("bool", &[PbrtValue::Bool(false)][..]))
+    );
+    // Materials by name, in the order the exporter wrote them.
+    let world = ds.iter().position(|d| d.name == "WorldBegin").unwrap();
+    let materials: Vec<&Directive> = ds
+        .iter()
+        .filter(|d| d.name == "MakeNamedMaterial")
+        .collect();
+    let of_type = |t: &str| -> Vec<&&Directive> {
+        materials
+            .iter()
+            .filter(|m| m.string(Some("type")) == t)
+            .collect()
+    };
+    let glass = of_type("dielectric");
+    assert_eq!(glass.len(), 1);
+    assert_eq!(glass[0].nums("eta"), [1.5]);
+    assert_eq!(glass[0].param("eta").unwrap().0, "float");
+    assert_eq!(glass[0].nums("roughness"), [0.0]);
+    let mirror = of_type("conductor");
+    assert_eq!(mirror.len(), 1);
+    assert_eq!(mirror[0].nums("eta"), [300.0, 0.0, 900.0, 0.0]);
+    assert_eq!(mirror[0].nums("k"), [300.0, 1.0, 900.0, 1.0]);
+    assert!(
+        mirror[0].param("reflectance").is_none(),
+        "clamped to 0.9999 by pbrt"
+    );
+    // The walls' reflectances: every knot of the CSV, exactly.
+    let nm = column("cornell_box_reflectance.csv", "wavelength_nm");
+    let diffuse: Vec<Vec<f64>> = of_type("diffuse")
+        .iter()
+        .map(|m| m.nums("reflectance"))
+        .collect();
+    for colour in ["white", "red", "green"] {
+        let want: Vec<f64> = nm
+            .iter()
+            .zip(column("cornell_box_reflectance.csv", colour))
+            .flat_map(|(&l, v)| [l, v])
+            .collect();
+        assert!(
+            diffuse.contains(&want),
+            "{colour}'s reflectance is not written as in the CSV"
+        );
+    }
+    // The shapes: five walls (two triangles each, facing one way), two spheres, one light.
+    let bs = blocks(&ds[world + 1..]);
+    assert_eq!(bs.len(), 8);
+    let spheres: Vec<(Vec<f64>, Vec<f64>)> = bs
+        .iter()
+        .filter_map(|b| {
+            let s = find(b, "Shape")?;
+            (s.string(None) == "sphere").then(|| {
+                let t = find(b, "Translate").unwrap();
+                let c = t.args.iter().map(|a| match a {
+                    PbrtValue::Num(x) => *x,
+                    _ => f64::NAN,
+                });
+                (c.collect(), s.nums("radius"))
+            })
+        })
+        .collect();
+    assert_eq!(
+        spheres,
+        [
+            (vec![390.0, 100.0, 370.0], vec![100.0]),
+            (vec![170.0, 100.0, 190.0], vec![100.0])
+        ]
+    );
+    for b in &bs {
+        let s = find(b, "Shape").unwrap();
+        if s.string(None) == "trianglemesh" {
+            let t = triangles(s);
+            assert_eq!(t.len(), 2);
+            assert!(
+                t[0].0 == t[1].0,
+                "the two triangles of a quad face apart: {t:?}"
+            );
+        }
+    }
+    // The light: cornell_box_light.csv's knots, the scale that undoes pbrt's division by
+    // Σ ȳ L, one-sided (no twosided), black, its triangles facing edge1 x edge2 =
+    // (130, 0, 0) x (0, 0, 105) = -y, its corners those of cornell.toml.
+    let lights: Vec<&&[Directive]> = bs
+        .iter()
+        .filter(|b| find(b, "AreaLightSource").is_some())
+        .collect();
+    assert_eq!(lights.len(), 1);
+    let area = find(lights[0], "AreaLightSource").unwrap();
+    assert_eq!(area.string(None), "diffuse");
+    let knots: Vec<f64> = column("cornell_box_light.csv", "wavelength_nm")
+        .into_iter()
+        .zip(column("cornell_box_light.csv", "radiance"))
+        .flat_map(|(l, v)| [l, v])
+        .collect();
+    assert_eq!(area.nums("L"), knots);
+    let sum = photometric(&pairs(&knots));
+    assert!(
+        close(area.nums("scale")[0], sum, 1e-12),
+        "{} against {sum}",
+        area.nums("scale")[0]
+    );
+    assert!(area.param("twosided").is_none());
+    let black = find(lights[0], "Material").unwrap();
+    assert_eq!(black.string(None), "diffuse");
+    assert!(pairs(&black.nums("reflectance")).iter().all(|p| p.1 == 0.0));
+    let mesh = find(lights[0], "Shape").unwrap();
+    let t = triangles(mesh);
+    for (n, _) in &t {
+        assert_eq!(
+            *n,
+            [0.0, -1.0, 0.0],
+            "the light's triangles do not face edge1 x edge2"
+        );
+    }
+    assert!(close(t[0].1 + t[1].1, 130.0 * 105.0, 1e-12));
+    let mut corners: Vec<Vec<f64>> = mesh.nums("P").chunks(3).map(<[f64]>::to_vec).collect();
+    corners.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(
+        corners,
+        [
+            [213.0, 554.0, 227.0],
+            [213.0, 554.0, 332.0],
+            [343.0, 554.0, 227.0],
+            [343.0, 554.0, 332.0]
+        ]
+    );
+    // The header says what the channels are.
+    assert!(text.contains("channels R, G, B") && text.contains("--seed 1"));
+    // A constant environment: an infinite light with its own scale; a constant reflectance
+    // as two knots beyond 360-830 nm.
+    let text = to_pbrt(&load("furnace-grey.toml")).unwrap();
+    let ds = pbrt_well_formed(&text);
+    let env = ds.iter().find(|d| d.name == "LightSource").unwrap();
+    assert_eq!(env.string(None), "infinite");
+    let d65: Vec<(f64, f64)> = column("cie_illuminant_D65.csv", "wavelength_nm")
+        .into_iter()
+        .zip(
+            column("cie_illuminant_D65.csv", "value")
+                .into_iter()
+                .map(|v| v * 0.01),
+        )
+        .collect();
+    let written = pairs(&env.nums("L"));
+    assert_eq!(written.len(), d65.len());
+    assert!(
+        written
+            .iter()
+            .zip(&d65)
+            .all(|(a, b)| a.0 == b.0 && close(a.1, b.1, 1e-15))
+    );
+    assert!(close(env.nums("scale")[0], photometric(&written), 1e-12));
+    let grey = ds.iter().find(|d| d.name == "MakeNamedMaterial").unwrap();
+    assert_eq!(grey.nums("reflectance"), [300.0, 0.5, 900.0, 0.5]);
+}
+
+/// N-BK7's index from the Sellmeier coefficients of `data/sellmeier.csv`, computed here.
+fn n_bk7(nm: f64) -> f64 {
+    let row = std::fs::read_to_string(root().join("data/sellmeier.csv"))
+        .unwrap()
+        .lines()
+        .find(|l| l.starts_with("N-BK7,"))
+        .unwrap()
+        .to_string();
+    let c: Vec<f64> = row
+        .split(',')
+        .skip(3)
+        .take(6)
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let l2 = (nm / 1000.0).powi(2);
+    (1.0 + (0..3)
+        .map(|i| c[2 * i] * l2 / (l2 - c[2 * i + 1]))
+        .sum::<f64>())
+    .sqrt()
+}
+
+#[test]
+fn pbrt_writes_sellmeier_glass_blackbodies_sphere_lights_and_portrait_cameras() {
+    // Sellmeier glass: a spectral eta at every nanometre (pbrt then follows the hero
+    // wavelength alone), equal to the CSV's fit; at the d line, SCHOTT's n_d = 1.5168.
+    let ds = pbrt_well_formed(&to_pbrt(&load("dispersion.toml")).unwrap());
+    let glass = ds
+        .iter()
+        .find(|d| d.name == "MakeNamedMaterial" && d.string(Some("type")) == "dielectric")
+        .unwrap();
+    assert_eq!(glass.param("eta").unwrap().0, "spectrum");
+    let eta = pairs(&glass.nums("eta"));
+    assert_eq!(eta.len(), 471);
+    for (i, &(l, n)) in eta.iter().enumerate() {
+        assert_eq!(l, 360.0 + i as f64);
+        assert!(
+            close(n, n_bk7(l), 1e-12),
+            "{l} nm: {n} against {}",
+            n_bk7(l)
+        );
+    }
+    assert!((linear(&eta, 587.5618) - 1.5168).abs() < 5e-5);
+    // A blackbody sphere light, seen by a portrait camera.
+    let light =
+        "type = \"sphere\"\ncenter = [0, 3, 0]\nradius = 0.5\nemission = { blackbody = 3000 }";
+    let text = small("{ type = \"mirror\" }", light, "").replace("[8, 8]", "[8, 16]");
+    let ds = pbrt_well_formed(&to_pbrt(&scene_text("bb.toml", &text)).unwrap());
+    let camera = ds.iter().find(|d| d.name == "Camera").unwrap();
+    // The shorter axis is the width: tan(fov/2) = tan(40°/2) × 8/16.
+    let fov = 2.0 * (20f64.to_radians().tan() * 0.5).atan().to_degrees();
+    assert!(close(camera.nums("fov")[0], fov, 1e-12));
+    let film = ds.iter().find(|d| d.name == "Film").unwrap();
+    assert_eq!(
+        (film.nums("xresolution"), film.nums("yresolution")),
+        (vec![8.0], vec![16.0])
+    );
+    assert_eq!(
+        ds.iter()
+            .find(|d| d.name == "Integrator")
+            .unwrap()
+            .nums("maxdepth"),
+        [7.0]
+    );
+    let area = ds.iter().find(|d| d.name == "AreaLightSource").unwrap();
+    assert_eq!(
+        area.param("twosided"),
+        Some(("bool", &[PbrtValue::Bool(true)][..]))
+    );
+    let l = pairs(&area.nums("L"));
+    assert_eq!(l.len(), 471);
+    // Planck's law: the ratio of two samples, from the physical constants here (CODATA).
+    let (h, c, k) = (6.626_070_15e-34, 299_792_458.0, 1.380_649e-23);
+    let planck = |nm: f64| {
+        let m = nm * 1e-9;
+        1.0 / (m.powi(5) * ((h * c / (m * k * 3000.0)).exp() - 1.0))
+    };
+    assert!(close(
+        l[140].1 / l[240].1,
+        planck(500.0) / planck(600.0),
+        1e-6
+    ));
+    assert!(close(area.nums("scale")[0], photometric(&l), 1e-12));
+    assert_eq!(ds.iter().filter(|d| d.name == "Translate").count(), 2);
+}
+
+#[test]
+fn pbrt_refuses_what_it_cannot_express_with_the_line() {
+    let scenes = root().join("scenes");
+    let text = |f: &str| std::fs::read_to_string(scenes.join(f)).unwrap();
+    let f = load("bubble.toml");
+    let e = to_pbrt(&f).unwrap_err();
+    assert_eq!(
+        e.line,
+        line_with(&text("bubble.toml"), "type = \"thin-film\""),
+        "{e}"
+    );
+    assert!(
+        e.file.ends_with("bubble.toml") && e.problem.contains("thin film"),
+        "{e}"
+    );
+    let sky = "\n[environment]\nabove = 1\nbelow = 0.5\n";
+    let dielectric = "{ type = \"dielectric\", ior = 1.5 }";
+    let quad = "\n[[shape]]\ntype = \"quad\"\ncorner = [-5, -1, -5]\nedge1 = [0, 0, 10]\nedge2 = [10, 0, 0]\nmaterial = \"m\"\n";
+    for (name, text, needle, feature) in [
+        (
+            "sky.toml",
+            small("{ type = \"mirror\" }", QUAD_LIGHT, sky),
+            "[environment]",
+            "gradient sky",
+        ),
+        (
+            "quad.toml",
+            small(dielectric, QUAD_LIGHT, quad),
+            "[[shape]]\ntype = \"quad\"\ncorner = [-5",
+            "dielectric quad",
+        ),
+    ] {
+        let f = scene_text(name, &text);
+        let e = to_pbrt(&f).unwrap_err();
+        let line = text[..text.find(needle).unwrap()].matches('\n').count() + 1;
+        assert_eq!((e.file.as_str(), e.line), (name, line), "{e}");
+        assert!(e.problem.contains(feature), "{e}");
+        assert!(serde_json::from_str::<Value>(&to_json(&f)).is_ok());
+    }
+    // What Mitsuba refuses and pbrt expresses: Sellmeier glass, and a camera inside a sphere
+    // light (pbrt's twosided area light emits inwards too).
+    pbrt_well_formed(&to_pbrt(&load("dispersion.toml")).unwrap());
+    let inside = "type = \"sphere\"\ncenter = [0, 0, -5]\nradius = 0.5\nemission = 1";
+    let f = scene_text("eye.toml", &small("{ type = \"mirror\" }", inside, ""));
+    assert!(to_xml(&f).is_err());
+    pbrt_well_formed(&to_pbrt(&f).unwrap());
 }

@@ -660,12 +660,14 @@ fn merge_from_the_command_line_refuses_what_does_not_pool() {
 
 /// The conformance ladder: every rung of `check::render::ladder::LADDER` is a file of
 /// `scenes/conformance/` (and every file there a rung), parses, says in its header what it
-/// tests, where it is derived and what a failure means, exports to JSON, and exports to
-/// Mitsuba unless it is spectral-only (which Mitsuba's export refuses with the line).
+/// tests, where it is derived and what a failure means, exports to JSON, exports to
+/// Mitsuba unless it is spectral-only (which Mitsuba's export refuses with the line), and
+/// exports to pbrt-v4 as a well-formed file unless it has a thin film (refused with the
+/// line).
 #[test]
 fn every_rung_of_the_ladder_parses_says_what_it_tests_and_exports() {
     use raylemma::check::render::ladder::{LADDER, header};
-    use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml};
+    use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/conformance");
     let mut files: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
@@ -696,6 +698,18 @@ fn every_rung_of_the_ladder_parses_says_what_it_tests_and_exports() {
             (Err(e), true) => assert!(e.line > 0, "{e}"),
             (r, spectral) => panic!(
                 "{}: spectral only {spectral}, Mitsuba export {:?}",
+                rung.file,
+                r.map(|_| ())
+            ),
+        }
+        let thin_film = text.contains("\"thin-film\"");
+        match (to_pbrt(&f), thin_film) {
+            (Ok(p), false) => {
+                super::export::pbrt_well_formed(&p);
+            }
+            (Err(e), true) => assert!(e.line > 0 && e.problem.contains("thin film"), "{e}"),
+            (r, thin_film) => panic!(
+                "{}: thin film {thin_film}, pbrt export {:?}",
                 rung.file,
                 r.map(|_| ())
             ),
