@@ -171,7 +171,10 @@ fn xyz_hint(reference: &Image, candidate: &Image, from_xyz: bool) -> Option<Stri
 fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), String> {
     // Black images are the same whatever the seed: they have no noise to hide, and a
     // black candidate is compared (and differs from any reference that is not black).
-    if means.iter().all(|m| m.iter().all(|&p| p == glam::DVec3::ZERO)) {
+    if means
+        .iter()
+        .all(|m| m.iter().all(|&p| p == glam::DVec3::ZERO))
+    {
         return Ok(());
     }
     let same: Vec<usize> = (1..means.len()).filter(|&j| means[j] == means[0]).collect();

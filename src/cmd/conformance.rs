@@ -267,7 +267,7 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
 /// What [`write_scene`] did.
 enum Written {
     /// The scene file it wrote, and the scene.
-    Scene(PathBuf, SceneFile),
+    Scene(PathBuf, Box<SceneFile>),
     /// The format cannot express the rung: the export's refusal (`file:line: reason`).
     Refused(String),
 }
@@ -316,7 +316,7 @@ fn write_scene(
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let path = dir.join(format!("scene.{ext}"));
     raylemma::output::write_file(&path, body.as_bytes()).map_err(|e| e.to_string())?;
-    Ok(Written::Scene(path, file))
+    Ok(Written::Scene(path, Box::new(file)))
 }
 
 fn bias_text(bias: &Option<[(f64, f64); 3]>) -> String {
@@ -396,10 +396,18 @@ fn depth_meaning(depth: Option<u32>, rung: Rung) -> Option<&'static str> {
         return None;
     }
     Some(match depth {
-        Some(1) => "at depth 1 the paths have two segments: the direct light (next-event estimation, the BSDF sample that reaches a light, their MIS weights)",
-        Some(2) => "depth 1 agrees: what depth 2 adds is the first indirect bounce (the bounce's throughput, light sampled from the second vertex)",
-        Some(_) => "depths 1 and 2 agree: what depth 3 adds is the second indirect bounce (throughput carried across bounces, where roulette may start)",
-        None => "every bounded depth agrees: what is left is the depth limit itself or Russian roulette (the survival probability divided out)",
+        Some(1) => {
+            "at depth 1 the paths have two segments: the direct light (next-event estimation, the BSDF sample that reaches a light, their MIS weights)"
+        }
+        Some(2) => {
+            "depth 1 agrees: what depth 2 adds is the first indirect bounce (the bounce's throughput, light sampled from the second vertex)"
+        }
+        Some(_) => {
+            "depths 1 and 2 agree: what depth 3 adds is the second indirect bounce (throughput carried across bounces, where roulette may start)"
+        }
+        None => {
+            "every bounded depth agrees: what is left is the depth limit itself or Russian roulette (the survival probability divided out)"
+        }
     })
 }
 

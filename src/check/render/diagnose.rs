@@ -14,7 +14,7 @@
 //!   of a BRDF, a normalisation), or one factor per channel (the colour conversion);
 //! * a gamma-encoded image: the candidate through the sRGB decoding is compared;
 //! * a field of view: the reference magnified about the image's centre by `m`
-//!   (bilinear), the best `m` on a grid from 0.97 to 1.03, is compared; the candidate's
+//!   (bilinear), the best `m` from 0.97 to 1.03 to 0.001, is compared; the candidate's
 //!   vertical field of view is then `2 atan(tan(fov/2) / m)`;
 //! * another maximum depth: the candidate against the rung's references at its other
 //!   depths;
@@ -246,27 +246,32 @@ pub fn magnified(image: &Image, m: f64) -> Image {
     out
 }
 
-/// The magnification of the reference, on a grid of 0.001 from 0.97 to 1.03, that leaves
-/// the least `Σ z²` against the candidate, with that comparison; `None` when 1 is best.
+/// The magnification of the reference, from 0.97 to 1.03 (steps of 0.005, then of 0.001
+/// about the best), that leaves the least excess of the blocks' `Σ z²` against the candidate, with that comparison; `None` when 1 is best.
 fn best_magnification(
     reference: &Estimate,
     candidate: &Estimate,
     level: f64,
 ) -> Option<(f64, Comparison)> {
-    let mut best: Option<(f64, f64, Comparison)> = None;
-    for i in -30..=30 {
-        let m = 1.0 + f64::from(i) * 1e-3;
-        let r = Estimate {
-            image: magnified(&reference.image, m),
-            ..reference.clone()
-        };
-        if let Ok(c) = compare(&r, candidate, level) {
-            let e = excess(&c);
-            if best.as_ref().is_none_or(|b| e < b.1) {
-                best = Some((m, e, c));
+    let best_of = |ms: &mut dyn Iterator<Item = f64>| {
+        let mut best: Option<(f64, f64, Comparison)> = None;
+        for m in ms {
+            let r = Estimate {
+                image: magnified(&reference.image, m),
+                ..reference.clone()
+            };
+            if let Ok(c) = compare(&r, candidate, level) {
+                let e = excess(&c);
+                if best.as_ref().is_none_or(|b| e < b.1) {
+                    best = Some((m, e, c));
+                }
             }
         }
-    }
+        best
+    };
+    // Steps of 0.005, then steps of 0.001 about the best of them.
+    let coarse = best_of(&mut (-6..=6).map(|i| 1.0 + f64::from(i) * 5e-3))?.0;
+    let best = best_of(&mut (-4..=4).map(|i| coarse + f64::from(i) * 1e-3));
     best.filter(|b| b.0 != 1.0).map(|(m, _, c)| (m, c))
 }
 
@@ -283,7 +288,10 @@ pub fn labels(scene: &Scene, materials: &[String]) -> Vec<String> {
                 Some(hit) => match hit.surface {
                     Surface::Shape(i) => {
                         let m = scene.shapes[i].material;
-                        format!("material {:?}", materials.get(m).map_or("?", String::as_str))
+                        format!(
+                            "material {:?}",
+                            materials.get(m).map_or("?", String::as_str)
+                        )
                     }
                     Surface::Light(i) => format!("light {}", i + 1),
                 },
@@ -322,11 +330,14 @@ fn by_material(
             continue;
         }
         if (kl - 1.0).abs() > 4.0 * sel {
-            off.push(((kl - 1.0).abs() / sel, format!(
-                "where the camera sees {name} ({n} pixels) the candidate is {:+.2} % ± {:.2} %",
-                100.0 * (kl - 1.0),
-                100.0 * sel
-            )));
+            off.push((
+                (kl - 1.0).abs() / sel,
+                format!(
+                    "where the camera sees {name} ({n} pixels) the candidate is {:+.2} % ± {:.2} %",
+                    100.0 * (kl - 1.0),
+                    100.0 * sel
+                ),
+            ));
         } else {
             fine.push(name.clone());
         }

@@ -746,3 +746,116 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
         c.report(["05-box", "08-roulette, 3 % brighter"])
     );
 }
+
+/// The conformance card's diagnosis (`check::render::diagnose`) on rung 1 against its
+/// committed reference: four runs of 64 spp of raylemma's own render with one mistake
+/// each. A light 1 % too bright is found as a uniform factor near 1.01, the same images
+/// gamma-encoded as gamma encoding, the camera's field of view 0.5° wide as the camera
+/// with a field of view within 0.15° of 40.5° (the magnification is found on a grid of
+/// 0.001, about 0.04° here), and the light in the middle pixels' blocks 4 % too
+/// bright (a local mistake, the planted twin of every hypothesis) as none of them. The runs
+/// without a mistake agree with the reference.
+#[test]
+fn the_card_s_diagnosis_names_each_mistake_and_no_other() {
+    use raylemma::check::render::diagnose::{Context, diagnose};
+    use raylemma::render::compare::{Estimate, compare};
+    use raylemma::render::export::SceneFile;
+    let dir = root().join("scenes/conformance");
+    let file = SceneFile::load(&dir.join("01-direct-quad.toml")).unwrap();
+    let reference = Estimate::from_variance(
+        render::image::Image::read_exr(
+            &root().join("figures/reference/conformance/01-direct-quad.exr"),
+        )
+        .unwrap(),
+    );
+    let level = raylemma::stats::sidak(raylemma::stats::test_alpha(), 5);
+    // Four runs of a scene, and their estimate after `change` (pixel index, value).
+    let render_runs = |scene: &render::scene::Scene| -> Vec<Vec<glam::DVec3>> {
+        (1..=4u64)
+            .map(|seed| {
+                let mut s = scene.clone();
+                s.settings.seed = 100 + seed;
+                render::render(&s, 64, render::Progress::Silent).mean
+            })
+            .collect()
+    };
+    let estimate = |images: &[Vec<glam::DVec3>],
+                    change: &dyn Fn(usize, glam::DVec3) -> glam::DVec3| {
+        let changed: Vec<Vec<glam::DVec3>> = images
+            .iter()
+            .map(|m| m.iter().enumerate().map(|(i, &p)| change(i, p)).collect())
+            .collect();
+        let means: Vec<&[glam::DVec3]> = changed.iter().map(|m| &m[..]).collect();
+        Estimate::from_spread(64, 64, &means).unwrap()
+    };
+    let runs = |scene: &render::scene::Scene| estimate(&render_runs(scene), &|_, p| p);
+    let clean_images = render_runs(&file.scene);
+    let materials: Vec<String> = file.materials.iter().map(|(n, _)| n.clone()).collect();
+    let context = Context {
+        scene: &file.scene,
+        materials: &materials,
+        other_depths: Vec::new(),
+    };
+    let found = |candidate: &Estimate| diagnose(&reference, candidate, level, &context);
+    let clean = estimate(&clean_images, &|_, p| p);
+    let c = compare(&reference, &clean, level).unwrap();
+    assert!(c.agree(), "{}", c.report(["reference", "clean runs"]));
+
+    let mut bright = file.scene.clone();
+    for l in &mut bright.lights {
+        l.emission = raylemma::spectral::spectrum::Spectrum::Constant(10.1);
+    }
+    let d = found(&runs(&bright));
+    assert!(
+        d.first()
+            .is_some_and(|f| f.starts_with("a uniform factor: the candidate is 1.01")),
+        "{d:#?}"
+    );
+
+    let encode = |x: f64| {
+        let a = x.abs();
+        let y = if a <= 0.0031308 {
+            12.92 * a
+        } else {
+            1.055 * a.powf(1.0 / 2.4) - 0.055
+        };
+        y.copysign(x)
+    };
+    let d = found(&estimate(&clean_images, &|_, p| {
+        glam::DVec3::new(encode(p.x), encode(p.y), encode(p.z))
+    }));
+    assert!(
+        d.first()
+            .is_some_and(|f| f.starts_with("the image is gamma-encoded")),
+        "{d:#?}"
+    );
+
+    let mut wide = file.scene.clone();
+    wide.camera.fov_y_deg += 0.5;
+    let d = found(&runs(&wide));
+    let fov = d
+        .first()
+        .filter(|f| f.starts_with("the camera:"))
+        .and_then(|f| f.split("field of view of ").nth(1))
+        .and_then(|f| f.split('°').next())
+        .and_then(|f| f.parse::<f64>().ok());
+    assert!(
+        fov.is_some_and(|f| (f - 40.5).abs() <= 0.15),
+        "{fov:?}: {d:#?}"
+    );
+
+    // The twin: 4 % brighter in the image's middle rows only, which no hypothesis explains.
+    let local = estimate(&clean_images, &|i, p| {
+        if (24..40).contains(&(i / 64)) {
+            p * 1.04
+        } else {
+            p
+        }
+    });
+    let d = found(&local);
+    assert!(!compare(&reference, &local, level).unwrap().agree());
+    assert!(
+        d.iter().all(|f| !f.contains("undoing it")),
+        "a local mistake explained by a hypothesis: {d:#?}"
+    );
+}

@@ -39,10 +39,15 @@ fn ladder_table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError
         let text =
             std::fs::read_to_string(settings.root.join("scenes/conformance").join(rung.file))?;
         let h = header(&text);
+        // The scene's own depth: its `max_depth`, or unbounded (the default, 1000).
+        let own = text
+            .lines()
+            .find_map(|l| l.trim().strip_prefix("max_depth = "))
+            .map_or("unbounded".to_string(), |d| format!("its own, {d}"));
         let depths: Vec<String> = rung
             .depths
             .iter()
-            .map(|d| d.map_or("unbounded".to_string(), |d| d.to_string()))
+            .map(|d| d.map_or(own.clone(), |d| d.to_string()))
             .collect();
         let depth_note = if rung.depths.len() > 1 {
             format!(" (references at depths {})", depths.join(", "))
