@@ -5,13 +5,15 @@
 //! An exercise is *not started* when its own stub panics ([`super::todo`]), *waiting*
 //! when the stub of an exercise it calls panics first, *failing* when a checker's verdict
 //! fails (the card lists each failed claim with its count and worst error against the
-//! bound) or its code panics, and *passing* when every verdict passes. The edition's
-//! `cargo test` prints the card at its very end (`tests/book/report_card.rs`).
+//! bound) or its code panics or does not return within [`LIMIT`], and *passing* when
+//! every verdict passes. The edition's `cargo test` prints the card at its very end
+//! (`tests/book/report_card.rs`).
 
 use std::cell::Cell;
 use std::fmt;
 use std::panic::{self, AssertUnwindSafe};
-use std::sync::Once;
+use std::sync::{Once, mpsc};
+use std::time::Duration;
 
 use super::marker::Marker;
 use super::registry::{self, LATER};
@@ -89,6 +91,33 @@ fn quiet_hook() {
     });
 }
 
+/// How long one exercise's checks may run before the card judges them stuck: every
+/// exercise's checks on the solutions take a fraction of a second (24 in about 1 s on 2
+/// cores), so 30 s is a loop, not a slow machine.
+pub const LIMIT: Duration = Duration::from_secs(30);
+
+/// [`judge`] on a thread of its own, given at most `limit`: checks that have not returned
+/// by then are failing, and their thread is left to run (a loop cannot be stopped from
+/// outside; the process ends it when it exits).
+pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) -> Status {
+    let (done, result) = mpsc::channel();
+    let owned = name.to_string();
+    let spawned = std::thread::Builder::new()
+        .name(format!("exercise {name}"))
+        .spawn(move || {
+            let _ = done.send(judge(&owned, &check));
+        });
+    if let Err(e) = spawned {
+        return Status::Failing(vec![format!("its checks could not start a thread: {e}")]);
+    }
+    result.recv_timeout(limit).unwrap_or_else(|_| {
+        Status::Failing(vec![format!(
+            "its checks did not return within {} s: a loop that never ends (a rejection loop that never accepts, a `while` whose condition never changes); the other exercises were judged on",
+            limit.as_secs()
+        )])
+    })
+}
+
 /// The status of the exercise `name` from running `check` (with panics caught).
 pub fn judge(name: &str, check: &dyn Fn() -> Vec<Verdict>) -> Status {
     quiet_hook();
@@ -158,11 +187,11 @@ pub fn run_with(markers: &[Marker], status: impl Fn(&Marker) -> Status) -> Card 
 }
 
 /// The card of the exercises `markers`, each judged by its checks in
-/// [`registry::EXERCISES`] run on the crate's own functions; a registry entry that no
-/// marker names is a problem of the card.
+/// [`registry::EXERCISES`] run on the crate's own functions, within [`LIMIT`]; a registry
+/// entry that no marker names is a problem of the card.
 pub fn run(markers: &[Marker]) -> Card {
     let mut card = run_with(markers, |m| match registry::find(&m.name) {
-        Some(e) => judge(e.name, &e.check),
+        Some(e) => judge_within(e.name, e.check, LIMIT),
         None => Status::Unchecked,
     });
     card.problems = registry::EXERCISES

@@ -6,10 +6,20 @@
 //! summary (from a C `atexit` handler, which runs when libtest exits), so that it is the
 //! last thing `cargo test` shows; the test itself fails, with the total, unless every
 //! exercise passes. `cargo test --test book report_card` runs it alone.
+//!
+//! A test that never returns (a loop in an exercise) would keep libtest waiting for ever,
+//! and the card would never be printed. So the first test of the binary in libtest's order
+//! (`a_watchdog_for_tests_that_never_return`, in `main.rs`) starts [`watchdog`]: once the
+//! card has been printed-to-be for [`GRACE`] seconds, or [`WAIT`] seconds after the start if
+//! the card's own test never got a thread, it prints the card (making it first if need
+//! be), says that a test did not return, and ends the run with exit status 101, as a
+//! failing `cargo test` does. libtest has already named the test that hangs ("has been
+//! running for over 60 seconds") when the wait is longer than that.
 
 use std::io::Write as _;
 use std::path::Path;
 use std::sync::OnceLock;
+use std::time::{Duration, Instant};
 
 use raylemma::exercise::{card, edition};
 
@@ -22,6 +32,9 @@ unsafe extern "C" {
 
 /// Prints the card (called once, at exit; never unwinds).
 extern "C" fn print_card() {
+    if PRINTED.get().is_some() {
+        return;
+    }
     if let Some(text) = CARD.get() {
         let mut out = std::io::stdout();
         let _ = writeln!(out, "\n{text}");
@@ -29,11 +42,73 @@ extern "C" fn print_card() {
     }
 }
 
-#[test]
-fn report_card() {
+/// Seconds the run may go on after the card is made (every other test of the solutions
+/// ends within about 30 s of the start on 2 cores), unless `RAYLEMMA_TEST_GRACE` says.
+pub const GRACE: u64 = 120;
+/// Seconds after the start at which the card is made by the watchdog if its own test has
+/// not run, unless `RAYLEMMA_TEST_WAIT` says.
+pub const WAIT: u64 = 300;
+
+fn seconds(var: &str, default: u64) -> Duration {
+    let s = std::env::var(var)
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default);
+    Duration::from_secs(s)
+}
+
+fn make_card() -> card::Card {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
-    let card = card::run(&markers);
+    card::run(&markers)
+}
+
+/// Starts the watchdog thread (see the module's documentation); it ends the process only
+/// if the run is still going when its time is up.
+pub fn watchdog() {
+    let (grace, wait) = (
+        seconds("RAYLEMMA_TEST_GRACE", GRACE),
+        seconds("RAYLEMMA_TEST_WAIT", WAIT),
+    );
+    let start = Instant::now();
+    std::thread::spawn(move || {
+        let mut carded: Option<Instant> = None;
+        loop {
+            std::thread::sleep(Duration::from_millis(250));
+            if carded.is_none() && CARD.get().is_some() {
+                carded = Some(Instant::now());
+            }
+            let late = match carded {
+                Some(t) => t.elapsed() >= grace,
+                None => start.elapsed() >= wait,
+            };
+            if late {
+                break;
+            }
+        }
+        let text = CARD
+            .get()
+            .cloned()
+            .unwrap_or_else(|| make_card().to_string());
+        let mut out = std::io::stdout();
+        let _ = writeln!(
+            out,
+            "\nraylemma: a test has not returned {} s after the start: a loop that never ends (libtest names the test that has been running for over 60 seconds). The run is stopped here.\n\n{text}",
+            start.elapsed().as_secs()
+        );
+        let _ = out.flush();
+        // The card is printed: the atexit handler must not print it again.
+        PRINTED.set(()).ok();
+        std::process::exit(101);
+    });
+}
+
+/// Set once the watchdog has printed the card.
+static PRINTED: OnceLock<()> = OnceLock::new();
+
+#[test]
+fn report_card() {
+    let card = make_card();
     if CARD.set(card.to_string()).is_ok() {
         // SAFETY: `atexit` is the C library's own; `print_card` takes no argument, returns
         // nothing and cannot unwind (it ignores every error).

@@ -584,3 +584,42 @@ fn every_chapter_ends_with_exercises_that_name_their_command() {
         }
     }
 }
+
+/// The card judges an exercise whose checks do not return within the limit as failing,
+/// naming the loop, and goes on: checks that sleep 5 s against a limit of 0.2 s fail
+/// within 2 s. The twin returns at once with no verdicts: failing too, but not for time.
+#[test]
+fn an_exercise_that_does_not_return_fails_and_the_card_goes_on() {
+    use raylemma::exercise::card::{Status, judge_within};
+    use std::time::{Duration, Instant};
+    fn sleeps() -> Vec<raylemma::check::Verdict> {
+        std::thread::sleep(Duration::from_secs(5));
+        Vec::new()
+    }
+    fn returns() -> Vec<raylemma::check::Verdict> {
+        Vec::new()
+    }
+    let start = Instant::now();
+    let status = judge_within("sleeps", sleeps, Duration::from_millis(200));
+    assert!(
+        start.elapsed() < Duration::from_secs(2),
+        "{:?}",
+        start.elapsed()
+    );
+    match status {
+        Status::Failing(lines) => assert!(
+            lines.len() == 1 && lines[0].contains("did not return within"),
+            "{lines:?}"
+        ),
+        other => panic!("{other:?}"),
+    }
+    match judge_within("returns", returns, Duration::from_millis(200)) {
+        Status::Failing(lines) => {
+            assert!(
+                lines.iter().all(|l| !l.contains("did not return")),
+                "{lines:?}"
+            )
+        }
+        other => panic!("{other:?}"),
+    }
+}
