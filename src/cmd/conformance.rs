@@ -38,7 +38,8 @@ pub enum Format {
 pub struct ConformanceArgs {
     /// The renderer, run by `sh -c`, with `{scene}` (the scene file to read), `{out}` (the
     /// EXR to write: plain R, G, B, or X, Y, Z), `{outdir}` (its folder), `{spp}`, `{seed}`
-    /// and `{depth}` (the maximum depth, `-1` for unbounded) replaced.
+    /// and `{depth}` (the maximum depth in raylemma's count of bounces, as the written scene
+    /// has it: the rung's own where no other is asked, 1000 for the default) replaced.
     #[arg(long)]
     pub renderer: String,
     /// The scene format the renderer reads.
@@ -192,7 +193,7 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
             .replace("{out}", &out.display().to_string())
             .replace("{spp}", &args.spp.to_string())
             .replace("{seed}", &seed.to_string())
-            .replace("{depth}", &depth.map_or("-1".into(), |d| d.to_string()));
+            .replace("{depth}", &file.scene.settings.max_depth.to_string());
         let log = outdir.join("log.txt");
         if let Err(e) = raylemma::check::external::run_logged(
             &command,
@@ -389,12 +390,13 @@ fn card_text(rows: &[Row], args: &ConformanceArgs) -> String {
     s
 }
 
-/// What the first failing depth of a rung says, when the rung has several: the bounce that
-/// depth adds.
+/// What the first failing depth of a rung says, when the rung has several: what that depth
+/// adds to the ones before it, which agreed.
 fn depth_meaning(depth: Option<u32>, rung: Rung) -> Option<&'static str> {
     if rung.depths.len() < 2 {
         return None;
     }
+    let ladder = rung.depths.contains(&Some(3));
     Some(match depth {
         Some(1) => {
             "at depth 1 the paths have two segments: the direct light (next-event estimation, the BSDF sample that reaches a light, their MIS weights)"
@@ -405,8 +407,11 @@ fn depth_meaning(depth: Option<u32>, rung: Rung) -> Option<&'static str> {
         Some(_) => {
             "depths 1 and 2 agree: what depth 3 adds is the second indirect bounce (throughput carried across bounces, where roulette may start)"
         }
-        None => {
+        None if ladder => {
             "every bounded depth agrees: what is left is the depth limit itself or Russian roulette (the survival probability divided out)"
+        }
+        None => {
+            "depth 1 agrees: what the rung's own depth adds is the indirect light (a bounce's throughput, light sampled from later vertices, roulette where the depth allows it)"
         }
     })
 }

@@ -747,16 +747,21 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
     );
 }
 
-/// The conformance card's diagnosis (`check::render::diagnose`) on rung 1 against its
-/// committed reference: four runs of 64 spp of raylemma's own render with one mistake
-/// each. A light 1 % too bright is found as a uniform factor near 1.01, the same images
-/// gamma-encoded as gamma encoding, the camera's field of view 0.5° wide as the camera
-/// with a field of view within 0.15° of 40.5° (the magnification is found on a grid of
-/// 0.001, about 0.04° here), and the light in the middle pixels' blocks 4 % too
-/// bright (a local mistake, the planted twin of every hypothesis) as none of them. The runs
-/// without a mistake agree with the reference.
+/// The conformance card's diagnosis (`check::render::diagnose`) against the committed
+/// references, on four runs of 64 spp of raylemma's own render with one mistake each:
+/// - rung 1 with its light 1 % too bright: a uniform factor within 0.002 of 1.01, and no
+///   other hypothesis that explains it;
+/// - the same images gamma-encoded: gamma encoding, and no other;
+/// - rung 1 seen with a field of view 0.5° wider: the camera, at a field of view within
+///   0.15° of 40.5° (the magnification is found to 0.001, about 0.04° here);
+/// - the closed box of rung 5 rendered at depth 1, against its depth-2 reference with the
+///   depth-1 and depth-3 references beside it: the depth, at depth 1;
+/// - rung 1 4 % too bright in its middle rows only (a local mistake, the planted twin of
+///   every hypothesis): no hypothesis explains it.
+///
+/// The runs without a mistake agree with the reference.
 #[test]
-fn the_card_s_diagnosis_names_each_mistake_and_no_other() {
+fn the_card_s_diagnosis_names_each_mistake() {
     use raylemma::check::render::diagnose::{Context, diagnose};
     use raylemma::render::compare::{Estimate, compare};
     use raylemma::render::export::SceneFile;
@@ -806,11 +811,18 @@ fn the_card_s_diagnosis_names_each_mistake_and_no_other() {
         l.emission = raylemma::spectral::spectrum::Spectrum::Constant(10.1);
     }
     let d = found(&runs(&bright));
+    let k = d
+        .first()
+        .and_then(|f| f.strip_prefix("a uniform factor: the candidate is "))
+        .and_then(|f| f.split(' ').next())
+        .and_then(|f| f.parse::<f64>().ok());
     assert!(
-        d.first()
-            .is_some_and(|f| f.starts_with("a uniform factor: the candidate is 1.01")),
-        "{d:#?}"
+        k.is_some_and(|k| (k - 1.01).abs() <= 0.002),
+        "{k:?}: {d:#?}"
     );
+    // Only one hypothesis explains it.
+    let agrees = |d: &[String]| d.iter().filter(|f| f.contains("AGREES")).count();
+    assert_eq!(agrees(&d), 1, "{d:#?}");
 
     let encode = |x: f64| {
         let a = x.abs();
@@ -829,6 +841,7 @@ fn the_card_s_diagnosis_names_each_mistake_and_no_other() {
             .is_some_and(|f| f.starts_with("the image is gamma-encoded")),
         "{d:#?}"
     );
+    assert_eq!(agrees(&d), 1, "{d:#?}");
 
     let mut wide = file.scene.clone();
     wide.camera.fov_y_deg += 0.5;
@@ -842,6 +855,46 @@ fn the_card_s_diagnosis_names_each_mistake_and_no_other() {
     assert!(
         fov.is_some_and(|f| (f - 40.5).abs() <= 0.15),
         "{fov:?}: {d:#?}"
+    );
+
+    // Another depth: the closed box (rung 5) rendered at max_depth 1 where the reference is
+    // at depth 2, with the references at 1 and 3 beside it.
+    let box_file = SceneFile::load(&dir.join("05-box.toml")).unwrap();
+    let box_depth = |d: u32| {
+        let mut s = box_file.scene.clone();
+        s.settings.max_depth = d;
+        s
+    };
+    let load = |name: &str| {
+        Estimate::from_variance(
+            render::image::Image::read_exr(
+                &root().join(format!("figures/reference/conformance/{name}.exr")),
+            )
+            .unwrap(),
+        )
+    };
+    let box_materials: Vec<String> = box_file.materials.iter().map(|(n, _)| n.clone()).collect();
+    let at_two = box_depth(2);
+    let box_context = Context {
+        scene: &at_two,
+        materials: &box_materials,
+        other_depths: vec![
+            (Some(1), load("05-box-depth1")),
+            (Some(3), load("05-box-depth3")),
+        ],
+    };
+    let d = diagnose(
+        &load("05-box-depth2"),
+        &runs(&box_depth(1)),
+        level,
+        &box_context,
+    );
+    assert!(
+        d.first()
+            .is_some_and(|f| f.starts_with("the maximum depth:")
+                && f.contains("at depth 1 ")
+                && f.contains("AGREES")),
+        "{d:#?}"
     );
 
     // The twin: 4 % brighter in the image's middle rows only, which no hypothesis explains.

@@ -43,7 +43,9 @@ fn ladder_table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError
         let own = text
             .lines()
             .find_map(|l| l.trim().strip_prefix("max_depth = "))
-            .map_or("unbounded".to_string(), |d| format!("its own, {d}"));
+            .map_or("unbounded (its own)".to_string(), |d| {
+                format!("{d} (its own)")
+            });
         let depths: Vec<String> = rung
             .depths
             .iter()
