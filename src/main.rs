@@ -73,6 +73,7 @@ enum Cmd {
 /// Parses the command line and runs the subcommand; its result becomes the exit status by
 /// the one rule of [`cmd::exit`] (0 success, 1 a negative verdict, 2 bad input or usage).
 fn main() -> ExitCode {
+    one_message_per_unfinished_exercise();
     let cli = Cli::parse();
     if cli.quick && cli.command.is_some() {
         return cmd::exit(Err(cmd::Failure::BadInput(
@@ -92,4 +93,25 @@ fn main() -> ExitCode {
         Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
         Some(Cmd::Export(args)) => cmd::export::run(args),
     })
+}
+
+/// In the student edition, a function whose exercise is not started panics on every thread
+/// that calls it (a render calls it once per worker, and then again on the main thread):
+/// print that message once, with what to do, and leave every other panic to the default
+/// hook.
+fn one_message_per_unfinished_exercise() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    static SAID: AtomicBool = AtomicBool::new(false);
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let message = raylemma::exercise::panic_message(info.payload());
+        if raylemma::exercise::not_started(&message).is_none() {
+            return default(info);
+        }
+        if !SAID.swap(true, Ordering::SeqCst) {
+            eprintln!(
+                "raylemma: {message}\nraylemma: this command calls that exercise; the report card (cargo test --test book report_card) lists what each command needs"
+            );
+        }
+    }));
 }
