@@ -572,28 +572,12 @@ fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
             ),
         )?;
     }
-    let (exact, schlick, fit, seed) = (&rows[0], &rows[1], &rows[2], &rows[3]);
+    let (exact, schlick, seed) = (&rows[0], &rows[1], &rows[3]);
     r.number("schlick_saves_entering_ns", exact.ns.0 - schlick.ns.0, ".1");
-    // The three correct methods branch on the critical angle leaving glass (the seed's
-    // Schlick has no branch): with the cosines in random order, skipping the work past it
-    // does not make them faster (the medians are of one interleaved run).
-    let show = |methods: &[&Timed], pick: fn(&Timed) -> f64| {
-        methods
-            .iter()
-            .map(|t| format!("{} {:.2}", t.name, pick(t)))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let correct = [exact, schlick, fit];
-    r.claim(
-        "leaving_not_much_faster",
-        correct.iter().all(|t| 3.0 * t.ns.1 >= 2.0 * t.ns.0),
-        format!(
-            "ns leaving glass ({}) at least two thirds of ns entering ({}), each method",
-            show(&correct, |t| t.ns.1),
-            show(&correct, |t| t.ns.0)
-        ),
-    );
+    // How much of the work skipped past the critical angle survives the mispredicted
+    // branch, with the cosines in random order, depends on the machine (on a Xeon each
+    // correct method saved less than a third leaving glass, on an EPYC the exact formula
+    // saved a third): no claim ranks it.
     // With the cosines sorted the branch is predictable, and the exact formula's skipped
     // work shows. (Schlick's and the fit's sorted times sit too close to their others, and
     // move with the build's code layout, to be ranked.)
