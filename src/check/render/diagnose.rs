@@ -186,7 +186,10 @@ fn scaled(e: &Estimate, s: DVec3) -> Estimate {
     out
 }
 
-/// The sRGB decoding of a value (odd in its sign) and its derivative.
+/// The sRGB decoding of a value (odd in its sign) and its derivative. Not
+/// `spectral::display::srgb_decode`: that is an exercise, a stub in the student edition,
+/// and the card must diagnose whatever the student has left unfinished; the derivative is
+/// needed here too.
 fn srgb_decode(x: f64) -> (f64, f64) {
     let a = x.abs();
     let (y, dy) = if a <= 0.04045 {

@@ -767,12 +767,15 @@ fn the_card_s_diagnosis_names_each_mistake() {
     use raylemma::render::export::SceneFile;
     let dir = root().join("scenes/conformance");
     let file = SceneFile::load(&dir.join("01-direct-quad.toml")).unwrap();
-    let reference = Estimate::from_variance(
-        render::image::Image::read_exr(
-            &root().join("figures/reference/conformance/01-direct-quad.exr"),
+    let load = |name: &str| {
+        Estimate::from_variance(
+            render::image::Image::read_exr(
+                &root().join(format!("figures/reference/conformance/{name}.exr")),
+            )
+            .unwrap(),
         )
-        .unwrap(),
-    );
+    };
+    let reference = load("01-direct-quad");
     let level = raylemma::stats::sidak(raylemma::stats::test_alpha(), 5);
     // Four runs of a scene, and their estimate after `change` (pixel index, value).
     let render_runs = |scene: &render::scene::Scene| -> Vec<Vec<glam::DVec3>> {
@@ -864,14 +867,6 @@ fn the_card_s_diagnosis_names_each_mistake() {
         let mut s = box_file.scene.clone();
         s.settings.max_depth = d;
         s
-    };
-    let load = |name: &str| {
-        Estimate::from_variance(
-            render::image::Image::read_exr(
-                &root().join(format!("figures/reference/conformance/{name}.exr")),
-            )
-            .unwrap(),
-        )
     };
     let box_materials: Vec<String> = box_file.materials.iter().map(|(n, _)| n.clone()).collect();
     let at_two = box_depth(2);
