@@ -225,6 +225,10 @@ pub const IMAGE_LAST_NM: f64 = 830.0;
 pub const IMAGE_WIDTH: u32 = 451;
 /// Height of the images [`write_image`] draws (the source's drawings are 256 tall).
 pub const IMAGE_HEIGHT: u32 = 256;
+/// The tallest spectrum image [`parse_image`] reads (16x the source's drawings).
+pub const IMAGE_MAX_HEIGHT: u32 = 4096;
+/// What decoding one image may allocate: a 451 x 4096 image of 16-bit RGBA is 14.8 MB.
+const IMAGE_MAX_BYTES: u64 = 32 << 20;
 /// A pixel is dark when its luma (Rec. 601 weights, 0-255) is below this.
 pub const DARK_BELOW: u8 = 128;
 
@@ -236,7 +240,7 @@ pub fn image_wavelengths() -> Vec<f64> {
 }
 
 // ANCHOR: parse_image
-/// Reads a hand-drawn spectrum: a PNG (grey or colour, any height), 451 pixel columns
+/// Reads a hand-drawn spectrum: a PNG (grey or colour, at most [`IMAGE_MAX_HEIGHT`] pixels tall), 451 pixel columns
 /// for 380, 381, ..., 830 nm. The value at column `c`'s wavelength `380 + c` is the share
 /// of the column's pixels that are dark (luma below [`DARK_BELOW`]); where the dark
 /// pixels are in the column does not matter. Between columns the spectrum is linear.
@@ -244,14 +248,20 @@ pub fn image_wavelengths() -> Vec<f64> {
 ///
 /// # Errors
 /// A [`DataError`] on line 0 naming the file and the problem: the bytes are not a
-/// decodable image, the width is not 451 (with the width found), or no column has a
+/// decodable image, the width is not 451 (with the width found), the height is above
+/// [`IMAGE_MAX_HEIGHT`] (judged from the header, before decoding), or no column has a
 /// dark pixel (an empty curve has no distribution).
 pub fn parse_image(bytes: &[u8], file: &str) -> Result<Table, DataError> {
     let err = |problem: String| DataError::new(file, 0, problem);
-    let img = image::load_from_memory(bytes)
-        .map_err(|e| err(format!("cannot decode the image: {e}")))?
-        .to_luma8();
-    let (width, height) = img.dimensions();
+    let undecodable = |e: image::ImageError| err(format!("cannot decode the image: {e}"));
+    let reader = || {
+        image::ImageReader::new(std::io::Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|e| err(format!("cannot read the image: {e}")))
+    };
+    // The header's size is judged before a pixel is decoded: a few hundred bytes can
+    // declare an image of gigabytes.
+    let (width, height) = reader()?.into_dimensions().map_err(undecodable)?;
     if width != IMAGE_WIDTH {
         return Err(err(format!(
             "the image is {width} pixels wide; it must be {IMAGE_WIDTH}, one column per \
@@ -263,6 +273,21 @@ pub fn parse_image(bytes: &[u8], file: &str) -> Result<Table, DataError> {
             }
         )));
     }
+    if height > IMAGE_MAX_HEIGHT {
+        return Err(err(format!(
+            "the image is {height} pixels tall; at most {IMAGE_MAX_HEIGHT} are read (a \
+             column's value is a share of its pixels: {IMAGE_MAX_HEIGHT} already resolve \
+             {:.1e} of the peak)",
+            1.0 / f64::from(IMAGE_MAX_HEIGHT)
+        )));
+    }
+    let mut reader = reader()?;
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(IMAGE_WIDTH);
+    limits.max_image_height = Some(IMAGE_MAX_HEIGHT);
+    limits.max_alloc = Some(IMAGE_MAX_BYTES);
+    reader.limits(limits);
+    let img = reader.decode().map_err(undecodable)?.to_luma8();
     let values: Vec<f64> = (0..width)
         .map(|x| {
             let dark = (0..height)

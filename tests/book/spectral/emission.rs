@@ -776,6 +776,36 @@ fn bad_images_are_refused_with_file_and_reason() {
     assert!(write_image(&amber_led_table(), 0).is_err());
 }
 
+/// An image's size is judged from its header before a pixel is decoded: the crafted
+/// 78-byte files of `tests/data/png/` (made by its `make.py`) claim 451 x 10^9 and
+/// 451 x 4097 pixels and are refused with the height; the tallest image read,
+/// 451 x `IMAGE_MAX_HEIGHT`, is read. (Before, the whole image was decoded first, up to
+/// the `image` crate's default 512 MB; CI's fuzzer drove the tables target past its
+/// 100 MB limit.)
+#[test]
+fn an_image_taller_than_read_is_refused_before_decoding() {
+    let crafted = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/png");
+    for (name, height) in [
+        ("tall-451x1000000000.png", "1000000000"),
+        ("tall-451x4097.png", "4097"),
+    ] {
+        let e = load_image(&crafted.join(name)).unwrap_err();
+        assert!(
+            e.file.ends_with(name)
+                && e.problem
+                    .starts_with(&format!("the image is {height} pixels tall; at most 4096")),
+            "{e}"
+        );
+    }
+    let tallest = png_gray(
+        IMAGE_WIDTH,
+        IMAGE_MAX_HEIGHT,
+        |x, _| if x == 7 { 0 } else { 255 },
+    );
+    let t = parse_image(&tallest, "tallest.png").unwrap();
+    assert_eq!(t.values().iter().filter(|&&v| v == 1.0).count(), 1);
+}
+
 /// A drawing samples like the table it was drawn from, up to its quantisation: the
 /// sampler built from the shipped amber LED image has the same luminance estimate (its
 /// own Y, computed exactly) as the sampler built from the table, within 1 %.
