@@ -64,6 +64,14 @@ enum Cmd {
     /// stub, whose `cargo test` ends with a report card (--solutions: the solutions in
     /// place).
     Exercises(cmd::exercises::ExercisesArgs),
+    /// Print the report card of this crate's exercises (in the hand-out: where each one
+    /// stands), without building the tests. Exit status 0 if every exercise passes, 1 if
+    /// one does not.
+    Card(cmd::card::CardArgs),
+    /// Grade a worked hand-out: its exercise bodies in the edition's own code, judged by the
+    /// card, scored with the teacher's weights; writes grade.txt, grade.json, junit.xml and
+    /// Gradescope's results.json. Exit status 0 full marks, 1 less, 2 bad input.
+    Grade(cmd::grade::GradeArgs),
     /// Write a scene for other renderers: a Mitsuba 3 XML file, a pbrt-v4 scene file, or
     /// fully resolved JSON (defaults filled in, spectra on the 1 nm grid, transforms
     /// explicit).
@@ -91,6 +99,8 @@ fn main() -> ExitCode {
         Some(Cmd::Conformance(args)) => cmd::conformance::run(args),
         Some(Cmd::Check { command }) => cmd::check::run(command),
         Some(Cmd::Exercises(args)) => cmd::exercises::run(args),
+        Some(Cmd::Card(args)) => cmd::card::run(args),
+        Some(Cmd::Grade(args)) => cmd::grade::run(args),
         Some(Cmd::Export(args)) => cmd::export::run(args),
     })
 }

@@ -17,7 +17,7 @@ use raylemma::check::render::ladder::{self, LADDER, Rung, header};
 use raylemma::render::compare;
 use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
-use super::{CmdResult, Failure, Outcome, root};
+use super::{CmdResult, Failure, Outcome, root, xml_escape};
 
 /// The scene format the candidate reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -444,13 +444,6 @@ fn card_json(rows: &[Row], args: &ConformanceArgs) -> String {
         "first_failing_rung": first,
     });
     serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
-}
-
-fn xml_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 fn card_junit(rows: &[Row]) -> String {

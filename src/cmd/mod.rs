@@ -12,12 +12,14 @@
 //!   usage errors are 2 as well).
 
 pub mod book;
+pub mod card;
 pub mod check;
 pub mod compare;
 pub mod conformance;
 pub mod exercises;
 pub mod export;
 pub mod figures;
+pub mod grade;
 pub mod merge;
 pub mod render;
 
@@ -68,6 +70,14 @@ pub fn exit(result: CmdResult) -> ExitCode {
 /// `Ok(())` as [`Outcome::Done`], an error as bad input.
 pub fn done_or_bad_input(result: Result<(), String>) -> CmdResult {
     result.map(|()| Outcome::Done).map_err(Failure::BadInput)
+}
+
+/// `s` as XML text or attribute value (the JUnit files of `conformance` and `grade`).
+pub fn xml_escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// The project root: this binary is built from it.

@@ -15,6 +15,8 @@ use std::panic::{self, AssertUnwindSafe};
 use std::sync::{Once, mpsc};
 use std::time::Duration;
 
+use serde::{Deserialize, Serialize};
+
 use super::marker::Marker;
 use super::registry::{self, LATER};
 use crate::check::Verdict;
@@ -43,6 +45,17 @@ impl Status {
             Status::Waiting(_) => "waiting",
             Status::NotStarted => "not started",
             Status::Unchecked => "unchecked",
+        }
+    }
+
+    /// The lines the card prints under the row: the failed claims or the panic, what it
+    /// waits for; none if passing or not started.
+    pub fn details(&self) -> Vec<String> {
+        match self {
+            Status::Failing(lines) => lines.clone(),
+            Status::Waiting(other) => vec![format!("waiting for `{other}`")],
+            Status::Unchecked => vec!["no checks are registered for it".into()],
+            Status::Passing | Status::NotStarted => Vec::new(),
         }
     }
 }
@@ -190,10 +203,7 @@ pub fn run_with(markers: &[Marker], status: impl Fn(&Marker) -> Status) -> Card 
 /// [`registry::EXERCISES`] run on the crate's own functions, within [`LIMIT`]; a registry
 /// entry that no marker names is a problem of the card.
 pub fn run(markers: &[Marker]) -> Card {
-    let mut card = run_with(markers, |m| match registry::find(&m.name) {
-        Some(e) => judge_within(e.name, e.check, LIMIT),
-        None => Status::Unchecked,
-    });
+    let mut card = run_some(markers);
     card.problems = registry::EXERCISES
         .iter()
         .filter(|e| !markers.iter().any(|m| m.name == e.name))
@@ -205,6 +215,15 @@ pub fn run(markers: &[Marker]) -> Card {
         })
         .collect();
     card
+}
+
+/// The card of some of the crate's exercises, `markers`, each judged as [`run`] judges
+/// it, without comparing the registry with the markers (`raylemma card disc_polar`).
+pub fn run_some(markers: &[Marker]) -> Card {
+    run_with(markers, |m| match registry::find(&m.name) {
+        Some(e) => judge_within(e.name, e.check, LIMIT),
+        None => Status::Unchecked,
+    })
 }
 
 impl Card {
@@ -231,6 +250,54 @@ impl Card {
             }
         }
         format!("{} ({} exercises)", parts.join(", "), self.rows.len())
+    }
+}
+
+/// One row of the card as `raylemma card --json` writes it and the grader reads it
+/// (`super::grade`): the exercise, where it is, its status's label and the lines the
+/// printed card gives under it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Entry {
+    /// The exercise.
+    pub name: String,
+    /// Its chapter (`sampling/disc`).
+    pub chapter: String,
+    /// Its file.
+    pub file: String,
+    /// [`Status::label`].
+    pub status: String,
+    /// What is wrong (the failed claims, a panic, what it waits for); empty if passing or
+    /// not started.
+    pub details: Vec<String>,
+}
+
+/// The card as data: [`Card::entries`] and the card's problems.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Report {
+    /// One entry per exercise, in the book's order.
+    pub rows: Vec<Entry>,
+    /// Registry entries with no marker (mistakes of the crate).
+    pub problems: Vec<String>,
+}
+
+impl Card {
+    /// The card as data, with the lines its text gives under each row.
+    pub fn report(&self) -> Report {
+        let rows = self
+            .rows
+            .iter()
+            .map(|r| Entry {
+                name: r.name.clone(),
+                chapter: r.chapter.clone(),
+                file: r.file.clone(),
+                status: r.status.label().to_string(),
+                details: r.status.details(),
+            })
+            .collect();
+        Report {
+            rows,
+            problems: self.problems.clone(),
+        }
     }
 }
 
@@ -274,15 +341,8 @@ impl fmt::Display for Card {
                 r.name,
                 r.chapter
             )?;
-            match &r.status {
-                Status::Failing(lines) => {
-                    for line in lines {
-                        writeln!(out, "      {line}")?;
-                    }
-                }
-                Status::Waiting(other) => writeln!(out, "      waiting for `{other}`")?,
-                Status::Unchecked => writeln!(out, "      no checks are registered for it")?,
-                _ => {}
+            for line in r.status.details() {
+                writeln!(out, "      {line}")?;
             }
         }
         for p in &self.problems {

@@ -50,6 +50,8 @@ pub enum Kind {
     HandOut,
     /// The solutions in place.
     Solutions,
+    /// A submission's exercise bodies in the edition's own code (`super::grade::splice`).
+    Graded,
 }
 
 impl Kind {
@@ -58,6 +60,7 @@ impl Kind {
         match self {
             Kind::HandOut => "hand-out",
             Kind::Solutions => "solutions",
+            Kind::Graded => "graded",
         }
     }
 }
@@ -373,6 +376,9 @@ pub fn readme(exercises: &[Marker], kind: Kind) -> String {
         }
         Kind::Solutions => {
             "the **solutions**: each function in the table below is written, and `cargo test` passes every exercise (for teachers and for CI)"
+        }
+        Kind::Graded => {
+            "a **graded submission**, written by `raylemma grade`: the edition's own code, with each function in the table below as the submission wrote it"
         }
     };
     README

@@ -8,10 +8,13 @@
 //! * [`edition`]: the student edition, a self-contained crate (`raylemma exercises DIR`,
 //!   with `--solutions` for the teachers' copy);
 //! * [`registry`]: which checkers judge each exercise, and what each one unlocks;
-//! * [`card`]: the report card that the edition's `cargo test` prints at its end.
+//! * [`card`]: the report card that the edition's `cargo test` prints at its end;
+//! * [`grade`]: a submission's exercise bodies put into the edition's own code, and its
+//!   score from the teacher's weights (`raylemma grade`).
 
 pub mod card;
 pub mod edition;
+pub mod grade;
 pub mod marker;
 pub mod registry;
 pub mod scrub;

@@ -40,8 +40,27 @@ pub fn stub_line(indent: &str, name: &str) -> String {
 /// `text` (the file of `markers`, which must all be in it) with every marked body
 /// replaced by its stub, and the lines removed. Line endings are kept as they were.
 pub fn stub_file(text: &str, markers: &[Marker]) -> (String, Vec<Removed>) {
+    replace_bodies(text, markers, |m| vec![stub_line(&m.indent, &m.name)])
+}
+
+/// `text` (the file of `markers`, which must all be in it) with every marked body
+/// replaced by the lines `body` gives for its marker (the stub for the hand-out, a
+/// submission's body for the grader, `super::grade`), and the lines removed. Everything
+/// outside the bodies is kept as it was, line endings included; the `fn` line gets
+/// `#[allow(unused_variables)]` (a stub uses none of its parameters).
+pub fn replace_bodies(
+    text: &str,
+    markers: &[Marker],
+    body: impl Fn(&Marker) -> Vec<String>,
+) -> (String, Vec<Removed>) {
     let mut out = String::with_capacity(text.len());
     let mut removed = Vec::new();
+    let put = |out: &mut String, m: &Marker, ending: &str| {
+        for line in body(m) {
+            out.push_str(&line);
+            out.push_str(if ending.is_empty() { "\n" } else { ending });
+        }
+    };
     for (i, line) in text.split_inclusive('\n').enumerate() {
         let number = i + 1;
         let ending = if line.ends_with("\r\n") {
@@ -59,17 +78,15 @@ pub fn stub_file(text: &str, markers: &[Marker]) -> (String, Vec<Removed>) {
             out.push_str(&format!("{}#[allow(unused_variables)]{ending}", m.indent));
         }
         if number == m.close && m.close == m.signature_end + 1 {
-            // An empty body: the stub still goes in.
-            out.push_str(&stub_line(&m.indent, &m.name));
-            out.push_str(if ending.is_empty() { "\n" } else { ending });
+            // An empty body: the new one still goes in.
+            put(&mut out, m, ending);
         }
         if number <= m.signature_end || number >= m.close {
             out.push_str(line);
             continue;
         }
         if number == m.signature_end + 1 {
-            out.push_str(&stub_line(&m.indent, &m.name));
-            out.push_str(if ending.is_empty() { "\n" } else { ending });
+            put(&mut out, m, ending);
         }
         removed.push(Removed {
             exercise: m.name.clone(),

@@ -1,0 +1,59 @@
+//! `raylemma card`: the report card of the exercises of this crate (`src/exercise/card.rs`),
+//! without building the test binary: in the hand-out, the quickest way to see where each
+//! exercise stands after an edit. `--json FILE` writes it as data too (what `raylemma
+//! grade` reads).
+
+use std::path::PathBuf;
+
+use clap::Args;
+use raylemma::exercise::{card, edition};
+
+use super::{CmdResult, Failure, Outcome, root};
+
+/// `raylemma card`.
+#[derive(Args, Debug)]
+pub struct CardArgs {
+    /// Judge only these exercises (names as in the card: `disc_polar`,
+    /// `Sellmeier::index`); the others are left out of the card.
+    #[arg(value_name = "EXERCISE")]
+    pub only: Vec<String>,
+    /// Also write the card as JSON to this file.
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
+}
+
+/// Runs `raylemma card`: 0 if every exercise judged passes, 1 if one does not, 2 for an
+/// unknown exercise, markers that cannot be read or JSON that cannot be written.
+pub fn run(args: &CardArgs) -> CmdResult {
+    let mut markers =
+        edition::markers_under(&root()).map_err(|e| Failure::BadInput(e.to_string()))?;
+    if let Some(unknown) = args
+        .only
+        .iter()
+        .find(|n| !markers.iter().any(|m| m.name == **n))
+    {
+        let names: Vec<&str> = markers.iter().map(|m| m.name.as_str()).collect();
+        return Err(Failure::BadInput(format!(
+            "no exercise is called `{unknown}`; the exercises are: {}",
+            names.join(", ")
+        )));
+    }
+    let card = if args.only.is_empty() {
+        card::run(&markers)
+    } else {
+        markers.retain(|m| args.only.contains(&m.name));
+        card::run_some(&markers)
+    };
+    println!("{card}");
+    if let Some(path) = &args.json {
+        let text = serde_json::to_string_pretty(&card.report())
+            .map_err(|e| Failure::Failed(format!("cannot write the card as JSON: {e}")))?;
+        raylemma::output::write_file(path, (text + "\n").as_bytes())
+            .map_err(|e| Failure::BadInput(e.to_string()))?;
+    }
+    Ok(if card.passed() {
+        Outcome::Done
+    } else {
+        Outcome::Negative
+    })
+}

@@ -1,0 +1,271 @@
+//! Grading a submission: the exercises' bodies of a worked hand-out put into the
+//! edition's own code, judged by the report card, scored with the teacher's weights.
+//! Chapter: *Coursework* (`chapters/coursework.md`); run by `raylemma grade SUBMISSION`.
+//!
+//! **Only the bodies count.** [`splice`] takes every file of this crate as the edition
+//! ships it and replaces each marked body with the lines between the same exercise's
+//! markers in the submission. Whatever else the submission changed is the edition's
+//! again: a helper the checks call (the disc's `disc_pdf`, whose change would make a
+//! non-uniform `disc_polar` look uniform), a test, a checker, the registry, a `use` line.
+//! So a body must say everything it needs (a `use` inside the body, a helper as a nested
+//! `fn`). An exercise whose markers the submission lost or broke is graded as its stub,
+//! with a note that says why.
+//!
+//! **Points.** [`Weights`] come from one TOML file the teacher writes:
+//!
+//! ```toml
+//! default = 1          # points of an exercise the table below does not name
+//! [points]
+//! disc_polar = 2
+//! "Sellmeier::index" = 3
+//! ```
+//!
+//! An exercise scores its points when it passes and 0 otherwise ([`score`]); `raylemma
+//! grade` writes the grade as JSON, JUnit XML and Gradescope's `results.json`
+//! (`src/cmd/grade.rs`).
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use serde::Deserialize;
+
+use super::card::{Entry, Report};
+use super::edition::File;
+use super::marker::{self, Marker};
+use super::stub;
+use crate::data::DataError;
+
+/// The body of `m` in `text` (a file of the submission whose markers are `theirs`): the
+/// lines strictly between its signature and its closing `}`, or why there is none.
+fn body_of(m: &Marker, text: &str, theirs: &[Marker]) -> Result<Vec<String>, String> {
+    let Some(t) = theirs.iter().find(|t| t.name == m.name) else {
+        return Err(format!(
+            "{}: the markers of `{}` are not in the submission's file: graded as not started",
+            m.file, m.name
+        ));
+    };
+    Ok(text
+        .lines()
+        .skip(t.signature_end)
+        .take(t.close - t.signature_end - 1)
+        .map(str::to_string)
+        .collect())
+}
+
+/// This crate's files `sources` with every exercise of `exercises` given the body it has
+/// in the submission under `submission`, and one note per exercise graded as its stub
+/// because the submission's file is missing, unreadable or lost the exercise's markers
+/// (`chapters` are the book's, to parse the submission's markers against).
+pub fn splice(
+    sources: Vec<File>,
+    exercises: &[Marker],
+    chapters: &[String],
+    submission: &Path,
+) -> (Vec<File>, Vec<String>) {
+    let mut notes = Vec::new();
+    let mut out = Vec::with_capacity(sources.len());
+    for mut file in sources {
+        let mine: Vec<Marker> = exercises
+            .iter()
+            .filter(|m| m.file == file.path)
+            .cloned()
+            .collect();
+        if mine.is_empty() {
+            out.push(file);
+            continue;
+        }
+        let theirs = std::fs::read(submission.join(&file.path))
+            .map_err(|e| format!("{}: cannot read the submission's copy: {e}", file.path))
+            .and_then(|bytes| {
+                String::from_utf8(bytes).map_err(|_| format!("{}: not UTF-8", file.path))
+            })
+            .and_then(|text| {
+                let markers = marker::parse(&file.path, &text, chapters)
+                    .map_err(|e| format!("the submission's markers are malformed: {e}"))?;
+                Ok((text, markers))
+            });
+        let mut bodies = BTreeMap::new();
+        match &theirs {
+            Ok((text, markers)) => {
+                for m in &mine {
+                    match body_of(m, text, markers) {
+                        Ok(body) => {
+                            bodies.insert(m.name.clone(), body);
+                        }
+                        Err(note) => notes.push(note),
+                    }
+                }
+            }
+            Err(e) => notes.push(format!(
+                "{e}: its exercises ({}) are graded as not started",
+                mine.iter()
+                    .map(|m| m.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )),
+        }
+        let text = String::from_utf8_lossy(&file.bytes).into_owned();
+        let (spliced, _) = stub::replace_bodies(&text, &mine, |m| {
+            bodies
+                .get(&m.name)
+                .cloned()
+                .unwrap_or_else(|| vec![stub::stub_line(&m.indent, &m.name)])
+        });
+        file.bytes = spliced.into_bytes();
+        out.push(file);
+    }
+    (out, notes)
+}
+
+/// Points per exercise, from the teacher's weights file (see the module's documentation).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Weights {
+    /// The points of an exercise `points` does not name.
+    pub default: f64,
+    /// Points by exercise name.
+    pub points: BTreeMap<String, f64>,
+}
+
+impl Default for Weights {
+    /// One point an exercise.
+    fn default() -> Self {
+        Weights {
+            default: 1.0,
+            points: BTreeMap::new(),
+        }
+    }
+}
+
+impl Weights {
+    /// The points of the exercise `name`.
+    pub fn of(&self, name: &str) -> f64 {
+        self.points.get(name).copied().unwrap_or(self.default)
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawWeights {
+    default: Option<toml::Spanned<f64>>,
+    #[serde(default)]
+    points: BTreeMap<toml::Spanned<String>, toml::Spanned<f64>>,
+}
+
+/// Reads the weights file `text` (named `file` in errors) for the exercises `exercises`.
+///
+/// # Errors
+/// A [`DataError`] with the line: not TOML or a key other than `default` and `points`,
+/// points that are negative or not finite, or an exercise name no marker has (a typo
+/// would silently give the default).
+pub fn parse_weights(text: &str, file: &str, exercises: &[Marker]) -> Result<Weights, DataError> {
+    let line = |offset: usize| crate::data::line_of(text, offset);
+    let raw: RawWeights = toml::from_str(text).map_err(|e| {
+        let at = e.span().map_or(0, |s| line(s.start));
+        DataError::new(file, at, e.message().to_string())
+    })?;
+    let checked = |v: &toml::Spanned<f64>, what: &str| {
+        let x = *v.get_ref();
+        if x.is_finite() && x >= 0.0 {
+            Ok(x)
+        } else {
+            Err(DataError::new(
+                file,
+                line(v.span().start),
+                format!("{what} must be a number of points >= 0, not {x}"),
+            ))
+        }
+    };
+    let default = match &raw.default {
+        Some(v) => checked(v, "`default`")?,
+        None => 1.0,
+    };
+    let mut points = BTreeMap::new();
+    for (name, v) in &raw.points {
+        let name_text = name.get_ref();
+        if !exercises.iter().any(|m| m.name == *name_text) {
+            let mut known: Vec<&str> = exercises.iter().map(|m| m.name.as_str()).collect();
+            known.sort_unstable();
+            return Err(DataError::new(
+                file,
+                line(name.span().start),
+                format!(
+                    "no exercise is called `{name_text}`; the exercises are: {}",
+                    known.join(", ")
+                ),
+            ));
+        }
+        points.insert(name_text.clone(), checked(v, &format!("`{name_text}`"))?);
+    }
+    Ok(Weights { default, points })
+}
+
+/// One exercise's grade.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Graded {
+    /// The card's row.
+    pub entry: Entry,
+    /// Points scored: all of `max` if it passes, else 0.
+    pub score: f64,
+    /// Points it is worth.
+    pub max: f64,
+}
+
+/// A submission's grade.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grade {
+    /// One per exercise, in the book's order.
+    pub rows: Vec<Graded>,
+    /// What the grader noted (exercises graded as stubs, a build that failed).
+    pub notes: Vec<String>,
+}
+
+impl Grade {
+    /// Points scored.
+    pub fn score(&self) -> f64 {
+        self.rows.iter().map(|r| r.score).sum()
+    }
+    /// Points possible.
+    pub fn max(&self) -> f64 {
+        self.rows.iter().map(|r| r.max).sum()
+    }
+}
+
+/// The grade of the card `report` with `weights`, and the grader's `notes`.
+pub fn score(report: &Report, weights: &Weights, notes: Vec<String>) -> Grade {
+    let rows = report
+        .rows
+        .iter()
+        .map(|e| {
+            let max = weights.of(&e.name);
+            Graded {
+                entry: e.clone(),
+                score: if e.status == "passing" { max } else { 0.0 },
+                max,
+            }
+        })
+        .collect();
+    let mut notes = notes;
+    notes.extend(report.problems.iter().cloned());
+    Grade { rows, notes }
+}
+
+/// The grade of a submission that did not build: every exercise 0, the compiler's words
+/// (`why`) as the note and as every exercise's detail.
+pub fn unbuilt(exercises: &[Marker], weights: &Weights, why: &str, notes: Vec<String>) -> Grade {
+    let report = Report {
+        rows: exercises
+            .iter()
+            .map(|m| Entry {
+                name: m.name.clone(),
+                chapter: m.chapter.clone(),
+                file: m.file.clone(),
+                status: "failing".into(),
+                details: vec!["the submission does not compile (see the grade's notes)".into()],
+            })
+            .collect(),
+        problems: Vec::new(),
+    };
+    let mut notes = notes;
+    notes.push(format!("the submission does not compile:\n{why}"));
+    score(&report, weights, notes)
+}

@@ -1,0 +1,66 @@
+"""Writes the grader's planted submissions (chapter Coursework, "Grading"): copies of the
+solutions edition SOLUTIONS with one kind of mistake each, into OUT/NAME, and prints what
+`raylemma grade` must give each with tools/grade/weights.toml (max 27 points: 22
+exercises at 1, disc_polar at 3, srgb_encode at 2).
+
+  planted   disc_polar samples r = u1 (not uniform on the disc) and srgb_encode is a
+            pure 1/2.2 power: 22 of 27, those two failing;
+  looping   disc_polar never returns: 24 of 27, disc_polar failing for its time limit;
+  loophole  disc_polar samples r = u1 and the same file's disc_pdf (1/(2 pi r)) and
+            disc_polar_invert are changed to match, so that the submission's own card
+            passes it: the grader puts back the edition's disc_pdf, 24 of 27.
+
+Usage: python3 tools/grade/cases.py SOLUTIONS OUT   (standard library only)
+"""
+import json
+import pathlib
+import shutil
+import sys
+
+solutions, out = map(pathlib.Path, sys.argv[1:3])
+
+
+def edit(root: pathlib.Path, path: str, old: str, new: str) -> None:
+    f = root / path
+    text = f.read_text()
+    if text.count(old) != 1:
+        sys.exit(f"{f}: expected exactly one {old!r} to replace; the solutions changed")
+    f.write_text(text.replace(old, new))
+
+
+def case(name: str) -> pathlib.Path:
+    dest = out / name
+    if dest.exists():
+        shutil.rmtree(dest)
+    shutil.copytree(solutions, dest, ignore=shutil.ignore_patterns("target"))
+    return dest
+
+
+NON_UNIFORM = ("    let r = u.x.sqrt();\n    let phi = consts::TAU * u.y;",
+               "    let r = u.x;\n    let phi = consts::TAU * u.y;")
+DISC = "src/sampling/disc.rs"
+
+d = case("planted")
+edit(d, DISC, *NON_UNIFORM)
+edit(d, "src/spectral/display.rs", "1.055 * x.powf(1.0 / 2.4) - 0.055", "x.powf(1.0 / 2.2)")
+
+d = case("looping")
+edit(d, DISC, "    let r = u.x.sqrt();\n    let phi = consts::TAU * u.y;\n    V3::new(r * phi.cos(), r * phi.sin(), 0.0)",
+     "    loop {\n        std::hint::spin_loop();\n    }")
+
+d = case("loophole")
+edit(d, DISC, *NON_UNIFORM)
+edit(d, DISC, "    V2::new(p.x * p.x + p.y * p.y, phi / consts::TAU)",
+     "    V2::new((p.x * p.x + p.y * p.y).sqrt(), phi / consts::TAU)")
+edit(d, DISC, "    if p.x * p.x + p.y * p.y <= 1.0 {\n        DISC_PDF",
+     "    if p.x * p.x + p.y * p.y <= 1.0 {\n        1.0 / (consts::TAU * (p.x * p.x + p.y * p.y).sqrt())")
+
+expected = {
+    "solutions": {"score": 27, "failing": []},
+    "handout": {"score": 0, "failing": []},
+    "planted": {"score": 22, "failing": ["disc_polar", "srgb_encode"]},
+    "looping": {"score": 24, "failing": ["disc_polar"]},
+    "loophole": {"score": 24, "failing": ["disc_polar"]},
+}
+(out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
+print(f"planted submissions written to {out}: planted, looping, loophole")
