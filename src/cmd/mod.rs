@@ -89,13 +89,19 @@ pub fn root() -> PathBuf {
 /// compiling it first if needed (cargo shows its own progress). The tool follows the same
 /// exit-status rule: its status 1 or 2 is passed on ([`Failure::Tool`]).
 pub fn run_tool(package: &str, args: &[&str]) -> CmdResult {
+    run_tool_on(package, args, &root())
+}
+
+/// [`run_tool`] on the project at `project` (`--root project`; the tool is still this
+/// workspace's): `exercises --book` builds an edition's book with it.
+pub fn run_tool_on(package: &str, args: &[&str], project: &Path) -> CmdResult {
     let root = root();
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let status = Command::new(&cargo)
         .args(["run", "--release", "--quiet", "-p", package, "--"])
         .args(args)
         .arg("--root")
-        .arg(&root)
+        .arg(project)
         .current_dir(&root)
         .status()
         .map_err(|e| {

@@ -32,6 +32,12 @@ pub const SHIPPED: &[&str] = &[
     "scenes",
     "figures",
     "tools/book",
+    // What the chapters include or style themselves with, so that the edition's own book
+    // builds: the programs of *Checks from any language*, the grader's example weights,
+    // the book's style sheets.
+    "tools/examples",
+    "tools/grade/weights.toml",
+    "assets/book",
     // The small crates the library and its tests depend on by path.
     "tools/output",
     "tools/values",
