@@ -1,7 +1,9 @@
-//! `raylemma card`: the report card of the exercises of this crate (`src/exercise/card.rs`),
-//! without building the test binary: in the hand-out, the quickest way to see where each
-//! exercise stands after an edit. `--json FILE` writes it as data too (what `raylemma
-//! grade` reads).
+//! `raylemma card [EXERCISE...]`: the report card of the exercises of this crate
+//! (`src/exercise/card.rs`), without building the test binary: in the hand-out, the
+//! quickest way to see where each exercise stands after an edit. With exercises named, only
+//! those are judged, and each failing one's verdicts are printed in full after the card
+//! (every claim in words, its first and worst failing inputs) with the chapter to reread.
+//! `--json FILE` writes the card as data too (what `raylemma grade` reads).
 
 use std::path::PathBuf;
 
@@ -45,6 +47,23 @@ pub fn run(args: &CardArgs) -> CmdResult {
         card::run_some(&markers)
     };
     println!("{card}");
+    for row in card.rows.iter().filter(|_| !args.only.is_empty()) {
+        let verdicts = card::failed_verdicts(&row.name);
+        if verdicts.is_empty() {
+            continue;
+        }
+        println!(
+            "\n--- {} is {}: reread chapter {} (chapters/{}.md; in the built book, book/{}.html)",
+            row.name,
+            row.status.label(),
+            row.chapter,
+            row.chapter,
+            row.chapter
+        );
+        for v in verdicts {
+            print!("{v}");
+        }
+    }
     if let Some(path) = &args.json {
         let text = serde_json::to_string_pretty(&card.report())
             .map_err(|e| Failure::Failed(format!("cannot write the card as JSON: {e}")))?;

@@ -113,22 +113,55 @@ pub const LIMIT: Duration = Duration::from_secs(30);
 /// by then are failing, and their thread is left to run (a loop cannot be stopped from
 /// outside; the process ends it when it exits).
 pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) -> Status {
-    let (done, result) = mpsc::channel();
     let owned = name.to_string();
-    let spawned = std::thread::Builder::new()
+    match within(name, limit, move || judge(&owned, &check)) {
+        Ok(status) => status,
+        Err(why) => Status::Failing(vec![why]),
+    }
+}
+
+/// `f` on a thread named for the exercise `name`, given at most `limit`; why not, if the
+/// thread could not start or `f` did not return in time (its thread is then left to run).
+fn within<T: Send + 'static>(
+    name: &str,
+    limit: Duration,
+    f: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, String> {
+    let (done, result) = mpsc::channel();
+    std::thread::Builder::new()
         .name(format!("exercise {name}"))
         .spawn(move || {
-            let _ = done.send(judge(&owned, &check));
-        });
-    if let Err(e) = spawned {
-        return Status::Failing(vec![format!("its checks could not start a thread: {e}")]);
-    }
-    result.recv_timeout(limit).unwrap_or_else(|_| {
-        Status::Failing(vec![format!(
+            let _ = done.send(f());
+        })
+        .map_err(|e| format!("its checks could not start a thread: {e}"))?;
+    result.recv_timeout(limit).map_err(|_| {
+        format!(
             "its checks did not return within {} s: a loop that never ends (a rejection loop that never accepts, a `while` whose condition never changes); the other exercises were judged on",
             limit.as_secs()
-        )])
+        )
     })
+}
+
+/// The full verdicts of the exercise `name`'s checks that fail (each with its claim in
+/// words and its first and worst failing inputs), run as [`run`] runs them; empty if they
+/// all pass, the exercise is not registered, or its checks panic or do not return within
+/// [`LIMIT`] (the card's line says which).
+pub fn failed_verdicts(name: &str) -> Vec<Verdict> {
+    let Some(e) = registry::find(name) else {
+        return Vec::new();
+    };
+    let check = e.check;
+    within(name, LIMIT, move || {
+        quiet_hook();
+        QUIET.with(|q| q.set(true));
+        let verdicts = panic::catch_unwind(check).unwrap_or_default();
+        QUIET.with(|q| q.set(false));
+        verdicts
+    })
+    .unwrap_or_default()
+    .into_iter()
+    .filter(|v| !v.passed())
+    .collect()
 }
 
 /// The status of the exercise `name` from running `check` (with panics caught).
@@ -373,7 +406,7 @@ impl fmt::Display for Card {
         writeln!(out, "total: {}", self.total())?;
         write!(
             out,
-            "one chapter's tests: cargo test --test book CHAPTER (e.g. sampling::disc); this card alone: cargo test --test book report_card"
+            "one exercise's full verdict, its claims in words and the inputs that fail them: cargo run -- card NAME (e.g. disc_polar); one chapter's tests: cargo test --test book CHAPTER (e.g. sampling::disc)"
         )
     }
 }

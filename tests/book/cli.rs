@@ -656,3 +656,54 @@ fn conformance_passes_raylemma_and_points_at_a_fault() {
         "{card}"
     );
 }
+
+/// `card` and `grade` refuse what they cannot use with exit status 2 and the reason: an
+/// exercise that does not exist, a folder that is not an edition, a weights file with an
+/// exercise that does not exist (its line), before anything is built or written. (The
+/// grading itself builds a crate, and is run by CI on five submissions.)
+#[test]
+fn card_and_grade_refuse_bad_input_before_building_anything() {
+    refused(
+        &raylemma(&["card", "disc_polr"]),
+        &["no exercise is called `disc_polr`", "disc_polar"],
+    );
+    let dir = std::env::temp_dir().join(format!("raylemma-grade-cli-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("submission")).unwrap();
+    let submission = dir.join("submission");
+    let out = dir.join("grade");
+    let args = |extra: &[&str]| {
+        let mut a = vec![
+            "grade".to_string(),
+            submission.display().to_string(),
+            "--out".into(),
+            out.display().to_string(),
+            "--work".into(),
+            dir.join("work").display().to_string(),
+        ];
+        a.extend(extra.iter().map(|s| s.to_string()));
+        a
+    };
+    let run = |a: Vec<String>| raylemma(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    refused(
+        &run(args(&[])),
+        &["not a raylemma edition", ".raylemma-edition"],
+    );
+    std::fs::write(
+        submission.join(".raylemma-edition"),
+        "raylemma student edition: hand-out\n",
+    )
+    .unwrap();
+    let weights = dir.join("weights.toml");
+    std::fs::write(&weights, "default = 1\n[points]\ndisc_polr = 2\n").unwrap();
+    let w = weights.display().to_string();
+    refused(
+        &run(args(&["--weights", &w])),
+        &["weights.toml:3:", "no exercise is called `disc_polr`"],
+    );
+    assert!(
+        !out.exists() && !dir.join("work").exists(),
+        "something was written"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -103,6 +103,21 @@ pub fn watchdog() {
     });
 }
 
+/// Makes the panic of a stub (`raylemma::exercise::todo`) one line in the test's output,
+/// without the backtrace `RUST_BACKTRACE` would add; every other panic is left to the hook
+/// that was there (libtest's capture takes either into the failing test's output).
+pub fn one_line_per_stub() {
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let message = raylemma::exercise::panic_message(info.payload());
+        if raylemma::exercise::not_started(&message).is_some() {
+            eprintln!("{message}; the report card at the end of the run lists every exercise");
+        } else {
+            previous(info);
+        }
+    }));
+}
+
 /// Set once the watchdog has printed the card.
 static PRINTED: OnceLock<()> = OnceLock::new();
 
