@@ -15,6 +15,11 @@ pub struct FiguresArgs {
     /// Fewer samples and shorter timings (for CI); figures keep their shape.
     #[arg(long)]
     pub quick: bool,
+    /// Measure the timing tables again on this machine; otherwise they are kept as
+    /// committed, each naming the machine it was measured on (`--only` remakes what it
+    /// names either way).
+    #[arg(long)]
+    pub timings: bool,
 }
 
 /// `raylemma references`.
@@ -41,6 +46,9 @@ pub fn figures(args: &FiguresArgs) -> CmdResult {
     if args.quick {
         cmd.push("--quick");
     }
+    if args.timings {
+        cmd.push("--timings");
+    }
     run_tool("raylemma-figures", &cmd)
 }
 
@@ -61,7 +69,11 @@ pub fn references(args: &ReferencesArgs) -> CmdResult {
 
 /// With no subcommand: the figures, the references, then the book.
 pub fn everything(quick: bool) -> CmdResult {
-    figures(&FiguresArgs { only: None, quick })?;
+    figures(&FiguresArgs {
+        only: None,
+        quick,
+        timings: false,
+    })?;
     references(&ReferencesArgs {
         force: false,
         check: false,

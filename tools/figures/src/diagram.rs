@@ -1752,6 +1752,7 @@ mod tests {
     fn every_diagram_is_a_scalable_svg_with_alt_text_and_legible_text() {
         let settings = Settings {
             quick: true,
+            timings: false,
             root: PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../.."),
         };
         for o in outputs() {

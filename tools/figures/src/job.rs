@@ -26,6 +26,9 @@ use crate::{
 pub struct Settings {
     /// Fewer samples and shorter timings (for CI); the figures keep their shape.
     pub quick: bool,
+    /// Measure the timing outputs again on this machine ([`write_outputs`] keeps them
+    /// otherwise, outside quick mode).
+    pub timings: bool,
     /// The project root: `scenes/`, `data/` and `figures/` are found under it.
     pub root: PathBuf,
 }
@@ -210,6 +213,29 @@ pub fn stage_values(
     Ok(())
 }
 
+/// Figures with a time axis of their own, timed in the same run as a table (the table's
+/// record key): kept and remade with it, so that a figure and its table always show one
+/// machine.
+const TIMED_WITH: [(&str, &str); 2] = [
+    ("fresnel_speed.svg", "fresnel_speed"),
+    ("roulette_efficiency.svg", "roulette_efficiency"),
+];
+
+/// The machine of a timing output to keep rather than measure again: one whose committed
+/// record (`before`) names a machine and was not made in quick mode, in a full run without
+/// `--timings`. A timing is a fact about the machine its caption names; measured again on
+/// another, it could turn a claim the book makes about it (one routine faster than
+/// another) from true to false, and fail the build of a newcomer's first `cargo run
+/// --release`. So it is remade only when asked (`--timings`, or `--only` naming it), in
+/// quick mode (CI runs the code that measures it; a failed claim is then a warning), or
+/// when its file is gone.
+fn kept_timing(before: Option<&Entry>, settings: &Settings) -> Option<String> {
+    if settings.quick || settings.timings {
+        return None;
+    }
+    before.filter(|e| !e.quick)?.machine.clone()
+}
+
 /// Produces `outputs` and writes them into `dir` as one set of files
 /// ([`raylemma::output::FileSet`]), with their records in `figures/values.json`: each is
 /// staged beside its destination, and they are renamed into place only when all succeeded.
@@ -250,6 +276,20 @@ pub fn write_outputs(
         {
             say(format!(
                 "    kept    {} (the code it measures is unchanged; delete the file to remake it)",
+                o.file
+            ));
+            bar.inc(1);
+            continue;
+        }
+        let table = TIMED_WITH
+            .iter()
+            .find(|(figure, _)| *figure == o.file)
+            .map_or(stem(o.file), |(_, table)| table);
+        if let Some(machine) = kept_timing(before.get(table), settings)
+            && path.exists()
+        {
+            say(format!(
+                "    kept    {} (timings of machine {machine}; --timings measures them on this one)",
                 o.file
             ));
             bar.inc(1);
@@ -308,8 +348,45 @@ mod tests {
     fn settings() -> Settings {
         Settings {
             quick: true,
+            timings: false,
             root: PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../.."),
         }
+    }
+
+    #[test]
+    fn a_timing_is_kept_unless_asked_for_in_quick_mode_or_with_timings() {
+        let timing = Entry {
+            file: "t_speed.md".into(),
+            machine: Some("3cfca2e9".into()),
+            quick: false,
+            values: Default::default(),
+            claims: Default::default(),
+        };
+        let full = Settings {
+            quick: false,
+            ..settings()
+        };
+        assert_eq!(
+            kept_timing(Some(&timing), &full).as_deref(),
+            Some("3cfca2e9")
+        );
+        let timings = Settings {
+            timings: true,
+            ..full.clone()
+        };
+        assert_eq!(kept_timing(Some(&timing), &timings), None);
+        assert_eq!(kept_timing(Some(&timing), &settings()), None);
+        let quick_made = Entry {
+            quick: true,
+            ..timing.clone()
+        };
+        assert_eq!(kept_timing(Some(&quick_made), &full), None);
+        let untimed = Entry {
+            machine: None,
+            ..timing
+        };
+        assert_eq!(kept_timing(Some(&untimed), &full), None);
+        assert_eq!(kept_timing(None, &full), None);
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! compile no plotting code. `cargo run --release` at the project root runs this tool (see
 //! `raylemma --help`); it can also be run directly:
 //!
-//! `cargo run --release -p raylemma-figures -- [--quick] [--root DIR] figures [--only NAME]`
+//! `cargo run --release -p raylemma-figures -- [--quick] [--timings] [--root DIR] figures [--only NAME]`
 //! `cargo run --release -p raylemma-figures -- [--quick] [--root DIR] references`
 
 mod job;
@@ -55,6 +55,10 @@ struct Cli {
     /// Fewer samples and shorter timings (for CI); figures keep their shape.
     #[arg(long, global = true)]
     quick: bool,
+    /// Measure the timing tables again on this machine (otherwise a full run keeps the
+    /// committed ones, each naming the machine it was measured on).
+    #[arg(long, global = true)]
+    timings: bool,
     /// The project root (default: the one this tool was built from).
     #[arg(long, global = true)]
     root: Option<PathBuf>,
@@ -98,6 +102,8 @@ fn main() -> ExitCode {
     let root = std::fs::canonicalize(&root).unwrap_or(root);
     let settings = Settings {
         quick: cli.quick,
+        // An output named by `--only` is made, whatever it measures.
+        timings: cli.timings || matches!(&cli.command, Cmd::Figures { only: Some(_) }),
         root,
     };
 
