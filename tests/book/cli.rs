@@ -306,8 +306,7 @@ fn export_writes_every_format_and_refuses_bad_input_without_touching_earlier_fil
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     // A bad scene names its file and line.
     let cornell =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell.toml"))
-            .unwrap();
+        std::fs::read_to_string(crate::support::root().join("scenes/cornell.toml")).unwrap();
     let line = cornell
         .lines()
         .position(|l| l.starts_with("spp ="))
@@ -376,7 +375,7 @@ fn export_writes_every_format_and_refuses_bad_input_without_touching_earlier_fil
 /// reader allocates anything the header asks for (chapter *Bad input*).
 #[test]
 fn compare_refuses_headers_that_claim_what_the_file_cannot_hold() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/exr");
+    let dir = crate::support::root().join("tests/data/exr");
     for (file, says) in [
         (
             "huge-100000x100000.exr",
@@ -667,8 +666,7 @@ fn card_and_grade_refuse_bad_input_before_building_anything() {
         &raylemma(&["card", "disc_polr"]),
         &["no exercise is called `disc_polr`", "disc_polar"],
     );
-    let dir = std::env::temp_dir().join(format!("raylemma-grade-cli-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::support::scratch("grade-cli");
     std::fs::create_dir_all(dir.join("submission")).unwrap();
     let submission = dir.join("submission");
     let out = dir.join("grade");

@@ -62,6 +62,9 @@ mod cli;
 /// The one writer of every file (`src/output.rs`): atomic files, sets, staged folders.
 mod output;
 
+/// What the tests share: the root, scratch folders (`support.rs`).
+mod support;
+
 /// Starts the watchdog that ends a run in which a test never returns, with the report card
 /// printed (`report_card::watchdog`). Named to be the first test in libtest's order, which
 /// is by name, so that it starts before any exercise's test can take every thread; it

@@ -9,11 +9,8 @@ use std::path::{Path, PathBuf};
 
 use raylemma::output::{FileError, FileSet, StagedDir, temporary_beside, write_file};
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylemma-output-{name}-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
+fn scratch(name: &str) -> crate::support::Scratch {
+    crate::support::scratch(&format!("output-{name}"))
 }
 
 /// The names in `dir`, sorted (hidden temporary files included).

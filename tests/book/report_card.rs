@@ -17,7 +17,6 @@
 //! running for over 60 seconds") when the wait is longer than that.
 
 use std::io::Write as _;
-use std::path::Path;
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
@@ -58,7 +57,7 @@ fn seconds(var: &str, default: u64) -> Duration {
 }
 
 fn make_card() -> card::Card {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
     card::run(&markers)
 }

@@ -3,13 +3,9 @@
 //! with the mistakes it is meant to catch, and bad corpus files are refused with their line.
 //! Deterministic: the corpora are fixed inputs with exact answers (`tools/exact`).
 
-use std::path::Path;
-
 use raylemma::check::accuracy::{self, BOUND, Expect, Precision, corpus, forms, planted};
 
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
+use crate::support::root;
 
 fn load(name: &str) -> accuracy::Corpus {
     corpus::load(&root().join(format!("data/corpus/{name}.txt"))).expect("the corpus reads")

@@ -90,9 +90,7 @@ fn findings(v: &Verdict) -> String {
 }
 
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylemma-external-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("a scratch folder");
-    dir.join(name)
+    crate::support::scratch_file(&format!("external-{name}"))
 }
 
 fn write(name: &str, text: &str) -> PathBuf {

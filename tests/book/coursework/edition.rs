@@ -6,7 +6,7 @@
 //! (`.ci/run`), not here.
 
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 use raylemma::exercise::edition::{self, EditionError, File, Kind};
@@ -346,12 +346,8 @@ fn the_edition_manifest_drops_the_benches_criterion_and_the_figure_job() {
     assert!(readme.contains("the **hand-out**"), "{readme}");
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("raylemma-exercises-{name}-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
+fn scratch(name: &str) -> crate::support::Scratch {
+    crate::support::scratch(&format!("exercises-{name}"))
 }
 
 /// Writes the fixture crate (with `test` as its test file) under `root`.
@@ -484,7 +480,7 @@ fn the_command_refuses_a_folder_in_use_and_leaves_nothing_half_written() {
 
 #[test]
 fn every_marker_of_this_crate_is_well_formed_and_has_its_checks() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
     let names: Vec<&str> = markers.iter().map(|m| m.name.as_str()).collect();
     for m in &markers {
@@ -555,7 +551,7 @@ fn every_marker_of_this_crate_is_well_formed_and_has_its_checks() {
 /// command its chapter names.
 #[test]
 fn every_chapter_ends_with_exercises_that_name_their_command() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let summary = fs::read_to_string(root.join("chapters/SUMMARY.md")).unwrap();
     let markers = edition::markers_under(root).unwrap();
     for chapter in marker::chapters(&summary) {

@@ -193,7 +193,7 @@ fn below_the_poles_the_formula_is_meaningless() {
 /// The embedded table and the file on disk are the same table.
 #[test]
 fn embedded_table_equals_the_file() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sellmeier.csv");
+    let path = crate::support::root().join("data/sellmeier.csv");
     let from_file = disp::load(&path).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(&from_file, disp::catalogue());
     assert_eq!(
@@ -685,7 +685,7 @@ fn exercise_5_a_broken_row() {
 
 /// The exact answer (as the double nearest it) of the corpus case asking `question`.
 fn corpus_exact(question: &str) -> f64 {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/dispersion.txt"))
         .expect("the corpus reads");
     let case = corpus

@@ -1039,7 +1039,7 @@ fn exercise_5_the_pi_rule() {
 /// and the ratio taken last gives 0, within one unit of the scale 1.
 #[test]
 fn transmittance_at_a_subnormal_cosine_is_not_nan() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/thinfilm.txt"))
         .expect("the corpus reads");
     let question = "film 1.0 1.38 1.52 100.0 550.0 5e-324";

@@ -270,9 +270,7 @@ fn equivalent_z_matches_the_t_table_and_satterthwaite_the_hand_count() {
 // Files as other renderers write them.
 
 pub fn tmp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylemma-compare-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    crate::support::scratch_file(&format!("compare-{name}"))
 }
 
 /// Writes a plain EXR with the channels `names` (in that order; EXR sorts them), each

@@ -8,14 +8,12 @@
 //! rules of `tools/pbrt/NOTES.md` (checked against pbrt-v4's source, not by rendering): a
 //! small tokenizer here checks its syntax and reads its numbers back.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
 use serde_json::Value;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use crate::support::root;
 
 fn load(name: &str) -> SceneFile {
     SceneFile::load(&root().join("scenes").join(name)).unwrap_or_else(|e| panic!("{e}"))
@@ -202,7 +200,7 @@ fn json_keeps_luminance_scaling_sellmeier_films_and_constants() {
 
 /// A scene file written into a temporary folder (with a spectrum CSV beside it).
 fn scene_text(name: &str, text: &str) -> SceneFile {
-    let dir = std::env::temp_dir().join(format!("raylemma-export-{}", std::process::id()));
+    let dir = crate::support::scratch_file("export");
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(
         dir.join("odd.csv"),

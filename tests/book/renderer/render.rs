@@ -11,8 +11,6 @@
 //! planted-bug twin it must reject: lanes weighted by a pdf they were not drawn from in the
 //! white furnace, a reflectance 4 % too high in the grey one, a brighter scene for `compare`.
 
-use std::path::Path;
-
 use glam::{DVec2, DVec3};
 use rand::RngExt;
 use raylemma::geometry::Parallelogram;
@@ -30,12 +28,8 @@ use raylemma::spectral::wavelength::{N, RANGE, Strategy, hero_visible};
 use raylemma::stats::{sidak, test_alpha};
 
 fn load(name: &str) -> Scene {
-    raylemma::render::load(
-        &Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("scenes")
-            .join(name),
-    )
-    .unwrap_or_else(|e| panic!("{e}"))
+    raylemma::render::load(&crate::support::root().join("scenes").join(name))
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn small(mut s: Scene, side: u32, spp: u32) -> Scene {
@@ -483,9 +477,7 @@ fn welford_matches_the_two_pass_variance() {
 }
 
 fn tmp(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylemma-renderer-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    crate::support::scratch_file(&format!("renderer-{name}"))
 }
 
 #[test]
@@ -767,7 +759,7 @@ fn a_failed_write_leaves_the_earlier_render_whole() {
 
 #[test]
 fn the_renderer_source_closure_holds_what_makes_pixels_and_nothing_of_the_checks() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let files: Vec<String> = raylemma::render::provenance::source_closure(root)
         .unwrap_or_else(|e| panic!("{e}"))
         .iter()
@@ -810,9 +802,9 @@ fn the_code_version_is_the_same_wherever_the_project_lies() {
     // hashes the closure's files by their paths relative to the root, never absolute ones
     // (the test runs in the project folder either way; the version reads no other path).
     use raylemma::render::provenance::{code_version, source_closure};
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let here = code_version(root).unwrap_or_else(|e| panic!("{e}"));
-    let elsewhere = std::env::temp_dir().join(format!("raylemma-clone-{}", std::process::id()));
+    let elsewhere = crate::support::scratch("clone");
     for f in source_closure(root).unwrap_or_else(|e| panic!("{e}")) {
         let to = elsewhere.join(&f);
         std::fs::create_dir_all(to.parent().expect("a file has a folder"))
@@ -827,7 +819,7 @@ fn the_code_version_is_the_same_wherever_the_project_lies() {
 #[test]
 fn a_reference_record_names_what_changed() {
     use raylemma::render::provenance::{MadeFrom, code_text, code_version};
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let file = root.join("scenes/cornell.toml");
     let scene = load("cornell.toml");
     let code = code_version(root).unwrap_or_else(|e| panic!("{e}"));

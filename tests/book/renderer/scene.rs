@@ -12,9 +12,7 @@ use raylemma::render;
 use raylemma::render::scene::{self, Material};
 use raylemma::rng;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use crate::support::root;
 
 fn scenes_dir() -> PathBuf {
     root().join("scenes")
@@ -301,8 +299,7 @@ fn a_missing_spectrum_file_is_refused_with_its_path() {
 
 #[test]
 fn a_malformed_spectrum_file_names_its_own_line() {
-    let dir = std::env::temp_dir().join(format!("raylemma-scene-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::support::scratch("scene-spectrum-file");
     std::fs::write(
         dir.join("bad.csv"),
         "wavelength_nm,value\n400,0.5\n500,oops\n",
@@ -382,11 +379,8 @@ fn raylemma() -> Command {
     Command::new(env!("CARGO_BIN_EXE_raylemma"))
 }
 
-fn out_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("raylemma-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn out_dir(name: &str) -> crate::support::Scratch {
+    crate::support::scratch(&format!("cli-{name}"))
 }
 
 #[test]
@@ -668,7 +662,7 @@ fn merge_from_the_command_line_refuses_what_does_not_pool() {
 fn every_rung_of_the_ladder_parses_says_what_it_tests_and_exports() {
     use raylemma::check::render::ladder::{LADDER, header};
     use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/conformance");
+    let dir = crate::support::root().join("scenes/conformance");
     let mut files: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
@@ -723,7 +717,7 @@ fn every_rung_of_the_ladder_parses_says_what_it_tests_and_exports() {
 #[test]
 fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
     use raylemma::render::compare::compare_images;
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/conformance");
+    let dir = crate::support::root().join("scenes/conformance");
     let box_ = render::load(&dir.join("05-box.toml")).unwrap();
     let mut roulette = render::load(&dir.join("08-roulette.toml")).unwrap();
     assert_eq!(roulette.settings.roulette_depth, 1);

@@ -22,7 +22,7 @@ fn exact_images() -> &'static [Rendered] {
 fn reference_images() -> &'static [Rendered] {
     static IMAGES: OnceLock<Vec<Rendered>> = OnceLock::new();
     IMAGES.get_or_init(|| {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let root = crate::support::root();
         references::render_references(&references::ours_window, root, &Options::default())
             .unwrap_or_else(|e| panic!("{e}"))
     })
@@ -216,7 +216,7 @@ fn references_reject_a_global_bias_of_five_percent() {
 /// twin asserting at its threshold would fail one seed in ten for no fault of the image.
 #[test]
 fn planted_biases_are_twice_their_thresholds() {
-    let figures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("figures");
+    let figures = crate::support::root().join("figures");
     let values = raylemma_values::read(&figures).unwrap_or_else(|e| panic!("{e}"));
     let power = &values["render_test_power"].values;
     let threshold = |check: &str, name: &str| {

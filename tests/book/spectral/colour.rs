@@ -865,7 +865,7 @@ fn missing_files_and_columns_are_refused() {
             assert!(xyz(|nm| t.eval(nm)).y > 0.0, "{file}:{name} is black");
         }
     }
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/cie_illuminant_A.csv");
+    let path = crate::support::root().join("data/cie_illuminant_A.csv");
     assert!(load_csv(&path).is_ok());
 }
 
@@ -910,7 +910,7 @@ fn a_dense_table_is_the_same_function_read_by_index() {
     // Tables with whole-nanometre knots (the built-in ones, the Cornell box's): the dense
     // form agrees with the table to rounding everywhere, and is zero outside.
     use raylemma::spectral::spectrum::{Dense, WholeNm};
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let mut tables: Vec<Table> = raylemma::spectral::spectrum::BUILTIN
         .iter()
         .map(|(name, _)| builtin(name))
@@ -1168,7 +1168,7 @@ fn exercise_4_fit_on_the_planckian_locus() {
 /// 8 κ ulps.
 #[test]
 fn planck_past_the_exponential_overflow_is_not_zero() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/colour.txt"))
         .expect("the corpus reads");
     let mut seen = 0;

@@ -412,11 +412,8 @@ fn fit_to_gamut_keeps_luminance_and_hue() {
 // ---------------------------------------------------------------------------------------
 // PNG files.
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylemma-display-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+fn scratch(name: &str) -> crate::support::Scratch {
+    crate::support::scratch(&format!("display-{name}"))
 }
 
 #[test]

@@ -657,7 +657,7 @@ fn lamp_colours_against_published_values() {
 // The image format.
 
 fn data_dir() -> std::path::PathBuf {
-    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data")
+    crate::support::root().join("data")
 }
 
 /// `decoded` is `t / max t` at every whole nanometre of 380-830 within half a pixel.
@@ -784,7 +784,7 @@ fn bad_images_are_refused_with_file_and_reason() {
 /// 100 MB limit.)
 #[test]
 fn an_image_taller_than_read_is_refused_before_decoding() {
-    let crafted = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/png");
+    let crafted = crate::support::root().join("tests/data/png");
     for (name, height) in [
         ("tall-451x1000000000.png", "1000000000"),
         ("tall-451x4097.png", "4097"),
@@ -880,8 +880,7 @@ fn colour_proposal_flattens_the_sum_of_x_y_z() {
 /// `write_lamp_images` writes one decodable drawing per lamp and returns its path.
 #[test]
 fn lamp_images_are_written_and_decode() {
-    let dir = std::env::temp_dir().join(format!("raylemma-lamps-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::support::scratch("lamps");
     let paths = write_lamp_images(&dir).unwrap();
     assert_eq!(paths.len(), lamps().len());
     for (path, lamp) in paths.iter().zip(lamps()) {
@@ -909,7 +908,7 @@ const YOUR_SHIFT: Option<f64> = None;
 #[test]
 #[ignore = "exercise 1 of Importance-sampled emission spectra: draw the line, fill in YOUR_DRAWING and YOUR_SHIFT, then run it"]
 fn exercise_1_sodium_doublet() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let yours = load_image(&root.join(YOUR_DRAWING.expect("fill in YOUR_DRAWING"))).unwrap();
     let shipped = load_image(&data_dir().join("lamp_low_pressure_sodium.png")).unwrap();
     let near_819 = |t: &Table| (814..=824).map(|nm| t.eval(f64::from(nm))).sum::<f64>();

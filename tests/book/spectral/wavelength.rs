@@ -1161,7 +1161,7 @@ fn exercise_3_mixed_terminations() {
 /// exactly ([`rotate01`]).
 #[test]
 fn hero_rotation_does_not_wrap_a_sum_that_rounds_to_one() {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let corpus = raylemma::check::accuracy::corpus::load(&root.join("data/corpus/wavelength.txt"))
         .expect("the corpus reads");
     for question in [

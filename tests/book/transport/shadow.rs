@@ -335,7 +335,7 @@ fn sampled_pdf_equals_evaluated_pdf() {
 fn edge_coordinates_keep_their_digits_far_along_the_ray() {
     use raylemma::check::accuracy::{self, BOUND, Precision, corpus};
     use raylemma::geometry::Parallelogram;
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let c = corpus::load(&root.join("data/corpus/sphere.txt")).expect("the corpus reads");
     let verb = c.verb("quad_coords").expect("declared");
     let case = c
@@ -364,7 +364,7 @@ fn edge_coordinates_keep_their_digits_far_along_the_ray() {
 #[test]
 fn mis_weights_survive_huge_and_tiny_densities() {
     use raylemma::check::accuracy::{self, BOUND, Precision, corpus};
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::support::root();
     let c = corpus::load(&root.join("data/corpus/shadow.txt")).expect("the corpus reads");
     for (verb, heuristic, why) in [
         (
