@@ -27,8 +27,18 @@ pub fn set_failure_dir(dir: PathBuf) -> bool {
     FAILURE_DIR.get_or_init(|| dir.clone()) == &dir
 }
 
-/// Writes `observed`, `expected` and `difference` PNGs (one pixel block per cell) into
-/// `<name>/` of [`failure_dir`] and returns that directory. Rows are the cells' first coordinate
+/// The folder name of `warp`'s images: its name with every character that is not an ASCII
+/// letter or digit made `_`.
+fn safe_name(warp: &dyn Warp) -> String {
+    warp.name()
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
+}
+
+/// Writes `observed`, `expected` and `difference` PNGs (one pixel block per cell, at least
+/// 256 pixels on each side) and a `README.txt` saying what their axes and colours
+/// are into `<name>/` of [`failure_dir`] and returns that directory. Rows are the cells' first coordinate
 /// (the interval's `x`, the square's `u2`, the disc's `r^2`, the sphere's `z`), increasing
 /// upwards; columns the second (the square's `u1`, the azimuth), increasing to the right.
 pub(super) fn write_failure_images(
@@ -38,22 +48,22 @@ pub(super) fn write_failure_images(
     expected: &[f64],
 ) -> Option<PathBuf> {
     let (rows, cols) = grid(warp.domain(), options.resolution);
-    let safe: String = warp
-        .name()
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect();
-    let dir = failure_dir().join(safe);
+    let dir = failure_dir().join(safe_name(warp));
     std::fs::create_dir_all(&dir).ok()?;
     let max = expected
         .iter()
         .copied()
         .fold(0.0, f64::max)
         .max(observed.iter().copied().max().unwrap_or(0) as f64);
-    let scale = 4;
+    // Each cell a block of pixels, so that each side is at least 256 pixels (a cell of an
+    // interval's single column is a wide bar).
+    let (sx, sy) = (
+        256usize.div_ceil(cols.max(1)),
+        256usize.div_ceil(rows.max(1)),
+    );
     let image = |value: &dyn Fn(usize) -> [u8; 3]| {
-        image::RgbImage::from_fn((cols * scale) as u32, (rows * scale) as u32, |x, y| {
-            let (i, j) = (rows - 1 - y as usize / scale, x as usize / scale);
+        image::RgbImage::from_fn((cols * sx) as u32, (rows * sy) as u32, |x, y| {
+            let (i, j) = (rows - 1 - y as usize / sy, x as usize / sx);
             image::Rgb(value(i * cols + j))
         })
     };
@@ -81,6 +91,52 @@ pub(super) fn write_failure_images(
         }
     });
     stage("difference.png", difference)?;
+    let readme = legend(warp, rows, cols, (sx, sy));
+    files
+        .write(&dir.join("README.txt"), readme.as_bytes())
+        .ok()?;
     files.commit().ok()?;
     Some(dir)
+}
+
+/// What the three images show, written beside them: the axes of the domain's cells and
+/// the colours, since the PNGs carry no text.
+fn legend(warp: &dyn Warp, rows: usize, cols: usize, (sx, sy): (usize, usize)) -> String {
+    use super::Domain;
+    let (up, right) = match warp.domain() {
+        Domain::Interval { lo, hi } => (
+            format!("x from {lo} (bottom) to {hi} (top)"),
+            "-".to_string(),
+        ),
+        Domain::Square => (
+            "u2 from 0 (bottom) to 1 (top)".into(),
+            "u1 from 0 (left) to 1 (right)".into(),
+        ),
+        Domain::Disc => (
+            "r^2 from 0 (bottom, the centre) to 1 (top, the rim): equal-area rings".into(),
+            "the azimuth phi from 0 (left) to 360 degrees (right)".into(),
+        ),
+        Domain::Sphere => (
+            "z from -1 (bottom) to 1 (top): equal-area bands".into(),
+            "the azimuth phi from 0 (left) to 360 degrees (right)".into(),
+        ),
+    };
+    format!(
+        "The failure images of the sampler `{}` (raylemma's warp checker, chapter Checking a sampler).\n\
+         {rows} rows x {cols} columns of cells of equal measure, each {sx} pixels wide and {sy} tall.\n\
+         Rows (up): {up}.\nColumns (right): {right}.\n\
+         observed.png: the samples in each cell; expected.png: the integral of the pdf over it \
+         times the number of samples (one grey scale for both: white is the largest count).\n\
+         difference.png: (observed - expected) / sqrt(expected) per cell, red where there are \
+         more samples than the pdf says and blue where there are fewer, full colour at 5 \
+         standard deviations; white where they agree.\n\
+         The folder is removed when the sampler passes its chi-squared test again.\n",
+        warp.name()
+    )
+}
+
+/// Removes the failure images of `warp` left by an earlier failing run, now that it passes:
+/// a folder of images next to a sampler that passes would say it fails.
+pub(super) fn remove_stale_images(warp: &dyn Warp) {
+    let _ = std::fs::remove_dir_all(failure_dir().join(safe_name(warp)));
 }

@@ -32,8 +32,8 @@ use super::{Finding, Options, Verdict};
 use crate::rng::{self, Rng};
 use crate::stats::chi2;
 use cells::{cell_of, cell_probabilities, grid, outside, worst_cells};
-use images::write_failure_images;
 pub use images::{failure_dir, set_failure_dir};
+use images::{remove_stale_images, write_failure_images};
 
 // ANCHOR: interface
 /// The domain a sampler draws from, and the measure its pdf is a density for.
@@ -354,6 +354,9 @@ fn chi_squared_finding(warp: &dyn Warp, options: &WarpOptions) -> Finding {
     match chi_squared(warp, options) {
         Ok((result, observed, expected)) => {
             let ok = result.p_value >= options.alpha;
+            if ok {
+                remove_stale_images(warp);
+            }
             finding.record(ok, || {
                 let images = write_failure_images(warp, options, &observed, &expected)
                     .map(|dir| format!("; images in {}", dir.display()))

@@ -164,7 +164,23 @@ fn writes_images_on_failure() {
     assert!(dir.is_relative(), "{message}");
     for f in ["observed.png", "expected.png", "difference.png"] {
         assert!(dir.join(f).is_file(), "{f} missing");
+        let (w, h) = image::image_dimensions(dir.join(f)).unwrap();
+        assert!(w.min(h) >= 256, "{f} is {w} x {h}: too small to read");
     }
+    let legend = std::fs::read_to_string(dir.join("README.txt")).unwrap();
+    assert!(
+        legend.contains("r^2 from 0 (bottom") && legend.contains("red where there are more"),
+        "{legend}"
+    );
+    // Fixed, the same sampler's images go: they would say that it still fails.
+    square(
+        "images demo",
+        Domain::Disc,
+        raylemma::sampling::disc::disc_polar,
+        disc_pdf,
+    )
+    .assert_pass();
+    assert!(!dir.exists(), "stale images left after the sampler passed");
 }
 
 /// A cosine sampler written with y up (its samples have y >= 0, z on both sides) fails on
