@@ -3,12 +3,15 @@ solutions edition SOLUTIONS with one kind of mistake each, into OUT/NAME, and pr
 `raylemma grade` must give each with tools/grade/weights.toml (max 27 points: 22
 exercises at 1, disc_polar at 3, srgb_encode at 2).
 
-  planted   disc_polar samples r = u1 (not uniform on the disc) and srgb_encode is a
-            pure 1/2.2 power: 22 of 27, those two failing;
+  planted   disc_polar samples r = u1 (not uniform on the disc) and srgb_encode is
+            x^(1/2.2) above the break (the linear segment kept): 22 of 27, those two failing;
   looping   disc_polar never returns: 24 of 27, disc_polar failing for its time limit;
   loophole  disc_polar samples r = u1 and the same file's disc_pdf (1/(2 pi r)) and
-            disc_polar_invert are changed to match, so that the submission's own card
-            passes it: the grader puts back the edition's disc_pdf, 24 of 27.
+            disc_polar_invert (r instead of r^2) are changed to match, so that the
+            submission's own card passes it: the grader puts back the edition's disc_pdf
+            and inverse, 24 of 27.
+
+It also writes OUT/expected.json, the marks and failing exercises CI requires.
 
 Usage: python3 tools/grade/cases.py SOLUTIONS OUT   (standard library only)
 """

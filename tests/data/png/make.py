@@ -1,6 +1,8 @@
 """Writes the crafted spectrum images of this folder: PNGs whose header claims a size
 the bytes do not hold, to check that `spectral::emission::parse_image` judges the
-header before it decodes a pixel (a 100-byte file must not cost gigabytes).
+header before it decodes a pixel. 451 x 300000 grey is 135 MB: under the `image`
+crate's default limit of 512 MB, which the reader used to decode within, and over the
+fuzzer's 100 MB; 451 x 10^9 is over both.
 
 Run: python3 tests/data/png/make.py (standard library only). The files are committed;
 this script says how they were made.
@@ -25,6 +27,7 @@ def png(width: int, height: int, rows: int) -> bytes:
 
 for name, (w, h, rows) in {
     "tall-451x1000000000.png": (451, 1_000_000_000, 4),
+    "tall-451x300000.png": (451, 300_000, 4),
     "tall-451x4097.png": (451, 4097, 4),
 }.items():
     (here / name).write_bytes(png(w, h, rows))

@@ -12,7 +12,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use raylemma::output::{self, FileSet};
 use raylemma::render::format::fnv1a;
 pub use raylemma_values::Record;
-use raylemma_values::{Entry, Values};
+use raylemma_values::{Entry, Values, fingerprint};
 
 use crate::plot::BoxError;
 use crate::{
@@ -216,24 +216,31 @@ pub fn stage_values(
 /// Figures with a time axis of their own, timed in the same run as a table (the table's
 /// record key): kept and remade with it, so that a figure and its table always show one
 /// machine.
-const TIMED_WITH: [(&str, &str); 2] = [
+const TIMED_WITH: [(&str, &str); 4] = [
     ("fresnel_speed.svg", "fresnel_speed"),
     ("roulette_efficiency.svg", "roulette_efficiency"),
+    ("wavelength_error.svg", "wavelength_efficiency"),
+    ("shadow_convergence.svg", "shadow_strategies"),
 ];
 
-/// The machine of a timing output to keep rather than measure again: one whose committed
-/// record (`before`) names a machine and was not made in quick mode, in a full run without
-/// `--timings`. A timing is a fact about the machine its caption names; measured again on
+/// The machine of a timing output to keep rather than measure again, in a full run without
+/// `--timings`: the machine its committed record (`before`) names, or for a table that
+/// records no values the fingerprint its committed text (`table`) names; never one made in
+/// quick mode. A timing is a fact about the machine its caption names; measured again on
 /// another, it could turn a claim the book makes about it (one routine faster than
 /// another) from true to false, and fail the build of a newcomer's first `cargo run
 /// --release`. So it is remade only when asked (`--timings`, or `--only` naming it), in
 /// quick mode (CI runs the code that measures it; a failed claim is then a warning), or
 /// when its file is gone.
-fn kept_timing(before: Option<&Entry>, settings: &Settings) -> Option<String> {
-    if settings.quick || settings.timings {
+fn kept_timing(before: Option<&Entry>, table: Option<&str>, settings: &Settings) -> Option<String> {
+    if settings.quick || settings.timings || before.is_some_and(|e| e.quick) {
         return None;
     }
-    before.filter(|e| !e.quick)?.machine.clone()
+    before.and_then(|e| e.machine.clone()).or_else(|| {
+        table
+            .filter(|t| !t.contains("quick mode"))
+            .and_then(fingerprint)
+    })
 }
 
 /// Produces `outputs` and writes them into `dir` as one set of files
@@ -285,7 +292,8 @@ pub fn write_outputs(
             .iter()
             .find(|(figure, _)| *figure == o.file)
             .map_or(stem(o.file), |(_, table)| table);
-        if let Some(machine) = kept_timing(before.get(table), settings)
+        let table_text = std::fs::read_to_string(dir.join(format!("{table}.md"))).ok();
+        if let Some(machine) = kept_timing(before.get(table), table_text.as_deref(), settings)
             && path.exists()
         {
             say(format!(
@@ -367,26 +375,35 @@ mod tests {
             ..settings()
         };
         assert_eq!(
-            kept_timing(Some(&timing), &full).as_deref(),
+            kept_timing(Some(&timing), None, &full).as_deref(),
             Some("3cfca2e9")
         );
         let timings = Settings {
             timings: true,
             ..full.clone()
         };
-        assert_eq!(kept_timing(Some(&timing), &timings), None);
-        assert_eq!(kept_timing(Some(&timing), &settings()), None);
+        assert_eq!(kept_timing(Some(&timing), None, &timings), None);
+        assert_eq!(kept_timing(Some(&timing), None, &settings()), None);
         let quick_made = Entry {
             quick: true,
             ..timing.clone()
         };
-        assert_eq!(kept_timing(Some(&quick_made), &full), None);
+        assert_eq!(kept_timing(Some(&quick_made), None, &full), None);
         let untimed = Entry {
             machine: None,
             ..timing
         };
-        assert_eq!(kept_timing(Some(&untimed), &full), None);
-        assert_eq!(kept_timing(None, &full), None);
+        assert_eq!(kept_timing(Some(&untimed), None, &full), None);
+        assert_eq!(kept_timing(None, None, &full), None);
+        // A table that records no values, kept by the fingerprint of its caption.
+        let caption = "Measured on a CPU, fingerprint 77117322, single thread.\n| a |";
+        assert_eq!(
+            kept_timing(None, Some(caption), &full).as_deref(),
+            Some("77117322")
+        );
+        let quick = format!("{caption}\n<!-- made in quick mode: noisy, not for quoting -->");
+        assert_eq!(kept_timing(None, Some(&quick), &full), None);
+        assert_eq!(kept_timing(None, Some("| no caption |"), &full), None);
     }
 
     #[test]
