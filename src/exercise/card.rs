@@ -304,7 +304,7 @@ pub struct Entry {
     pub details: Vec<String>,
 }
 
-/// The card as data: [`Card::entries`] and the card's problems.
+/// The card as data: one [`Entry`] per row and the card's problems ([`Card::report`]).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Report {
     /// One entry per exercise, in the book's order.
