@@ -86,7 +86,7 @@ pub fn run(args: &GradeArgs) -> CmdResult {
     write_all(&args.out, &grade, &text).map_err(|e| bad(&e))?;
     print!("{text}");
     eprintln!("raylemma: wrote the grade to {}", args.out.display());
-    Ok(if grade.rows.iter().all(|r| r.entry.status == "passing") {
+    Ok(if grade.rows.iter().all(|r| r.entry.passed()) {
         Outcome::Done
     } else {
         Outcome::Negative
@@ -277,7 +277,7 @@ fn gradescope(grade: &Grade) -> String {
                 "name": r.entry.name,
                 "score": r.score,
                 "max_score": r.max,
-                "status": if r.entry.status == "passing" { "passed" } else { "failed" },
+                "status": if r.entry.passed() { "passed" } else { "failed" },
                 "output": output(r),
             })
         })
@@ -293,11 +293,7 @@ fn gradescope(grade: &Grade) -> String {
 /// The grade as JUnit XML: one test case per exercise (class: its chapter), a failure for
 /// each exercise that does not pass.
 fn junit(grade: &Grade) -> String {
-    let failures = grade
-        .rows
-        .iter()
-        .filter(|r| r.entry.status != "passing")
-        .count();
+    let failures = grade.rows.iter().filter(|r| !r.entry.passed()).count();
     let mut s = format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"raylemma exercises\" tests=\"{}\" failures=\"{failures}\">\n",
         grade.rows.len()
@@ -305,7 +301,7 @@ fn junit(grade: &Grade) -> String {
     for r in &grade.rows {
         let name = xml_escape(&r.entry.name);
         let class = xml_escape(&r.entry.chapter);
-        if r.entry.status == "passing" {
+        if r.entry.passed() {
             let _ = writeln!(s, "  <testcase classname=\"{class}\" name=\"{name}\"/>");
         } else {
             let _ = writeln!(

@@ -151,26 +151,16 @@ pub fn failed_verdicts(name: &str) -> Vec<Verdict> {
         return Vec::new();
     };
     let check = e.check;
-    within(name, LIMIT, move || {
-        quiet_hook();
-        QUIET.with(|q| q.set(true));
-        let verdicts = panic::catch_unwind(check).unwrap_or_default();
-        QUIET.with(|q| q.set(false));
-        verdicts
-    })
-    .unwrap_or_default()
-    .into_iter()
-    .filter(|v| !v.passed())
-    .collect()
+    within(name, LIMIT, move || quietly(&check).unwrap_or_default())
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|v| !v.passed())
+        .collect()
 }
 
 /// The status of the exercise `name` from running `check` (with panics caught).
 pub fn judge(name: &str, check: &dyn Fn() -> Vec<Verdict>) -> Status {
-    quiet_hook();
-    QUIET.with(|q| q.set(true));
-    let result = panic::catch_unwind(AssertUnwindSafe(check));
-    QUIET.with(|q| q.set(false));
-    match result {
+    match quietly(check) {
         Ok(verdicts) if verdicts.iter().all(Verdict::passed) && !verdicts.is_empty() => {
             Status::Passing
         }
@@ -184,6 +174,15 @@ pub fn judge(name: &str, check: &dyn Fn() -> Vec<Verdict>) -> Status {
             }
         }
     }
+}
+
+/// `check` run with its panics caught and kept off the screen (the card reports them).
+fn quietly(check: &dyn Fn() -> Vec<Verdict>) -> std::thread::Result<Vec<Verdict>> {
+    quiet_hook();
+    QUIET.with(|q| q.set(true));
+    let result = panic::catch_unwind(AssertUnwindSafe(check));
+    QUIET.with(|q| q.set(false));
+    result
 }
 
 fn first_line(text: &str) -> &str {
@@ -302,6 +301,13 @@ pub struct Entry {
     /// What is wrong (the failed claims, a panic, what it waits for); empty if passing or
     /// not started.
     pub details: Vec<String>,
+}
+
+impl Entry {
+    /// True iff the exercise passes.
+    pub fn passed(&self) -> bool {
+        self.status == Status::Passing.label()
+    }
 }
 
 /// The card as data: one [`Entry`] per row and the card's problems ([`Card::report`]).

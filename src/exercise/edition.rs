@@ -224,6 +224,15 @@ pub fn markers(files: &[File]) -> Result<Vec<Marker>, DataError> {
     Ok(all)
 }
 
+/// The markers among `exercises` that are in the file `path`.
+pub fn markers_of(exercises: &[Marker], path: &str) -> Vec<Marker> {
+    exercises
+        .iter()
+        .filter(|m| m.file == path)
+        .cloned()
+        .collect()
+}
+
 /// The markers of the crate at `root`, read from `src/` and `chapters/SUMMARY.md` alone
 /// (what the report card needs).
 ///
@@ -252,11 +261,7 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
         .into_iter()
         .partition(|f| f.path == "Cargo.toml" || f.path == "README.md");
     for mut file in sources {
-        let mine: Vec<Marker> = exercises
-            .iter()
-            .filter(|m| m.file == file.path)
-            .cloned()
-            .collect();
+        let mine = markers_of(exercises.as_slice(), &file.path);
         if kind == Kind::HandOut && !mine.is_empty() {
             let text = String::from_utf8_lossy(&file.bytes).into_owned();
             let (stubbed, lines) = stub::stub_file(&text, &mine);

@@ -65,11 +65,7 @@ pub fn splice(
     let mut notes = Vec::new();
     let mut out = Vec::with_capacity(sources.len());
     for mut file in sources {
-        let mine: Vec<Marker> = exercises
-            .iter()
-            .filter(|m| m.file == file.path)
-            .cloned()
-            .collect();
+        let mine = super::edition::markers_of(exercises, &file.path);
         if mine.is_empty() {
             out.push(file);
             continue;
@@ -239,7 +235,7 @@ pub fn score(report: &Report, weights: &Weights, notes: Vec<String>) -> Grade {
             let max = weights.of(&e.name);
             Graded {
                 entry: e.clone(),
-                score: if e.status == "passing" { max } else { 0.0 },
+                score: if e.passed() { max } else { 0.0 },
                 max,
             }
         })
