@@ -15,7 +15,7 @@ use super::camera::Camera;
 use super::files::Sidecar;
 use super::format;
 use super::image::{Image, Welford};
-use super::pixel::render_pixel;
+use super::pixel::{PixelNumbers, pixel_rng, render_pixel};
 use super::scene::Scene;
 use super::tracer::Tracer;
 use crate::spectral::wavelength::Wavelengths;
@@ -92,6 +92,37 @@ pub fn render_window<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
     progress: Progress,
     sampler: &S,
 ) -> Image {
+    render_window_from(scene, spp, window, progress, sampler, &pixel_rng)
+}
+
+/// [`render`] with each pixel's random numbers from `numbers(seed, index)` instead of its
+/// own generator ([`pixel_rng`]): the independence check of chapter *Testing the
+/// renderer* gives each sample dimension a stream of its own through it.
+pub fn render_from<R: PixelNumbers, F: Fn(u64, u64) -> R + Sync>(
+    scene: &Scene,
+    spp: u32,
+    numbers: &F,
+) -> Image {
+    let wavelengths = &scene.settings.wavelengths;
+    let sampler = |u| wavelengths.sample(u);
+    let whole = Window::of(scene);
+    render_window_from(scene, spp, whole, Progress::Silent, &sampler, numbers)
+}
+
+/// [`render_window`] with each pixel's numbers from `numbers(seed, index)`.
+fn render_window_from<S, R, F>(
+    scene: &Scene,
+    spp: u32,
+    window: Window,
+    progress: Progress,
+    sampler: &S,
+    numbers: &F,
+) -> Image
+where
+    S: Fn(f64) -> Wavelengths + Sync + ?Sized,
+    R: PixelNumbers,
+    F: Fn(u64, u64) -> R + Sync,
+{
     let camera = Camera::new(&scene.camera);
     let tracer = Tracer::new(scene);
     let (w, h) = (window.width, window.height);
@@ -113,6 +144,7 @@ pub fn render_window<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
         tracer: &tracer,
         camera: &camera,
         sampler,
+        numbers,
         window,
         spp,
     };
@@ -146,10 +178,12 @@ pub fn render_window<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
 }
 
 /// What every tile of a render shares.
-struct TileJob<'a, S: ?Sized> {
+struct TileJob<'a, S: ?Sized, F> {
     tracer: &'a Tracer<'a>,
     camera: &'a Camera,
     sampler: &'a S,
+    /// Each pixel's random numbers from the seed and its index in the whole image.
+    numbers: &'a F,
     window: Window,
     spp: u32,
 }
@@ -157,20 +191,29 @@ struct TileJob<'a, S: ?Sized> {
 /// The pixels of the tile whose top-left corner is `(x0, y0)` (in the window), each with
 /// its index in the window's image.
 #[inline(always)]
-fn render_tile<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
-    job: &TileJob<S>,
-    (x0, y0): (u32, u32),
-) -> Vec<(usize, Welford)> {
+fn render_tile<S, R, F>(job: &TileJob<S, F>, (x0, y0): (u32, u32)) -> Vec<(usize, Welford)>
+where
+    S: Fn(f64) -> Wavelengths + Sync + ?Sized,
+    R: PixelNumbers,
+    F: Fn(u64, u64) -> R + Sync,
+{
     let (w, h) = (job.window.width, job.window.height);
     let mut out = Vec::with_capacity((TILE * TILE) as usize);
     for y in y0..(y0 + TILE).min(h) {
         for x in x0..(x0 + TILE).min(w) {
             let idx = y as usize * w as usize + x as usize;
-            let pixel = (job.window.x + x, job.window.y + y);
-            out.push((
-                idx,
-                render_pixel(job.tracer, job.camera, job.sampler, pixel, job.spp),
-            ));
+            let (px, py) = (job.window.x + x, job.window.y + y);
+            let index = u64::from(py) * u64::from(job.tracer.scene.camera.width) + u64::from(px);
+            let mut rng = (job.numbers)(job.tracer.scene.settings.seed, index);
+            let acc = render_pixel(
+                job.tracer,
+                job.camera,
+                job.sampler,
+                (px, py),
+                job.spp,
+                &mut rng,
+            );
+            out.push((idx, acc));
         }
     }
     out
@@ -193,18 +236,22 @@ fn wide_vectors() -> bool {
 /// same bits on every machine, a little faster where the CPU has them.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn render_tile_wide_avx2<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
-    job: &TileJob<S>,
-    corner: (u32, u32),
-) -> Vec<(usize, Welford)> {
+fn render_tile_wide_avx2<S, R, F>(job: &TileJob<S, F>, corner: (u32, u32)) -> Vec<(usize, Welford)>
+where
+    S: Fn(f64) -> Wavelengths + Sync + ?Sized,
+    R: PixelNumbers,
+    F: Fn(u64, u64) -> R + Sync,
+{
     render_tile(job, corner)
 }
 
 /// [`render_tile_wide_avx2`] when the CPU has AVX2 ([`wide_vectors`] said so).
-fn render_tile_wide<S: Fn(f64) -> Wavelengths + Sync + ?Sized>(
-    job: &TileJob<S>,
-    corner: (u32, u32),
-) -> Vec<(usize, Welford)> {
+fn render_tile_wide<S, R, F>(job: &TileJob<S, F>, corner: (u32, u32)) -> Vec<(usize, Welford)>
+where
+    S: Fn(f64) -> Wavelengths + Sync + ?Sized,
+    R: PixelNumbers,
+    F: Fn(u64, u64) -> R + Sync,
+{
     #[cfg(target_arch = "x86_64")]
     {
         // SAFETY: called only when `wide_vectors()` found AVX2 on this CPU.

@@ -15,14 +15,13 @@
 use std::f64::consts::FRAC_1_PI;
 
 use glam::{DVec2, DVec3};
-use rand::RngExt;
+use rand::{Rng, RngExt};
 
 use super::scene::{DirectLight, Ior, Material, Surface};
 use super::tracer::Tracer;
 use crate::optics::fresnel::fresnel_dielectric;
 use crate::optics::reflect::{reflect, refract};
 use crate::optics::thinfilm::Film;
-use crate::rng::Rng;
 use crate::sampling::cosine::cosine_malley;
 use crate::sampling::frame::Frame;
 use crate::spectral::spectrum::WholeNm;
@@ -86,7 +85,13 @@ impl<const K: usize> PerPath<K> {
 /// wavelengths `wl`, estimated along one path. `wl` may be changed: a dispersive
 /// refraction terminates the secondary lanes.
 #[inline(always)]
-pub fn radiance(tracer: &Tracer, o: DVec3, d: DVec3, wl: &mut Wavelengths, rng: &mut Rng) -> Lanes {
+pub fn radiance(
+    tracer: &Tracer,
+    o: DVec3,
+    d: DVec3,
+    wl: &mut Wavelengths,
+    rng: &mut impl Rng,
+) -> Lanes {
     let scene = tracer.scene;
     let s = &scene.settings;
     let mut l = [0.0; N];

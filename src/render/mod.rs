@@ -42,8 +42,10 @@ pub mod scene;
 pub mod tracer;
 mod validate;
 
-pub use driver::{Progress, TILE, Window, render, render_file, render_window, render_with};
+pub use driver::{
+    Progress, TILE, Window, render, render_file, render_from, render_window, render_with,
+};
 pub use files::{Sidecar, output_paths, stage_outputs, write_outputs};
 pub use format::{load, parse};
-pub use pixel::{WavelengthSampler, pixel_rng, render_pixel, sample_xyz};
+pub use pixel::{PixelNumbers, WavelengthSampler, pixel_rng, render_pixel, sample_xyz};
 pub use scene::Scene;

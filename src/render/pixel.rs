@@ -44,30 +44,39 @@ pub fn sample_xyz(l: &Lanes, wl: &Wavelengths) -> DVec3 {
 /// Draws the wavelengths of one path from a uniform number in `[0, 1)`.
 pub type WavelengthSampler<'a> = &'a (dyn Fn(f64) -> Wavelengths + Sync);
 
-/// Renders pixel `(x, y)` with `spp` samples: the mean and variance of its linear sRGB.
-/// `sampler` draws each path's wavelengths (generic, so that the scene's own strategy is
-/// compiled into the pixel loop; a [`WavelengthSampler`] works too).
+/// Where a pixel's random numbers come from. The renderer's own is one PCG-64 stream per
+/// pixel read in order ([`pixel_rng`]): a sample's `k`-th number is its sample dimension
+/// `k` (the jitter's two, the wavelengths', then each vertex's). A check may put another
+/// source in its place (one stream per dimension, `check::render::independence`), told
+/// where each sample starts.
+pub trait PixelNumbers: rand::Rng {
+    /// Called before each sample's first number (one stream read in order ignores it).
+    fn start_sample(&mut self) {}
+}
+
+impl PixelNumbers for Rng {}
+
+/// Renders pixel `(x, y)` with `spp` samples drawn from `rng` (the pixel's own generator,
+/// [`pixel_rng`]): the mean and variance of its linear sRGB. `sampler` draws each path's
+/// wavelengths (generic, so that the scene's own strategy is compiled into the pixel loop;
+/// a [`WavelengthSampler`] works too).
 #[inline(always)]
-pub fn render_pixel<S: Fn(f64) -> Wavelengths + ?Sized>(
+pub fn render_pixel<S: Fn(f64) -> Wavelengths + ?Sized, R: PixelNumbers>(
     tracer: &Tracer,
     camera: &Camera,
     sampler: &S,
     (x, y): (u32, u32),
     spp: u32,
+    rng: &mut R,
 ) -> Welford {
-    let scene = tracer.scene;
     let to_rgb = cie::xyz_to_linear_srgb_matrix();
-    let w = scene.camera.width;
-    let mut rng = pixel_rng(
-        scene.settings.seed,
-        u64::from(y) * u64::from(w) + u64::from(x),
-    );
     let mut acc = Welford::default();
     for _ in 0..spp {
+        rng.start_sample();
         let jitter = DVec2::new(rng.random(), rng.random());
         let ray = camera.ray(x, y, jitter);
         let mut wl = sampler(rng.random());
-        let l = integrator::radiance(tracer, ray.origin, ray.dir, &mut wl, &mut rng);
+        let l = integrator::radiance(tracer, ray.origin, ray.dir, &mut wl, rng);
         acc.push(to_rgb * sample_xyz(&l, &wl));
     }
     acc

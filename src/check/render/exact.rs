@@ -36,7 +36,7 @@ use crate::spectral::cie;
 use crate::transport::shadow::sphere_irradiance;
 
 /// The nodes and weights of 4-point Gauss-Legendre quadrature on `[0, 1]`.
-const GAUSS4: [(f64, f64); 4] = [
+pub(super) const GAUSS4: [(f64, f64); 4] = [
     (0.069_431_844_202_973_71, 0.173_927_422_568_726_93),
     (0.330_009_478_207_571_87, 0.326_072_577_431_273_07),
     (0.669_990_521_792_428_1, 0.326_072_577_431_273_07),
@@ -105,14 +105,16 @@ pub fn first(scene: &Scene, o: DVec3, d: DVec3) -> First {
     best
 }
 
-/// The same kind of surface, for deciding whether a pixel straddles an edge.
-fn same(a: First, b: First) -> bool {
-    match (a, b) {
-        (First::Shape(i, _), First::Shape(j, _)) | (First::Light(i, _), First::Light(j, _)) => {
-            i == j
+impl First {
+    /// The same surface (or both the sky), for deciding whether a pixel straddles an edge.
+    pub fn same_surface(self, other: First) -> bool {
+        match (self, other) {
+            (First::Shape(i, _), First::Shape(j, _)) | (First::Light(i, _), First::Light(j, _)) => {
+                i == j
+            }
+            (First::Sky, First::Sky) => true,
+            _ => false,
         }
-        (First::Sky, First::Sky) => true,
-        _ => false,
     }
 }
 
@@ -139,12 +141,12 @@ fn expected_image(
         let corners = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)];
         let mut smooth = corners
             .iter()
-            .all(|&(dx, dy)| same(at(dx, dy).2, reference));
+            .all(|&(dx, dy)| at(dx, dy).2.same_surface(reference));
         let mut sum = DVec3::ZERO;
         for &(gx, wx) in rule {
             for &(gy, wy) in rule {
                 let (o, d, hit) = at(gx, gy);
-                smooth &= same(hit, reference);
+                smooth &= hit.same_surface(reference);
                 sum += wx * wy * radiance(o, d, hit);
             }
         }

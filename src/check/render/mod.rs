@@ -19,7 +19,9 @@
 //! known size that each check must reject.
 
 pub mod diagnose;
+pub mod edges;
 pub mod exact;
+pub mod independence;
 pub mod ladder;
 pub mod planted;
 pub mod pool;
@@ -91,7 +93,15 @@ pub struct ExactScene {
     pub scene: Scene,
     /// Its expected image.
     pub expected: fn(&Scene) -> Expected,
+    /// The side of its pooled blocks: [`pool::BLOCK`], or [`EDGE_BLOCK`] for the scenes of
+    /// edges.
+    pub block: u32,
 }
+
+/// The side of the pooled blocks of the scenes of edges ([`mod@edges`]): small, so that a
+/// block holds a short stretch of one edge, where a footprint's mistake biases every pixel
+/// the same way (a block that held both sides of a shape would see the two cancel).
+pub const EDGE_BLOCK: u32 = 4;
 
 /// The wavelength strategies of the fluorescent floor: every unbiased strategy of the
 /// wavelength chapter, and the emission strategy (the light's colour proposal).
@@ -145,16 +155,19 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
             name: "floor under a quad light".into(),
             scene: scenes::floor_under_quad(32, spp(512)),
             expected: exact::direct,
+            block: pool::BLOCK,
         },
         ExactScene {
             name: "floor under a sphere light".into(),
             scene: scenes::floor_under_sphere(32, spp(1536)),
             expected: exact::direct,
+            block: pool::BLOCK,
         },
         ExactScene {
             name: "floor under a light turned away".into(),
             scene: scenes::floor_under_a_light_turned_away(32, spp(256)),
             expected: exact::direct,
+            block: pool::BLOCK,
         },
     ];
     for (name, direct) in DIRECT_VARIANTS {
@@ -164,6 +177,7 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
             name: format!("floor under two lights, {name}"),
             scene,
             expected: exact::direct,
+            block: pool::BLOCK,
         });
     }
     for (name, wavelengths) in wavelength_variants() {
@@ -171,6 +185,7 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
             name: format!("floor under a fluorescent light, {name}"),
             scene: scenes::floor_under_fluorescent(32, spp(64), wavelengths),
             expected: exact::direct,
+            block: pool::BLOCK,
         });
     }
     list.extend([
@@ -178,22 +193,53 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
             name: "glass sphere in a sky".into(),
             scene: scenes::glass_in_sky(40, spp(256)),
             expected: exact::specular,
+            block: pool::BLOCK,
         },
         ExactScene {
             name: "mirror sphere in a sky".into(),
             scene: scenes::mirror_in_sky(32, spp(64)),
             expected: exact::specular,
+            block: pool::BLOCK,
         },
         ExactScene {
             name: "thin film in a sky".into(),
             scene: scenes::film_in_sky(16, spp(512)),
             expected: exact::specular,
+            block: pool::BLOCK,
         },
     ]);
+    list.extend(edge_scenes(scale));
     for s in &mut list {
         s.scene.settings.seed = seed;
     }
     list
+}
+
+/// The scenes of edges ([`mod@edges`]) at the tests' sizes, each at its own samples per
+/// pixel times `scale`: two lights seen directly, a red quad in a sky, the shadows of two
+/// lights.
+pub fn edge_scenes(scale: f64) -> Vec<ExactScene> {
+    let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
+    vec![
+        ExactScene {
+            name: "edges of two lights seen directly".into(),
+            scene: scenes::lights_seen_directly(32, spp(256)),
+            expected: edges::flat,
+            block: EDGE_BLOCK,
+        },
+        ExactScene {
+            name: "edges of a red quad in a sky".into(),
+            scene: scenes::coloured_quad_in_sky(32, spp(1024)),
+            expected: edges::flat,
+            block: EDGE_BLOCK,
+        },
+        ExactScene {
+            name: "shadows of two lights".into(),
+            scene: scenes::shadows_of_two_lights(32, spp(256)),
+            expected: edges::shadow,
+            block: EDGE_BLOCK,
+        },
+    ]
 }
 
 /// The default seed of the renderer checks.
@@ -228,12 +274,27 @@ pub fn judge(subject: &str, rendered: &[Rendered], level: f64) -> Verdict {
 /// 100) rendered by `renderer`, each with its expected image.
 pub fn render_exact(renderer: Renderer, options: &Options) -> Vec<Rendered> {
     let list = exact_scenes(options.cases_or(100) as f64 / 100.0, options.seed_or(SEED));
+    render_exact_of(renderer, list, options)
+}
+
+/// The exact scenes `list` rendered by `renderer` at seed `options.seed` (default
+/// [`SEED`]), each with its expected image.
+pub fn render_exact_of(
+    renderer: Renderer,
+    list: Vec<ExactScene>,
+    options: &Options,
+) -> Vec<Rendered> {
+    let seed = options.seed_or(SEED);
     list.into_iter()
+        .map(|mut s| {
+            s.scene.settings.seed = seed;
+            s
+        })
         .map(|s| Rendered {
             image: renderer(&s.scene),
             expected: (s.expected)(&s.scene),
             name: s.name,
-            block: pool::BLOCK,
+            block: s.block,
         })
         .collect()
 }

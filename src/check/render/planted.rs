@@ -82,3 +82,61 @@ pub fn offset(renderer: Renderer<'_>, shift: DVec3) -> impl Fn(&Scene) -> Image 
         image
     }
 }
+
+/// `renderer` with every pixel's footprint changed: the scene rendered at twice the
+/// resolution with a quarter of the samples, each pixel then the mean of the half-size
+/// pixels at the offsets `offsets` (in half-pixels from its first, along each axis; those
+/// outside the image left out). Offsets `[0, 1]` are the pixel itself.
+fn refiltered<'a>(
+    renderer: Renderer<'a>,
+    offsets: &'static [i64],
+) -> impl Fn(&Scene) -> Image + Sync + 'a {
+    move |scene| {
+        let mut fine = scene.clone();
+        fine.camera.width *= 2;
+        fine.camera.height *= 2;
+        fine.settings.spp = scene.settings.spp.div_ceil(4);
+        let f = renderer(&fine);
+        let (w, h) = (scene.camera.width, scene.camera.height);
+        let mut image = Image {
+            width: w,
+            height: h,
+            mean: Vec::with_capacity((w * h) as usize),
+            var: Vec::with_capacity((w * h) as usize),
+            spp: Some(scene.settings.spp),
+        };
+        for y in 0..h {
+            for x in 0..w {
+                let (mut mean, mut var, mut n) = (DVec3::ZERO, DVec3::ZERO, 0.0);
+                for &oy in offsets {
+                    for &ox in offsets {
+                        let (fx, fy) = (2 * i64::from(x) + ox, 2 * i64::from(y) + oy);
+                        if (0..i64::from(f.width)).contains(&fx)
+                            && (0..i64::from(f.height)).contains(&fy)
+                        {
+                            let i = f.index(fx as u32, fy as u32);
+                            mean += f.mean[i];
+                            var += f.var[i];
+                            n += 1.0;
+                        }
+                    }
+                }
+                image.mean.push(mean / n);
+                image.var.push(var / (n * n));
+            }
+        }
+        image
+    }
+}
+
+/// `renderer` with every pixel's footprint moved by half a pixel right and down: the
+/// mistake of a jitter in `[0.5, 1.5)` (or a camera ray through the pixel's far corner).
+pub fn shifted_half_a_pixel(renderer: Renderer<'_>) -> impl Fn(&Scene) -> Image + Sync + '_ {
+    refiltered(renderer, &[1, 2])
+}
+
+/// `renderer` with every pixel's footprint twice as wide (a box of two pixels around the
+/// pixel's centre): the mistake of a jitter in `[-0.5, 1.5)`, or of a wider filter.
+pub fn twice_as_wide(renderer: Renderer<'_>) -> impl Fn(&Scene) -> Image + Sync + '_ {
+    refiltered(renderer, &[-1, 0, 1, 2])
+}

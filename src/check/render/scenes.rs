@@ -12,6 +12,13 @@
 //! * a glass sphere, a mirror sphere and a thin film in a sky whose radiance changes with
 //!   direction ([`glass_in_sky`], [`mirror_in_sky`], [`film_in_sky`]): only delta bounces,
 //!   whose expected images a deterministic splitting of every Fresnel branch computes.
+//! * scenes with sharp edges across pixels, whose every pixel has a closed form
+//!   ([`super::edges`]): a blackbody and a fluorescent light seen directly against black
+//!   ([`lights_seen_directly`]), a red Lambertian quad in a constant sky
+//!   ([`coloured_quad_in_sky`]), and the shadows that one black rectangle casts from two
+//!   small lights of different colours on the floor ([`shadows_of_two_lights`]). Their
+//!   edges are turned against the pixel grid, so that every pixel an edge crosses is
+//!   covered in its own share.
 //! * one scene with everything ([`everything`]): diffuse walls, glass, a mirror, a
 //!   dispersive sphere, a thin film, two lights and a sky, for the comparisons of the
 //!   estimators with one another.
@@ -293,6 +300,162 @@ pub fn film_in_sky(side: u32, spp: u32) -> Scene {
             [0.0, 1.4, 0.0],
         )),
     )
+}
+
+/// A light: the parallelogram from `corner` along `e1` and `e2` (emitting towards
+/// `e1 x e2`) with the spectrum `emission`.
+fn quad_emitter(corner: [f64; 3], e1: [f64; 3], e2: [f64; 3], emission: Spectrum) -> Emitter {
+    match QuadLight::new(
+        DVec3::from_array(corner),
+        DVec3::from_array(e1),
+        DVec3::from_array(e2),
+    ) {
+        Ok(q) => Emitter {
+            shape: LightShape::Quad(q),
+            emission,
+        },
+        Err(e) => unreachable!("a valid light: {e}"),
+    }
+}
+
+/// Two parallelogram lights in the plane `z = 0`, facing the camera of the delta scenes,
+/// their edges turned against the pixel grid, seen directly against black: a 5000 K
+/// blackbody on the left, the three-band fluorescent spectrum ([`fluorescent`]) on the
+/// right, whose colour depends on which wavelengths a pixel's samples draw. Every pixel's
+/// expected value is its covered share of each light's colour ([`super::edges::flat`]).
+pub fn lights_seen_directly(side: u32, spp: u32) -> Scene {
+    Scene {
+        camera: sky_camera(side),
+        settings: settings(spp, 1),
+        materials: Vec::new(),
+        shapes: Vec::new(),
+        lights: vec![
+            // e1 x e2 = -z: towards the camera.
+            quad_emitter(
+                [-0.55, -0.35, 0.0],
+                [0.1, 0.7, 0.0],
+                [0.35, -0.05, 0.0],
+                daylight_blackbody(),
+            ),
+            quad_emitter(
+                [0.1, -0.4, 0.0],
+                [-0.08, 0.75, 0.0],
+                [0.4, 0.06, 0.0],
+                fluorescent(),
+            ),
+        ],
+        environment: None,
+        hash: 0,
+        files: Vec::new(),
+    }
+}
+
+/// A reflectance that steps from 0.05 below 570 nm to 0.85 above 610 nm: a saturated
+/// red, whose colour depends on which wavelengths a pixel's samples draw.
+pub fn red_reflectance() -> Spectrum {
+    match Table::new(
+        vec![360.0, 570.0, 610.0, 830.0],
+        vec![0.05, 0.05, 0.85, 0.85],
+    ) {
+        Ok(t) => Spectrum::Table(t),
+        Err(e) => unreachable!("a valid table: {e}"),
+    }
+}
+
+/// A red Lambertian parallelogram ([`red_reflectance`]), its edges turned against the
+/// pixel grid,
+/// in a constant sky of daylight (D65, about 1): its radiance is `rho(lambda)
+/// L(lambda)`, since it sees nothing but the sky, and the sky's around it. An edge pixel
+/// mixes the two by its covered share ([`super::edges::flat`]); a pixel whose wavelengths
+/// depend on the point in it gets the wrong colour there. One wavelength per path (visible
+/// pdf): the hero's four lanes, a quarter of the wavelengths' numbers apart, cover every
+/// wavelength equally from any range of numbers a quarter long, so a hero estimate hardly
+/// sees that mistake.
+pub fn coloured_quad_in_sky(side: u32, spp: u32) -> Scene {
+    let mut settings = settings(spp, 1);
+    settings.wavelengths = Wavelength::Strategy(Strategy::Visible);
+    Scene {
+        camera: sky_camera(side),
+        settings,
+        materials: vec![Material::Lambert {
+            reflectance: red_reflectance(),
+        }],
+        shapes: vec![Shape {
+            // A diamond whose four edges are within 30 degrees of the vertical: at every
+            // edge the part of a pixel covered depends on the point's x.
+            geometry: Geometry::Quad(quad(
+                [-0.35, -0.1, 0.3],
+                [0.3, 0.55, 0.0],
+                [0.3, -0.5, 0.05],
+            )),
+            material: 0,
+        }],
+        lights: Vec::new(),
+        environment: Some(Environment::Constant(Spectrum::Table(
+            builtin("cie_illuminant_D65.csv").scaled(0.01),
+        ))),
+        hash: 0,
+        files: Vec::new(),
+    }
+}
+
+/// The floor (24 x 24, so that it fills the view) under two small lights facing down, a
+/// 5000 K one (peak 30) 0.2 x 0.2 at height 1.2 and a 2700 K one (peak 40) 0.2 x 0.2 at
+/// height 1.3, with a
+/// black 0.3 x 0.3 rectangle at height 0.5 between: two shadows of different colours, each
+/// with a penumbra a few pixels wide, overlapping in part. The light chosen for a shadow
+/// ray and the point on it both matter at every shadow's edge
+/// ([`super::edges::shadow`]).
+pub fn shadows_of_two_lights(side: u32, spp: u32) -> Scene {
+    let black = Spectrum::Constant(0.0);
+    Scene {
+        camera: floor_camera(side),
+        settings: settings(spp, 1),
+        materials: vec![
+            Material::Lambert {
+                reflectance: floor_reflectance(),
+            },
+            Material::Lambert { reflectance: black },
+        ],
+        shapes: vec![
+            Shape {
+                geometry: Geometry::Quad(quad(
+                    [-12.0, 0.0, -4.0],
+                    [24.0, 0.0, 0.0],
+                    [0.0, 0.0, 24.0],
+                )),
+                material: 0,
+            },
+            Shape {
+                geometry: Geometry::Quad(quad([-0.1, 0.5, 0.3], [0.3, 0.0, 0.0], [0.0, 0.0, 0.3])),
+                material: 1,
+            },
+        ],
+        lights: vec![
+            // e1 x e2 = x x z = -y: down.
+            quad_emitter(
+                [-0.3, 1.2, 0.0],
+                [0.2, 0.0, 0.0],
+                [0.0, 0.0, 0.2],
+                Spectrum::Blackbody {
+                    kelvin: 5000.0,
+                    peak: 30.0,
+                },
+            ),
+            quad_emitter(
+                [0.25, 1.3, 0.1],
+                [0.2, 0.0, 0.0],
+                [0.0, 0.0, 0.2],
+                Spectrum::Blackbody {
+                    kelvin: 2700.0,
+                    peak: 40.0,
+                },
+            ),
+        ],
+        environment: None,
+        hash: 0,
+        files: Vec::new(),
+    }
 }
 
 /// Everything at once, for the comparisons of estimators: a diffuse floor and back wall,

@@ -256,3 +256,289 @@ fn planted_biases_are_twice_their_thresholds() {
         );
     }
 }
+
+// ---- Edges (`src/check/render/edges.rs`) ----
+
+use glam::{DVec2, DVec3};
+use raylemma::check::render::{EDGE_BLOCK, edges, exact, independence, scenes};
+use raylemma::render::scene::LightShape;
+
+/// The exact scenes whose every pixel, edges included, is tested.
+const EDGES: [&str; 3] = [
+    "edges of two lights seen directly",
+    "edges of a red quad in a sky",
+    "shadows of two lights",
+];
+
+#[test]
+fn coverage_of_a_triangle_is_its_area_in_each_pixel() {
+    // The triangle (0, 0), (2, 0), (0, 2): pixel (0, 0) whole, (1, 0) and (0, 1) half,
+    // (1, 1) touched at a corner only. Both orientations.
+    let t = [DVec2::ZERO, DVec2::new(2.0, 0.0), DVec2::new(0.0, 2.0)];
+    let mut reversed = t;
+    reversed.reverse();
+    for poly in [&t[..], &reversed[..]] {
+        let got =
+            [(0, 0), (1, 0), (0, 1), (1, 1), (2, 0)].map(|(x, y)| edges::coverage(poly, x, y));
+        assert_eq!(got, [1.0, 0.5, 0.5, 0.0, 0.0], "{poly:?}");
+    }
+    // A thin sliver across a pixel: 0.1 x 1 at a slant of 1 in 4.
+    let sliver = [
+        DVec2::new(0.3, -1.0),
+        DVec2::new(0.4, -1.0),
+        DVec2::new(0.9, 3.0),
+        DVec2::new(0.8, 3.0),
+    ];
+    let c = edges::coverage(&sliver, 0, 0);
+    assert!((c - 0.1).abs() < 1e-15, "sliver: {c}");
+}
+
+#[test]
+fn image_point_inverts_the_camera_ray() {
+    let scene = scenes::lights_seen_directly(32, 1);
+    let mut worst: f64 = 0.0;
+    for (px, py) in [
+        (0.0, 0.0),
+        (31.999, 0.5),
+        (13.25, 7.75),
+        (32.0, 32.0),
+        (5.5, 30.1),
+    ] {
+        let (o, d) = exact::camera_ray(&scene.camera, px, py);
+        let p = edges::image_point(&scene.camera, o + 3.7 * d).unwrap_or(DVec2::NAN);
+        worst = worst.max((p - DVec2::new(px, py)).abs().max_element());
+    }
+    // NaN-safe: a NaN makes `worst < ...` false.
+    assert!(worst < 1e-12, "image_point misses by {worst} pixels");
+    let behind = scene.camera.position - (scene.camera.look_at - scene.camera.position);
+    assert_eq!(edges::image_point(&scene.camera, behind), None);
+}
+
+/// The irradiance from a rectangle part of which an occluder hides, by brute force: the
+/// light's area cut into `n x n` cells, each cell's centre tested against the occluder's
+/// rectangle by the segment's crossing of its plane, `cos cos' / r^2` summed.
+fn brute_force_irradiance(p: DVec3, light: &edges::Rect, occ: &edges::Rect, n: u32) -> f64 {
+    let (dx, dz) = (
+        (light.x[1] - light.x[0]) / f64::from(n),
+        (light.z[1] - light.z[0]) / f64::from(n),
+    );
+    let mut sum = 0.0;
+    for i in 0..n {
+        for j in 0..n {
+            let q = DVec3::new(
+                light.x[0] + (f64::from(i) + 0.5) * dx,
+                light.y,
+                light.z[0] + (f64::from(j) + 0.5) * dz,
+            );
+            let s = (occ.y - p.y) / (q.y - p.y);
+            let cross = p + s * (q - p);
+            let hidden = (occ.x[0]..=occ.x[1]).contains(&cross.x)
+                && (occ.z[0]..=occ.z[1]).contains(&cross.z);
+            if !hidden {
+                let v = q - p;
+                let r2 = v.length_squared();
+                let cos = v.y / r2.sqrt();
+                sum += cos * cos / r2 * dx * dz;
+            }
+        }
+    }
+    sum
+}
+
+#[test]
+fn the_shadow_s_irradiance_matches_a_brute_force_sum_across_the_penumbra() {
+    let scene = scenes::shadows_of_two_lights(32, 1);
+    let rect = |k: usize| match &scene.lights[k].shape {
+        LightShape::Quad(q) => edges::Rect::of(q.shape()),
+        LightShape::Sphere(_) => unreachable!("the scene's lights are rectangles"),
+    };
+    let occ = match &scene.shapes[1].geometry {
+        raylemma::render::scene::Geometry::Quad(q) => edges::Rect::of(q),
+        raylemma::render::scene::Geometry::Sphere(_) => unreachable!("the occluder is a quad"),
+    };
+    let mut partly = 0;
+    for k in 0..2 {
+        let light = rect(k);
+        // A line of floor points across both shadows.
+        for step in 0..=40 {
+            let p = DVec3::new(-0.6 + 0.03 * f64::from(step), 0.0, 0.55);
+            let exact = edges::unoccluded_irradiance(p, &light, &occ);
+            let whole = edges::unoccluded_irradiance(
+                p,
+                &light,
+                &edges::Rect {
+                    x: [9.0, 9.5],
+                    z: [9.0, 9.5],
+                    y: occ.y,
+                },
+            );
+            // The cells the shadow's outline crosses are all in or all out: an error of
+            // about one cell's side along it, relative.
+            let brute = brute_force_irradiance(p, &light, &occ, 400);
+            assert!(
+                (exact - brute).abs() <= 2.5e-3 * whole,
+                "light {k} at {p}: Lambert less the overlap {exact}, brute force {brute}"
+            );
+            if exact > 0.05 * whole && exact < 0.95 * whole {
+                partly += 1;
+            }
+        }
+    }
+    assert!(
+        partly >= 6,
+        "only {partly} points in a penumbra: the line misses the shadows"
+    );
+}
+
+#[test]
+fn the_shadow_s_quadrature_is_far_below_the_noise() {
+    // The composite rule of the tests (6 x 6 squares) against one twice as fine, in units
+    // of each pixel's standard error at the tests' samples.
+    let scene = &exact_images()
+        .iter()
+        .find(|r| r.name == "shadows of two lights")
+        .unwrap_or_else(|| panic!("no shadow scene"));
+    let list = render::edge_scenes(1.0);
+    let s = &list[2].scene;
+    let (coarse, fine) = (edges::shadow_with(s, 6), edges::shadow_with(s, 12));
+    let mut worst: f64 = 0.0;
+    let mut tested = 0;
+    for i in 0..coarse.mean.len() {
+        if let (Some(a), Some(b)) = (coarse.mean[i], fine.mean[i]) {
+            let se = scene.image.var[i].max_element().sqrt().max(1e-300);
+            worst = worst.max(((a - b).abs().max_element()) / se);
+            tested += 1;
+        }
+    }
+    assert!(tested > 900, "only {tested} pixels tested");
+    assert!(
+        worst < 0.01,
+        "the rule moves a pixel by {worst} standard errors"
+    );
+}
+
+#[test]
+fn edges_reject_a_footprint_half_a_pixel_off() {
+    let planted = planted::shifted_half_a_pixel(&ours);
+    let v = judge(
+        "planted: footprint half a pixel off",
+        &render::render_exact_of(&planted, render::edge_scenes(1.0), &Options::default()),
+        test_alpha(),
+    );
+    for name in EDGES {
+        assert!(
+            v.failed(&format!("{name}: blocks")),
+            "{name} missed it:\n{v}"
+        );
+    }
+}
+
+#[test]
+fn edges_reject_a_footprint_twice_as_wide() {
+    let planted = planted::twice_as_wide(&ours);
+    let v = judge(
+        "planted: footprint twice as wide",
+        &render::render_exact_of(&planted, render::edge_scenes(1.0), &Options::default()),
+        test_alpha(),
+    );
+    for name in EDGES {
+        assert!(
+            v.failed(&format!("{name}: blocks")),
+            "{name} missed it:\n{v}"
+        );
+    }
+}
+
+// ---- Independent dimensions (`src/check/render/independence.rs`) ----
+
+fn independence_images() -> &'static [Rendered] {
+    static IMAGES: OnceLock<Vec<Rendered>> = OnceLock::new();
+    IMAGES.get_or_init(|| independence::render_independence(&ours, &Options::default()))
+}
+
+#[test]
+fn the_renderer_s_sample_dimensions_are_independent() {
+    let v = judge(
+        "renderer: its sample dimensions are independent",
+        independence_images(),
+        test_alpha(),
+    );
+    println!("{v}");
+    v.assert_pass();
+}
+
+#[test]
+fn independence_rejects_a_dimension_that_reuses_another() {
+    // Each twin must fail on the scenes where its dependence shows. (The hero's four
+    // lanes make it nearly blind to the first: the red quad has one wavelength per path.)
+    let shows: [&[&str]; 2] = [
+        &["edges of a red quad in a sky"],
+        &["shadows of two lights", "floor under two lights"],
+    ];
+    let mut missed = Vec::new();
+    for ((what, from, to), scenes) in independence::TWINS.into_iter().zip(shows) {
+        let twin = independence::reused(from, to);
+        let v = independence::independence(&twin, &Options::default());
+        for name in scenes {
+            if !(v.failed(&format!("{name}: global")) || v.failed(&format!("{name}: blocks"))) {
+                missed.push(format!("{what}: {name} missed it:\n{v}"));
+            }
+        }
+    }
+    assert!(missed.is_empty(), "{}", missed.join("\n"));
+}
+
+#[test]
+fn edge_scenes_test_every_pixel_the_occluder_s_outline_excepted() {
+    for s in render::edge_scenes(0.01) {
+        let e = (s.expected)(&s.scene);
+        let n = (e.width * e.height) as usize;
+        let least = if s.name.starts_with("shadows") {
+            n * 9 / 10
+        } else {
+            n
+        };
+        assert!(
+            e.tested() >= least,
+            "{}: {} of {n} pixels tested",
+            s.name,
+            e.tested()
+        );
+        assert_eq!(s.block, EDGE_BLOCK);
+    }
+}
+
+/// The twins of the edge and independence checks are rejected in every seed of the power
+/// table (`render_test_power` in `figures/values.json`, its second table), each with its
+/// largest `|z|` at least 1.5 times the critical value in the least of them: the fixed
+/// seeds of the tests above cannot be the lucky ones.
+#[test]
+fn planted_mistakes_are_rejected_in_every_seed_of_the_power_table() {
+    let figures = crate::support::root().join("figures");
+    let values = raylemma_values::read(&figures).unwrap_or_else(|e| panic!("{e}"));
+    let power = &values["render_test_power"].values;
+    let number = |key: &str| power.get(key).and_then(|v| v.number).unwrap_or(f64::NAN);
+    let mut asserted: Vec<(&str, &str)> = Vec::new();
+    for twin in ["footprint half a pixel off", "footprint twice as wide"] {
+        asserted.extend(EDGES.iter().map(|&s| (twin, s)));
+    }
+    let [(first, ..), (second, ..)] = independence::TWINS;
+    asserted.push((first, "edges of a red quad in a sky"));
+    asserted.push((second, "shadows of two lights"));
+    asserted.push((second, "floor under two lights"));
+    for (twin, scene) in asserted {
+        let key = format!(
+            "twins.{}.{}",
+            raylemma_values::slug(twin),
+            raylemma_values::slug(scene)
+        );
+        let (rejected, ratio) = (
+            number(&format!("{key}.rejected")),
+            number(&format!("{key}.least_ratio")),
+        );
+        assert!(
+            rejected == 10.0 && ratio >= 1.5,
+            "{twin} on {scene}: rejected in {rejected} of 10 seeds, least |z| / critical {ratio}"
+        );
+    }
+}

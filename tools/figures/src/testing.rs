@@ -13,10 +13,14 @@ use rayon::prelude::*;
 use super::{Output, Record, Settings};
 use crate::plot::BoxError;
 use raylemma::check::Options;
+use raylemma::check::render::independence::{self, render_independence};
 use raylemma::check::render::pool::pool_blocks;
 use raylemma::check::render::{
-    Rendered, ours, planted, references, render_agreement, render_exact,
+    Rendered, Renderer, edge_scenes, ours, planted, references, render_agreement, render_exact,
+    render_exact_of,
 };
+use raylemma::render::Scene;
+use raylemma::render::image::Image;
 use raylemma::stats::{sidak, test_alpha};
 use raylemma_values::slug;
 
@@ -154,6 +158,96 @@ fn power_claims(rec: &mut Record, rows: &[Row]) {
     );
 }
 
+/// A planted mistake: its check (`exact` or `independence`), its name, the renderer.
+type Twin = (
+    &'static str,
+    &'static str,
+    Box<dyn Fn(&Scene) -> Image + Sync>,
+);
+
+/// The planted mistakes of the edge and independence checks, each a renderer: the
+/// footprint moved or widened, a dimension reusing another's number.
+fn twins() -> Vec<Twin> {
+    let mut v: Vec<Twin> = vec![
+        (
+            "exact",
+            "footprint half a pixel off",
+            Box::new(planted::shifted_half_a_pixel(&ours)),
+        ),
+        (
+            "exact",
+            "footprint twice as wide",
+            Box::new(planted::twice_as_wide(&ours)),
+        ),
+    ];
+    for (what, from, to) in independence::TWINS {
+        v.push((
+            "independence",
+            what,
+            Box::new(independence::reused(from, to)),
+        ));
+    }
+    v
+}
+
+/// The second table: each planted mistake of [`twins`] on each scene of its check, over
+/// `seeds` seeds at the suite's level: in how many seeds the check rejects it, and the
+/// smallest ratio of the largest `|z|` (whole image or block) to the critical value.
+fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxError> {
+    writeln!(
+        md,
+        "\n| check | planted mistake | scene | rejected in {seeds} seeds | least \\|z\\| / critical |"
+    )?;
+    writeln!(md, "|---|---|---|---:|---:|")?;
+    let options = |s: u64| Options::default().seed(0x7_1A5 + s);
+    for (check, what, twin) in twins() {
+        let twin: Renderer = twin.as_ref();
+        let runs: Vec<Vec<Rendered>> = (0..seeds)
+            .into_par_iter()
+            .map(|s| match check {
+                "exact" => render_exact_of(twin, edge_scenes(1.0), &options(s)),
+                _ => render_independence(twin, &options(s)),
+            })
+            .collect();
+        let items = runs[0].len();
+        let level = sidak(test_alpha(), items as u32);
+        for i in 0..items {
+            let mut rejected = 0;
+            let mut least = f64::INFINITY;
+            for run in &runs {
+                let r = &run[i];
+                let p = pool_blocks(&r.image, &r.expected, level, r.block);
+                if !p.passed() {
+                    rejected += 1;
+                }
+                let z = if p.global_z.is_nan() || p.block_z.is_nan() {
+                    f64::INFINITY
+                } else {
+                    p.global_z.max(p.block_z)
+                };
+                least = least.min(z / p.critical);
+            }
+            let key = format!("twins.{}.{}", slug(what), slug(&runs[0][i].name));
+            rec.number(&format!("{key}.rejected"), f64::from(rejected), "int");
+            rec.number(&format!("{key}.least_ratio"), least, ".2");
+            writeln!(
+                md,
+                "| {check} | {what} | {} | {rejected} | {least:.2} |",
+                runs[0][i].name
+            )?;
+        }
+    }
+    writeln!(
+        md,
+        "\n*Each planted mistake rendered with {seeds} seeds (other seeds than the first \
+         table's) and judged by its check at the level it has in the suite. \"least |z| / \
+         critical\": over the seeds, the smallest ratio of the scene's largest |z| (whole \
+         image or one block) to its critical value; above 1 in every seed is a rejection \
+         every time.*"
+    )?;
+    Ok(())
+}
+
 fn power_md(settings: &Settings, rec: &mut Record) -> Result<Vec<u8>, BoxError> {
     let seeds: u64 = if settings.quick { 2 } else { 10 };
     let root = settings.root.clone();
@@ -170,8 +264,13 @@ fn power_md(settings: &Settings, rec: &mut Record) -> Result<Vec<u8>, BoxError> 
         .into_par_iter()
         .map(|s| references::render_references(&references::ours_window, &root, &options(s)))
         .collect::<Result<_, _>>()?;
+    let indep: Vec<Vec<Rendered>> = (0..seeds)
+        .into_par_iter()
+        .map(|s| render_independence(&ours, &options(s)))
+        .collect();
     let mut rows = rows_of("exact", &exact);
     rows.extend(rows_of("agreement", &agreement));
+    rows.extend(rows_of("independence", &indep));
     rows.extend(rows_of("references", &refs));
     let mut md = String::new();
     writeln!(
@@ -197,6 +296,7 @@ fn power_md(settings: &Settings, rec: &mut Record) -> Result<Vec<u8>, BoxError> 
         )?;
     }
     power_claims(rec, &rows);
+    twins_md(&mut md, rec, seeds)?;
     writeln!(
         md,
         "\n*Each check's images rendered with {seeds} seeds at the settings of `cargo test` \
