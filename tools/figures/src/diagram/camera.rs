@@ -14,9 +14,6 @@ use crate::{Record, Settings};
 use raylemma::render::camera::Camera;
 use raylemma::render::scene::CameraSpec;
 
-// ---------------------------------------------------------------------------------------
-// The reference renderer: the camera's convention.
-
 /// The camera of the diagram: the renderer's own, for its convention.
 const CAMERA_FOV_DEG: f64 = 50.0;
 const CAMERA_PIXELS: (u32, u32) = (8, 6);

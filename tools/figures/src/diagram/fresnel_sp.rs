@@ -9,9 +9,6 @@ use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::optics::reflect::{reflect, refract};
 
-// ---------------------------------------------------------------------------------------
-// Fresnel and Schlick: s and p, and the beam's footprint.
-
 pub(super) fn fresnel_sp(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (n1, n2) = (1.0, 1.5);
     let theta_i: f64 = 50.0;

@@ -11,9 +11,6 @@ use crate::{Record, Settings};
 use raylemma::spectral::wavelength::{self, N, Strategy};
 use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
-// ---------------------------------------------------------------------------------------
-// Wavelength sampling: where each strategy puts its lanes.
-
 /// The uniform number every row of the lanes diagram is drawn with.
 const LANES_U: f64 = 0.3;
 

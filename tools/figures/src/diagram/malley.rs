@@ -10,9 +10,6 @@ use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::sampling::disc::disc_concentric;
 
-// ---------------------------------------------------------------------------------------
-// Cosine-weighted hemisphere: Malley's method.
-
 pub(super) fn malley(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut d = Svg::new(370.0);
     // Side view: the section y = 0 through the disc and the hemisphere above it.

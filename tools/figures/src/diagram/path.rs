@@ -11,9 +11,6 @@ use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::optics::reflect::reflect;
 
-// ---------------------------------------------------------------------------------------
-// The reference renderer: one path.
-
 /// A camera icon at `c` looking along `dir`: a body and a lens opening forwards.
 fn camera_icon(d: &mut Svg, c: V, dir: V) {
     let f = dir.normalize();

@@ -7,9 +7,6 @@ use super::svg::Svg;
 use crate::plot::BoxError;
 use crate::{Record, Settings};
 
-// ---------------------------------------------------------------------------------------
-// Shadow-ray pdfs: from area to solid angle.
-
 pub(super) fn solid_angle(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     let mut d = Svg::new(380.0);
     let p = v(130.0, 250.0);

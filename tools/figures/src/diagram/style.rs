@@ -40,7 +40,7 @@ pub(super) const SKY: &str = "#56B4E9";
 pub(super) struct Pen {
     pub(super) colour: &'static str,
     pub(super) width: f64,
-    pub(super) dash: &'static str,
+    dash: &'static str,
     pub(super) opacity: f64,
 }
 

@@ -19,7 +19,7 @@ pub(super) fn point(p: V) -> String {
     format!("{},{}", num(p.x), num(p.y))
 }
 
-pub(super) fn escape(s: &str) -> String {
+fn escape(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")

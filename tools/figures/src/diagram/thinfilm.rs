@@ -17,9 +17,6 @@ use crate::{Record, Settings};
 use raylemma::optics::reflect::{reflect, refract};
 use raylemma::optics::thinfilm::{self, Film};
 
-// ---------------------------------------------------------------------------------------
-// Thin-film interference: the path difference, and the Airy sum as phasors.
-
 /// The film of the diagram: a free-standing film of index 2.4 (diamond's, the Fresnel
 /// chapter's densest medium) in air, strongly enough reflecting that the phasors spiral.
 const FILM: (f64, f64, f64) = (1.0, 2.4, 1.0);

@@ -38,9 +38,9 @@ pub(super) fn tick(scale: Scale, v: f64) -> String {
 }
 
 /// Space for the x axis's tick labels and title, and the y axis's.
-pub(super) const X_AXIS: u32 = 50;
+const X_AXIS: u32 = 50;
 
-pub(super) const Y_AXIS: u32 = 80;
+const Y_AXIS: u32 = 80;
 
 /// A chart builder on `area` with the book's axis areas and margins.
 pub fn builder<'a, 'b>(area: &'a SvgArea<'b>) -> ChartBuilder<'a, 'b, SVGBackend<'b>> {

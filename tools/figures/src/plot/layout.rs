@@ -19,7 +19,7 @@ use super::text::draw_title;
 pub const WIDTH: u32 = 800;
 
 /// Height of a panel: alone, stacked in one column, or two across.
-pub(super) fn panel_height(columns: usize, panels: usize) -> u32 {
+fn panel_height(columns: usize, panels: usize) -> u32 {
     match (columns, panels) {
         (1, 1) => 440,
         (1, _) => 330,
@@ -89,7 +89,7 @@ pub fn ranged_chart(panels: &[RangedPanel]) -> Result<Vec<u8>, BoxError> {
 
 /// Draws `panel` on `area`, with its own legend when `own_legend`: where
 /// [`Panel::legend`] says, [`Legend::Below`] in the bottom `legend_below` units of `area`.
-pub(super) fn draw_panel(
+fn draw_panel(
     panel: &Panel,
     area: &SvgArea<'_>,
     own_legend: bool,

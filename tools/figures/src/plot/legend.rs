@@ -15,7 +15,7 @@ use super::text::{TICK_PX, font, text_width};
 pub(super) const LEGEND_ROW: i32 = 22;
 
 /// Length of a legend's line sample.
-pub(super) const SAMPLE: i32 = 36;
+const SAMPLE: i32 = 36;
 
 /// The legend entries shared by all panels, when there are two or more panels and they
 /// have the same entries.
@@ -26,7 +26,7 @@ pub(super) fn shared_keys(panels: &[Panel]) -> Option<Vec<Key>> {
 }
 
 /// Width of a legend entry: sample, gap, label.
-pub(super) fn key_width(key: &Key) -> i32 {
+fn key_width(key: &Key) -> i32 {
     SAMPLE + 8 + text_width(&key.label, TICK_PX)
 }
 
@@ -104,7 +104,7 @@ where
 }
 
 /// One legend entry, its sample starting at `(x, y)` (the row's middle).
-pub(super) fn draw_key<DB: DrawingBackend>(
+fn draw_key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     key: &Key,
     (x, y): (i32, i32),

@@ -34,7 +34,7 @@ pub(super) enum Shape {
     Ring,
 }
 
-pub(super) const SHAPES: [Shape; 6] = [
+const SHAPES: [Shape; 6] = [
     Shape::Circle,
     Shape::Square,
     Shape::Triangle,

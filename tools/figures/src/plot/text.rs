@@ -10,9 +10,9 @@ use plotters::style::{FontStyle, register_font};
 use super::BoxError;
 use super::canvas::SvgArea;
 
-pub(super) static FONT: &[u8] = include_bytes!("../../../../assets/fonts/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../../../assets/fonts/DejaVuSans.ttf");
 
-pub(super) static REGISTER: Once = Once::new();
+static REGISTER: Once = Once::new();
 
 /// The font family the SVG names: the embedded font first (most Linux machines have it),
 /// then fonts of similar width that Windows and macOS have.
@@ -29,7 +29,7 @@ pub const TITLE_PX: f64 = 16.5;
 
 /// plotters' SVG backend writes `font-size` as a text style's size / 1.24 (its size is a
 /// line height, the SVG's an em).
-pub(super) const SIZE_PER_PX: f64 = 1.24;
+const SIZE_PER_PX: f64 = 1.24;
 
 /// Registers the embedded font under [`FAMILY`], and under `sans-serif` for the PNG
 /// pictures that name that family (once per process).
@@ -60,7 +60,7 @@ pub(super) fn text_width(text: &str, px: f64) -> i32 {
 }
 
 /// `text` broken at spaces into lines no wider than `width` at `px`.
-pub(super) fn wrap(text: &str, px: f64, width: i32) -> Vec<String> {
+fn wrap(text: &str, px: f64, width: i32) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     for word in text.split(' ') {
         match lines.last_mut() {

@@ -1,6 +1,8 @@
 //! The rough dispersive toy (`wavelength_dispersive_mis.md`), of the chapter *Wavelength
 //! sampling and hero wavelengths*: what a rough dispersive vertex does with the secondary
-//! lanes (termination, the hero's path pdf, Wilkie et al.'s weights), timed.
+//! lanes (termination, the hero's path pdf, Wilkie et al.'s weights). The toy of
+//! `tests/book/spectral/wavelength.rs` (anchor `rough`), with the same random numbers, here
+//! timed too: each choice evaluates only what it needs.
 
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -17,11 +19,6 @@ use raylemma::spectral::spectrum::builtin;
 use raylemma::spectral::wavelength::{N, Wavelengths, hero_uniform};
 use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 use raylemma::stats::ttest::Summary;
-
-// ---------------------------------------------------------------------------------------
-// A rough dispersive interface: termination, the hero's path pdf, Wilkie et al.'s weights.
-// The toy of `tests/book/spectral/wavelength.rs` (anchor `rough`), with the same random
-// numbers, here timed too: each choice evaluates only what it needs.
 
 /// What a rough dispersive vertex does with the secondary lanes.
 #[derive(Clone, Copy, Debug, PartialEq)]
