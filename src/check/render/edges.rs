@@ -137,13 +137,22 @@ fn colour(s: &Spectrum) -> DVec3 {
     rgb(|nm| s.eval(nm))
 }
 
+/// The fewest samples expected to meet a polygon in a tested pixel. A pixel that a
+/// polygon's corner barely touches sees it in a sample or two, or in none: its mean is far
+/// from normal and its observed variance often zero, and a block made of such pixels and
+/// black ones would raise false alarms (an expected value of 0.003 against one lucky
+/// sample). [`flat`] therefore leaves out a pixel a polygon covers in a share below
+/// `SLIVER_HITS / spp`.
+pub const SLIVER_HITS: f64 = 20.0;
+
 // ANCHOR: flat
 /// The expected image of flat polygons of uniform radiance over a uniform background,
-/// every pixel tested, edges included: either lights seen directly against black (no
+/// edges included: either lights seen directly against black (no
 /// shapes, no environment), or one Lambertian quad in a constant sky (no lights), whose
 /// radiance is `rho(lambda) L(lambda)` (the quad sees nothing but the sky). A pixel's mean
 /// is `sum_k c_k rgb(L_k) + (1 - sum_k c_k) rgb(L_background)`, `c_k` the share of the
-/// pixel covered by polygon `k` ([`coverage`]).
+/// pixel covered by polygon `k` ([`coverage`]); a pixel that a polygon covers in a share
+/// below `SLIVER_HITS / spp` is not tested ([`SLIVER_HITS`]).
 ///
 /// # Panics
 /// If the scene is not of that kind, a light does not face the camera, or two polygons'
@@ -187,17 +196,20 @@ pub fn flat(scene: &Scene) -> Expected {
             );
         }
     }
+    let sliver = SLIVER_HITS / f64::from(scene.settings.spp.max(1));
     let mean = (0..c.height)
         .flat_map(|y| (0..c.width).map(move |x| (x, y)))
         .map(|(x, y)| {
             let mut covered = 0.0;
             let mut sum = DVec3::ZERO;
+            let mut tested = true;
             for (poly, col) in &polygons {
                 let share = coverage(poly, x, y);
+                tested &= share == 0.0 || share >= sliver;
                 covered += share;
                 sum += share * *col;
             }
-            Some(sum + (1.0 - covered) * background)
+            tested.then_some(sum + (1.0 - covered) * background)
         })
         .collect();
     Expected::exact(c.width, c.height, mean)

@@ -230,6 +230,33 @@ pub fn render_independence(renderer: Renderer, options: &Options) -> Vec<Rendere
         .collect()
 }
 
+/// The comparisons `rendered` (of [`render_independence`], at the same `options`) again,
+/// with `renderer` as the candidate: each scene rendered by it at the candidate's seed and
+/// compared with the same render from independent dimensions. A planted twin needs only
+/// its own renders this way.
+///
+/// # Panics
+/// If a name of `rendered` is not one of [`independence_scenes`].
+pub fn rejudge(renderer: Renderer, rendered: &[Rendered], options: &Options) -> Vec<Rendered> {
+    let seed = options.seed_or(SEED) + 200;
+    let scenes = independence_scenes(options.cases_or(100) as f64 / 100.0);
+    rendered
+        .iter()
+        .map(|r| {
+            let s = scenes
+                .iter()
+                .find(|s| s.name == r.name)
+                .unwrap_or_else(|| panic!("rejudge: no scene {:?}", r.name));
+            let mut scene = s.scene.clone();
+            scene.settings.seed = seed + 1;
+            Rendered {
+                image: renderer(&scene),
+                ..r.clone()
+            }
+        })
+        .collect()
+}
+
 /// The renderer's own assignment of numbers to dimensions agrees with independent
 /// dimensions: [`render_independence`], judged.
 pub fn independence(renderer: Renderer, options: &Options) -> Verdict {

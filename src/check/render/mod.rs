@@ -229,7 +229,7 @@ pub fn edge_scenes(scale: f64) -> Vec<ExactScene> {
         },
         ExactScene {
             name: "edges of a red quad in a sky".into(),
-            scene: scenes::coloured_quad_in_sky(32, spp(1024)),
+            scene: scenes::coloured_quad_in_sky(32, spp(2048)),
             expected: edges::flat,
             block: EDGE_BLOCK,
         },

@@ -478,7 +478,16 @@ fn independence_rejects_a_dimension_that_reuses_another() {
     let mut missed = Vec::new();
     for ((what, from, to), scenes) in independence::TWINS.into_iter().zip(shows) {
         let twin = independence::reused(from, to);
-        let v = independence::independence(&twin, &Options::default());
+        let mine: Vec<Rendered> = independence_images()
+            .iter()
+            .filter(|r| scenes.contains(&r.name.as_str()))
+            .cloned()
+            .collect();
+        let again = independence::rejudge(&twin, &mine, &Options::default());
+        // At the level of the whole check, as the power table judges it.
+        let level = raylemma::stats::sidak(test_alpha(), independence_images().len() as u32);
+        let level = 1.0 - (1.0 - level).powi(mine.len() as i32);
+        let v = judge("planted: a reused dimension", &again, level);
         for name in scenes {
             if !(v.failed(&format!("{name}: global")) || v.failed(&format!("{name}: blocks"))) {
                 missed.push(format!("{what}: {name} missed it:\n{v}"));
@@ -488,18 +497,15 @@ fn independence_rejects_a_dimension_that_reuses_another() {
     assert!(missed.is_empty(), "{}", missed.join("\n"));
 }
 
+/// Every pixel of the scenes of edges is tested but the occluder's outline and the slivers
+/// a polygon's corner barely touches (`edges::SLIVER_HITS`): at least 95 % of each image.
 #[test]
-fn edge_scenes_test_every_pixel_the_occluder_s_outline_excepted() {
-    for s in render::edge_scenes(0.01) {
+fn edge_scenes_test_nearly_every_pixel() {
+    for s in render::edge_scenes(1.0) {
         let e = (s.expected)(&s.scene);
         let n = (e.width * e.height) as usize;
-        let least = if s.name.starts_with("shadows") {
-            n * 9 / 10
-        } else {
-            n
-        };
         assert!(
-            e.tested() >= least,
+            e.tested() >= n * 19 / 20,
             "{}: {} of {n} pixels tested",
             s.name,
             e.tested()
@@ -517,7 +523,12 @@ fn planted_mistakes_are_rejected_in_every_seed_of_the_power_table() {
     let figures = crate::support::root().join("figures");
     let values = raylemma_values::read(&figures).unwrap_or_else(|e| panic!("{e}"));
     let power = &values["render_test_power"].values;
-    let number = |key: &str| power.get(key).and_then(|v| v.number).unwrap_or(f64::NAN);
+    // A ratio shown as "inf" (a pixel of zero variance off its expected value) is infinite.
+    let number = |key: &str| match power.get(key) {
+        Some(v) if v.shown == "inf" => f64::INFINITY,
+        Some(v) => v.number.unwrap_or(f64::NAN),
+        None => f64::NAN,
+    };
     let mut asserted: Vec<(&str, &str)> = Vec::new();
     for twin in ["footprint half a pixel off", "footprint twice as wide"] {
         asserted.extend(EDGES.iter().map(|&s| (twin, s)));

@@ -200,6 +200,8 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
     )?;
     writeln!(md, "|---|---|---|---:|---:|")?;
     let options = |s: u64| Options::default().seed(0x7_1A5 + s);
+    // (mistake, scene, seeds that rejected it), for the chapter's claims.
+    let mut results: Vec<(&str, String, u64)> = Vec::new();
     for (check, what, twin) in twins() {
         let twin: Renderer = twin.as_ref();
         let runs: Vec<Vec<Rendered>> = (0..seeds)
@@ -212,7 +214,7 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
         let items = runs[0].len();
         let level = sidak(test_alpha(), items as u32);
         for i in 0..items {
-            let mut rejected = 0;
+            let mut rejected = 0u64;
             let mut least = f64::INFINITY;
             for run in &runs {
                 let r = &run[i];
@@ -227,8 +229,9 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
                 };
                 least = least.min(z / p.critical);
             }
+            results.push((what, runs[0][i].name.clone(), rejected));
             let key = format!("twins.{}.{}", slug(what), slug(&runs[0][i].name));
-            rec.number(&format!("{key}.rejected"), f64::from(rejected), "int");
+            rec.number(&format!("{key}.rejected"), rejected as f64, "int");
             rec.number(&format!("{key}.least_ratio"), least, ".2");
             writeln!(
                 md,
@@ -237,6 +240,37 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
             )?;
         }
     }
+    let rejected = |what: &str, scene: &str| {
+        results
+            .iter()
+            .find(|(w, s, _)| *w == what && s == scene)
+            .map_or(0, |r| r.2)
+    };
+    let every = |what: &str, scenes: &[&str]| scenes.iter().all(|s| rejected(what, s) == seeds);
+    let edges = [
+        "edges of two lights seen directly",
+        "edges of a red quad in a sky",
+        "shadows of two lights",
+    ];
+    let [(jitter, ..), (choice, ..)] = independence::TWINS;
+    rec.claim(
+        "footprint_twins_rejected_in_every_seed",
+        every("footprint half a pixel off", &edges) && every("footprint twice as wide", &edges),
+        "both footprint mistakes rejected in every seed on the three scenes of edges",
+    );
+    rec.claim(
+        "reuse_twins_rejected_in_every_seed_where_they_show",
+        every(jitter, &["edges of a red quad in a sky"])
+            && every(choice, &["shadows of two lights", "floor under two lights"]),
+        "the reused wavelengths on the red quad, the reused light choice on the two two-light scenes",
+    );
+    let hero = rejected(jitter, "edges of two lights seen directly");
+    rec.number("hero_lights_reused_jitter_rejected", hero as f64, "int");
+    rec.claim(
+        "hero_lights_miss_the_reused_jitter_mostly",
+        hero * 10 < 9 * seeds,
+        format!("the lights (hero) reject the reused jitter in {hero} of {seeds} seeds"),
+    );
     writeln!(
         md,
         "\n*Each planted mistake rendered with {seeds} seeds (other seeds than the first \
