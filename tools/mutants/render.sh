@@ -9,7 +9,11 @@
 #
 #   tools/mutants/render.sh [N [SHARD...]]     (default N = 8, SHARD = 0)
 #
-# Files: $RENDER_FILES (default: integrator, tracer, camera, pixel, driver). N = 1 is
+# Files: $RENDER_FILES (default: integrator, tracer, camera, pixel, driver); the table is
+# written to $TABLE (default figures/mutants_render.md). The pixel's footprint, every mutant:
+#   RENDER_FILES="src/render/pixel.rs src/render/camera.rs src/render/driver.rs" \
+#   TABLE=figures/mutants_footprint.md OUT=/tmp/raylemma-mutants-footprint tools/mutants/render.sh 1
+# N = 1 is
 # every mutant: some 300 for the default files, hours on 2 cores. Mutants are made in place
 # (--in-place) so that builds are incremental: run it in a clean checkout of its own
 # (git worktree add), never in one you are editing. Results accumulate in $OUT (default
@@ -31,7 +35,11 @@ for shard in "${shards[@]}"; do
     mutate "$(echo "$file" | tr '/' '_').rr.s$shard-of-$n" "renderer::" -f "$file" --shard "$shard/$n" --sharding round-robin
   done
 done
-python3 - "$here" "$out" "$n" "${shards[*]}" > "$root/figures/mutants_render.md" <<'PY'
+export TABLE="${TABLE:-figures/mutants_render.md}"
+table="$root/$TABLE"
+files_env="${RENDER_FILES:-}"
+python3 - "$here" "$out" "$n" "${shards[*]}" "$files_env" > "$table.tmp" <<'PY'
+import os
 import sys
 from collections import defaultdict
 sys.path.insert(0, sys.argv[1])
@@ -56,10 +64,15 @@ for f, s in list(sorted(counts.items())) + [("**all**", tot)]:
     name = f if f.startswith("**") else f"`{f}`"
     print(f"| {name} | {v} | {c} | {m} | {t} | {u} | {100 * (c + t) / max(v, 1):.0f} % | {100 * lo:.0f}–{100 * hi:.0f} % |")
 print()
-print(f"*cargo-mutants on the path tracer's files: {len(shards)} of every {n} mutants of each file "
-      f"(`--shard K/{n} --sharding round-robin`, K in {', '.join(shards)}: the mutants K, K + {n}, K + {2 * n}, … "
-      f"of each file in source order), each tested with `cargo test --test book renderer::`; "
-      f"a timeout counts as caught. Regenerate with `tools/mutants/render.sh {n} {' '.join(shards)}` in a clean checkout.*")
+sample = ("every mutant of each file" if n == 1 and shards == ["0"] else
+          f"{len(shards)} of every {n} mutants of each file (`--shard K/{n} --sharding round-robin`, "
+          f"K in {', '.join(shards)}: the mutants K, K + {n}, K + {2 * n}, … of each file in source order)")
+files = sys.argv[5] or "the path tracer's files"
+table = os.environ.get("TABLE", "")
+again = (f"`RENDER_FILES=\"{sys.argv[5]}\" TABLE={table} " if sys.argv[5] else "`") + \
+    f"tools/mutants/render.sh {n} {' '.join(shards)}`"
+print(f"*cargo-mutants on {files}: {sample}, each tested with `cargo test --test book renderer::`; "
+      f"a timeout counts as caught. Regenerate with {again} in a clean checkout.*")
 if missed:
     print()
     print("Surviving mutants:")
@@ -67,4 +80,5 @@ if missed:
     for m in missed:
         print(f"- `{m}`")
 PY
-cat "$root/figures/mutants_render.md"
+mv "$table.tmp" "$table"
+cat "$table"
