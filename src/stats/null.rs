@@ -6,20 +6,10 @@
 //! of many runs are uniform, and the book's calibration table counts how often each test
 //! rejects at the suite's level.
 
-use glam::DVec2;
 use rayon::prelude::*;
 
-use crate::rng::{self, Rng};
-use crate::sampling::sphere::box_muller;
+use crate::rng::{self, Rng, standard_normal};
 use crate::stats::{StatsError, chi2, ks, ttest};
-
-/// A standard normal deviate: the first of the two of the Box–Muller transform
-/// ([`box_muller`], chapter *Uniform sphere and hemisphere*) of two uniforms.
-pub fn standard_normal(rng: &mut Rng) -> f64 {
-    let u1 = rng::uniform(rng, 0.0, 1.0);
-    let u2 = rng::uniform(rng, 0.0, 1.0);
-    box_muller(DVec2::new(u1, u2)).0
-}
 
 /// One experiment in which the null hypothesis of a test is true by construction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -14,7 +14,7 @@ use std::process::Command;
 use glam::DVec3;
 use raylemma::render::image::Image;
 use raylemma::rng;
-use raylemma::stats::null::standard_normal;
+use raylemma::rng::standard_normal;
 use raylemma::stats::test_alpha;
 
 use crate::renderer::compare::{tmp, write_plain};

@@ -33,7 +33,8 @@ use crate::render::scene::Scene;
 use crate::rng::Rng;
 
 /// SplitMix64's finaliser: a bijection of `u64` whose output bits each depend on every
-/// input bit (Steele, Lea and Flood 2014).
+/// input bit (Steele, Lea and Flood 2014, with Stafford's "Mix13" shifts and multipliers,
+/// as in Java's `SplittableRandom.mix64`).
 fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);

@@ -10,9 +10,10 @@
 //! thousand rounded uniforms 1.
 
 use raylemma::rng;
+use raylemma::rng::standard_normal;
 use raylemma::stats::chi2::{pearson, upper_tail};
 use raylemma::stats::ks::{self, kolmogorov_cdf, kolmogorov_sf, smirnov_upper_tail};
-use raylemma::stats::null::{NULL_CASES, NullCase, standard_normal};
+use raylemma::stats::null::{NULL_CASES, NullCase};
 use raylemma::stats::ttest::{self, Summary, two_sided_p, welch};
 use raylemma::stats::{SUITE_ALPHA, SUITE_TESTS, StatsError, sidak, test_alpha};
 

@@ -17,8 +17,8 @@ use exr::prelude::{
 use glam::DVec3;
 use raylemma::render::compare::{Estimate, compare, equivalent_z, two_sided_critical};
 use raylemma::render::image::{ExrContents, Image};
+use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
-use raylemma::stats::null::standard_normal;
 use raylemma::stats::{sidak, test_alpha};
 
 /// Side of the synthetic images.

@@ -734,7 +734,7 @@ fn rough_estimates(
     let mut r = rng::seeded(seed);
     Summary::of((0..n).map(|_| {
         let u = rng::uniform(&mut r, 0.0, 1.0);
-        let z = raylemma::stats::null::standard_normal(&mut r);
+        let z = raylemma::rng::standard_normal(&mut r);
         rough_path(lanes(u), z, sigma, how, d65)
     }))
 }

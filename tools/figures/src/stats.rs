@@ -14,7 +14,8 @@ use rayon::prelude::*;
 use super::{Output, Record, Settings};
 use crate::plot::{self, BoxError, Panel, Series};
 use raylemma::rng;
-use raylemma::stats::null::{NULL_CASES, NullCase, chi2_p_value, standard_normal};
+use raylemma::rng::standard_normal;
+use raylemma::stats::null::{NULL_CASES, NullCase, chi2_p_value};
 use raylemma::stats::{binomial, ks, test_alpha};
 
 /// The outputs of this chapter.

@@ -150,7 +150,7 @@ pub(super) fn dispersive_mis_md(settings: &Settings, r: &mut Record) -> Result<V
     let draws: Vec<(f64, f64)> = (0..n)
         .map(|_| {
             let u = rng::uniform(&mut g, 0.0, 1.0);
-            (u, raylemma::stats::null::standard_normal(&mut g))
+            (u, raylemma::rng::standard_normal(&mut g))
         })
         .collect();
     let batch = &draws[..2000.min(n)];
