@@ -2,16 +2,17 @@
 //! values are known in closed form. Chapter: *Testing the renderer*
 //! (`chapters/renderer/testing.md`, *Edges*).
 //!
-//! The exact images of [`super::exact`] leave out every pixel an edge crosses, so a
-//! mistake in a pixel's footprint (the jitter's distribution, the filter's width) or one
-//! that ties the point in the pixel to another sample dimension (the wavelengths drawn
-//! from the jitter's number) escapes them: inside a smooth region the radiance hardly
-//! changes across the pixel, and such mistakes change nothing there. At an edge they do,
-//! and there the expected value is computed exactly:
+//! The exact images of [`super::exact`] leave out every pixel an edge crosses. A mistake
+//! in a pixel's footprint (the jitter's distribution, the filter's width) moves a pixel by
+//! about half the radiance's change across it, or by its curvature: little where the
+//! radiance varies slowly. One that ties the point in the pixel to another sample
+//! dimension (the wavelengths drawn from the jitter's number) changes nothing where the
+//! radiance does not change across the pixel. At an edge both change the pixel, and there
+//! the expected value is computed exactly:
 //!
 //! * where flat polygons of uniform radiance lie over a uniform background ([`flat`]: two
 //!   lights seen directly against black, a coloured Lambertian quad in a constant sky), a
-//!   pixel's mean is `sum_k c_k L_k + (1 - sum_k c_k) L_background`, with `c_k` the share
+//!   pixel's mean (but where a polygon's corner barely touches it, [`SLIVER_HITS`]) is `sum_k c_k L_k + (1 - sum_k c_k) L_background`, with `c_k` the share
 //!   of the pixel's square that polygon `k`'s image covers. A pinhole maps straight lines
 //!   to straight lines ([`image_point`] is the camera's inverse), so the image of a
 //!   parallelogram is a convex quadrilateral; clipped to the pixel's square
@@ -24,7 +25,8 @@
 //!   Lambert's formula for the overlap. The radiance is continuous across a penumbra, with
 //!   kinks; its mean over a pixel is a composite rule (the pixel cut into 6 x 6 squares,
 //!   each with 4 x 4 Gauss-Legendre points), whose error the tests measure against a rule
-//!   twice as fine. The pixels that the occluder's own outline crosses are not tested.
+//!   twice as fine. The pixels that the occluder's own outline crosses are not tested, nor
+//!   those whose lights the renderer's light samples would meet only a handful of times.
 
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
@@ -106,16 +108,28 @@ pub fn area(poly: &[DVec2]) -> f64 {
 }
 
 /// The share of the pixel `(x, y)` (the unit square from that corner) that the convex
-/// polygon `poly` covers.
+/// polygon `poly` covers. The polygon is moved to the pixel's corner first, so that the
+/// clipping works with small numbers; a share within `1e-12` of 0 or 1 (an edge on the
+/// pixel's boundary, to rounding) is 0 or 1.
+///
+/// # Panics
+/// If the share is not finite (a vertex that is not).
 pub fn coverage(poly: &[DVec2], x: u32, y: u32) -> f64 {
-    let (x, y) = (f64::from(x), f64::from(y));
-    let square = [
-        DVec2::new(x, y),
-        DVec2::new(x + 1.0, y),
-        DVec2::new(x + 1.0, y + 1.0),
-        DVec2::new(x, y + 1.0),
-    ];
-    area(&clip(poly, &square))
+    let corner = DVec2::new(f64::from(x), f64::from(y));
+    let moved: Vec<DVec2> = poly.iter().map(|&p| p - corner).collect();
+    let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+    let share = area(&clip(&moved, &square));
+    assert!(
+        share.is_finite(),
+        "coverage: a share of {share} at pixel ({x}, {y})"
+    );
+    if share < 1e-12 {
+        0.0
+    } else if share > 1.0 - 1e-12 {
+        1.0
+    } else {
+        share
+    }
 }
 
 /// The image of the parallelogram `q` in the camera `c`: a convex quadrilateral.
@@ -294,6 +308,16 @@ pub fn unoccluded_irradiance(p: DVec3, light: &Rect, occluder: &Rect) -> f64 {
     whole - hidden
 }
 
+/// The share of the area of the rectangle `light` that the floor point `p` sees past
+/// `occluder`.
+pub fn visible_share(p: DVec3, light: &Rect, occluder: &Rect) -> f64 {
+    let size = |r: &Rect| (r.x[1] - r.x[0]) * (r.z[1] - r.z[0]);
+    let hidden = light
+        .and(&occluder_on_light(p, occluder, light))
+        .map_or(0.0, |o| size(&o));
+    1.0 - hidden / size(light)
+}
+
 /// The nodes and weights on `[0, 1]` of `parts` equal sub-intervals, each with 4-point
 /// Gauss-Legendre.
 pub fn composite_gauss4(parts: u32) -> Vec<(f64, f64)> {
@@ -314,7 +338,9 @@ pub fn composite_gauss4(parts: u32) -> Vec<(f64, f64)> {
 /// squares of 4 x 4 Gauss-Legendre points per pixel: a floor point `x` has radiance
 /// `sum_k E_k(x) rgb(rho L_k) / pi`, with `E_k` the irradiance of the part of light `k`
 /// that the occluder does not hide ([`unoccluded_irradiance`]). A point of the occluder
-/// is black; a pixel whose points do not all meet one surface is not tested.
+/// is black; a pixel whose points do not all meet one surface is not tested, nor one
+/// whose centre sees so little of the lights that fewer than [`SLIVER_HITS`] light
+/// samples would meet them there ([`visible_share`]).
 ///
 /// # Panics
 /// If the scene is not of that kind.
@@ -358,6 +384,7 @@ pub fn shadow_with(scene: &Scene, parts: u32) -> Expected {
         .collect();
     let rule = composite_gauss4(parts);
     let c = &scene.camera;
+    let spp = f64::from(scene.settings.spp.max(1));
     let pixel = |x: u32, y: u32| {
         let at = |dx: f64, dy: f64| {
             let (o, d) = camera_ray(c, f64::from(x) + dx, f64::from(y) + dy);
@@ -383,10 +410,25 @@ pub fn shadow_with(scene: &Scene, parts: u32) -> Expected {
             }
         }
         let corners = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)];
-        corners
+        let one_surface = corners
             .iter()
-            .all(|&(dx, dy)| at(dx, dy).2.same_surface(reference))
-            .then_some(sum)
+            .all(|&(dx, dy)| at(dx, dy).2.same_surface(reference));
+        // A floor point that sees only slivers of the lights: the renderer's light
+        // samples (one light of the n chosen per sample) meet them in a handful of its
+        // samples, as at a polygon's corner in `flat`.
+        let lit = match reference {
+            First::Shape(0, t) => {
+                let (o, d) = camera_ray(c, f64::from(x) + 0.5, f64::from(y) + 0.5);
+                let p = o + t * d;
+                let seen: f64 = lights
+                    .iter()
+                    .map(|(r, _)| visible_share(p, r, &occluder))
+                    .sum();
+                seen == 0.0 || seen * spp / lights.len() as f64 >= SLIVER_HITS
+            }
+            _ => true,
+        };
+        (one_surface && lit).then_some(sum)
     };
     let mean = (0..c.height)
         .into_par_iter()

@@ -7,11 +7,13 @@
 //! roulette's number. The renderer reads a sample's numbers in order from its pixel's one
 //! stream ([`crate::render::pixel_rng`]): the `k`-th number of a sample is its dimension
 //! `k` (0 and 1 the jitter, 2 the wavelengths; at a diffuse vertex the light's choice, two
-//! for the point on it, two for the direction). The estimate is unbiased only if the
-//! dimensions of one sample are independent and every sample's are fresh; a sampler that
-//! hands one number to two dimensions (a dimension counter that does not advance, a stream
-//! shared by two pixels or restarted for every sample) biases edges, colour fringes and
-//! the choice between lights while smooth regions stay within noise.
+//! for the point on it, two for the direction; at a dielectric or a thin film one, from the
+//! third vertex on roulette's one). The estimate is unbiased only if the dimensions of one
+//! sample are independent: a sampler that hands one number to two dimensions of a sample
+//! (a dimension counter that does not advance) biases edges, colour fringes and the
+//! choice between lights while smooth regions stay within noise. (Numbers shared across
+//! samples or pixels bias nothing: they keep the error from shrinking and make the
+//! variance estimates wrong.)
 //!
 //! [`Dimensions`] is a source built to be independent: dimension `k` of pixel `i` is drawn
 //! from a PCG-64 generator of its own, seeded from `(seed, i, k)` by a mixing function,
@@ -210,17 +212,26 @@ pub fn independence_scenes(scale: f64) -> Vec<ExactScene> {
     list
 }
 
+/// The seeds of the reference (independent dimensions) and of the candidate for
+/// `options.seed` (default [`SEED`]) `s`: `2 (s + 200)` and `2 (s + 200) + 1`, so that
+/// no two values of `s` share a seed (with `s` and `s + 1` the candidate of one would be
+/// the reference of the next, and their verdicts would not be independent trials).
+fn seeds(options: &Options) -> (u64, u64) {
+    let s = 2 * (options.seed_or(SEED) + 200);
+    (s, s + 1)
+}
+
 /// Each scene of [`independence_scenes`] (`options.cases` percent of its samples, default
-/// 100) rendered with independent dimensions ([`independent`], seed `s`) and by `renderer`
-/// (seed `s + 1`), the second compared with the first.
+/// 100) rendered with independent dimensions ([`independent`]) and by `renderer`, with
+/// the two seeds of `seeds`, the second compared with the first.
 pub fn render_independence(renderer: Renderer, options: &Options) -> Vec<Rendered> {
-    let seed = options.seed_or(SEED) + 200;
+    let (reference_seed, seed) = seeds(options);
     independence_scenes(options.cases_or(100) as f64 / 100.0)
         .into_iter()
         .map(|mut s| {
-            s.scene.settings.seed = seed;
+            s.scene.settings.seed = reference_seed;
             let reference = independent(&s.scene);
-            s.scene.settings.seed = seed + 1;
+            s.scene.settings.seed = seed;
             Rendered {
                 name: s.name,
                 image: renderer(&s.scene),
@@ -239,7 +250,7 @@ pub fn render_independence(renderer: Renderer, options: &Options) -> Vec<Rendere
 /// # Panics
 /// If a name of `rendered` is not one of [`independence_scenes`].
 pub fn rejudge(renderer: Renderer, rendered: &[Rendered], options: &Options) -> Vec<Rendered> {
-    let seed = options.seed_or(SEED) + 200;
+    let (_, seed) = seeds(options);
     let scenes = independence_scenes(options.cases_or(100) as f64 / 100.0);
     rendered
         .iter()
@@ -249,7 +260,7 @@ pub fn rejudge(renderer: Renderer, rendered: &[Rendered], options: &Options) -> 
                 .find(|s| s.name == r.name)
                 .unwrap_or_else(|| panic!("rejudge: no scene {:?}", r.name));
             let mut scene = s.scene.clone();
-            scene.settings.seed = seed + 1;
+            scene.settings.seed = seed;
             Rendered {
                 image: renderer(&scene),
                 ..r.clone()

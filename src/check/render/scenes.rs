@@ -16,14 +16,16 @@
 //!   ([`super::edges`]): a blackbody and a fluorescent light seen directly against black
 //!   ([`lights_seen_directly`]), a red Lambertian quad in a constant sky
 //!   ([`coloured_quad_in_sky`]), and the shadows that one black rectangle casts from two
-//!   small lights of different colours on the floor ([`shadows_of_two_lights`]). Their
-//!   edges are turned against the pixel grid, so that every pixel an edge crosses is
-//!   covered in its own share.
+//!   small lights of different colours on the floor ([`shadows_of_two_lights`]). The
+//!   lights' and the quad's edges are turned against the pixel grid, so that the pixels
+//!   along an edge are covered in many shares; the shadows' penumbrae spread theirs.
+//!   (The shadow scene's occluder hides lights from the floor, unlike every other
+//!   direct-light scene; its expected image accounts for it.)
 //! * one scene with everything ([`everything`]): diffuse walls, glass, a mirror, a
 //!   dispersive sphere, a thin film, two lights and a sky, for the comparisons of the
 //!   estimators with one another.
 //!
-//! No shape of a direct-light scene hides a light from the floor, and every light lies
+//! No shape of the other direct-light scenes hides a light from the floor, and every light lies
 //! above the floor's horizon: the closed forms hold as they are (the expected image
 //! checks both, [`super::exact()`]).
 
@@ -319,9 +321,11 @@ fn quad_emitter(corner: [f64; 3], e1: [f64; 3], e2: [f64; 3], emission: Spectrum
 }
 
 /// Two parallelogram lights in the plane `z = 0`, facing the camera of the delta scenes,
-/// their edges turned against the pixel grid, seen directly against black: a 5000 K
-/// blackbody on the left, the three-band fluorescent spectrum ([`fluorescent`]) on the
-/// right, whose colour depends on which wavelengths a pixel's samples draw. Every pixel's
+/// seen directly against black: a 5000 K blackbody at `-x` (the image's right: the
+/// camera's right is `-x`), the three-band fluorescent spectrum ([`fluorescent`]), whose
+/// colour depends on which wavelengths a pixel's samples draw, at `+x`. Their edges are
+/// turned against the pixel grid (14 to 27 degrees from the image's rows and columns,
+/// with the camera's roll), so that the pixels along an edge are covered in many shares. Every pixel's
 /// expected value is its covered share of each light's colour ([`super::edges::flat`]).
 pub fn lights_seen_directly(side: u32, spp: u32) -> Scene {
     Scene {
@@ -332,9 +336,9 @@ pub fn lights_seen_directly(side: u32, spp: u32) -> Scene {
         lights: vec![
             // e1 x e2 = -z: towards the camera.
             quad_emitter(
-                [-0.55, -0.35, 0.0],
-                [0.1, 0.7, 0.0],
-                [0.35, -0.05, 0.0],
+                [-0.4, -0.33, 0.0],
+                [-0.12, 0.65, 0.0],
+                [0.3, 0.1, 0.0],
                 daylight_blackbody(),
             ),
             quad_emitter(
@@ -381,8 +385,8 @@ pub fn coloured_quad_in_sky(side: u32, spp: u32) -> Scene {
             reflectance: red_reflectance(),
         }],
         shapes: vec![Shape {
-            // A diamond whose four edges are within 30 degrees of the vertical: at every
-            // edge the part of a pixel covered depends on the point's x.
+            // A diamond whose four edges are 20 to 40 degrees from the image's vertical: at
+            // every edge the part of a pixel covered depends on the point's x.
             geometry: Geometry::Quad(quad(
                 [-0.35, -0.1, 0.3],
                 [0.3, 0.55, 0.0],

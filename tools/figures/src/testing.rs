@@ -196,9 +196,9 @@ fn twins() -> Vec<Twin> {
 fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxError> {
     writeln!(
         md,
-        "\n| check | planted mistake | scene | rejected in {seeds} seeds | least \\|z\\| / critical |"
+        "\n| check | planted mistake | scene | rejected in {seeds} seeds | least \\|z\\| / critical | least finite \\|z\\| / critical |"
     )?;
-    writeln!(md, "|---|---|---|---:|---:|")?;
+    writeln!(md, "|---|---|---|---:|---:|---:|")?;
     let options = |s: u64| Options::default().seed(0x7_1A5 + s);
     // (mistake, scene, seeds that rejected it), for the chapter's claims.
     let mut results: Vec<(&str, String, u64)> = Vec::new();
@@ -216,6 +216,7 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
         for i in 0..items {
             let mut rejected = 0u64;
             let mut least = f64::INFINITY;
+            let mut least_finite = f64::INFINITY;
             for run in &runs {
                 let r = &run[i];
                 let p = pool_blocks(&r.image, &r.expected, level, r.block);
@@ -228,14 +229,22 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
                     p.global_z.max(p.block_z)
                 };
                 least = least.min(z / p.critical);
+                // The largest finite |z| of the seed: what is left when a block of
+                // zero-variance pixels off their expected value makes |z| infinite.
+                let finite = [p.global_z, p.block_z]
+                    .into_iter()
+                    .filter(|z| z.is_finite())
+                    .fold(0.0, f64::max);
+                least_finite = least_finite.min(finite / p.critical);
             }
             results.push((what, runs[0][i].name.clone(), rejected));
             let key = format!("twins.{}.{}", slug(what), slug(&runs[0][i].name));
             rec.number(&format!("{key}.rejected"), rejected as f64, "int");
             rec.number(&format!("{key}.least_ratio"), least, ".2");
+            rec.number(&format!("{key}.least_finite_ratio"), least_finite, ".2");
             writeln!(
                 md,
-                "| {check} | {what} | {} | {rejected} | {least:.2} |",
+                "| {check} | {what} | {} | {rejected} | {least:.2} | {least_finite:.2} |",
                 runs[0][i].name
             )?;
         }
@@ -267,8 +276,8 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
     let hero = rejected(jitter, "edges of two lights seen directly");
     rec.number("hero_lights_reused_jitter_rejected", hero as f64, "int");
     rec.claim(
-        "hero_lights_miss_the_reused_jitter_mostly",
-        hero * 10 < 9 * seeds,
+        "hero_lights_miss_the_reused_jitter_in_most_seeds",
+        2 * hero <= seeds,
         format!("the lights (hero) reject the reused jitter in {hero} of {seeds} seeds"),
     );
     writeln!(
@@ -277,7 +286,10 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
          table's) and judged by its check at the level it has in the suite. \"least |z| / \
          critical\": over the seeds, the smallest ratio of the scene's largest |z| (whole \
          image or one block) to its critical value; above 1 in every seed is a rejection \
-         every time.*"
+         every time. It is infinite (inf) where a block whose pixels all have zero variance \
+         (every sample 0) differs from an expected value above 0: a certain rejection, \
+         since a tested pixel is expected to meet its polygon at least 20 times. The last \
+         column leaves such |z| out: the margin of the rest of the image.*"
     )?;
     Ok(())
 }
