@@ -11,10 +11,11 @@
 //!   `"../" * d + "figures/x.png"`.
 //!
 //! Each check is a module: [`includes`], [`images`], [`numbers`] (`{{#value}}` and
-//! `{{#claim}}`), [`math`] (its delimiters) and [`rust_blocks`] (only compiled code is shown
+//! `{{#claim}}`), [`math`] (its delimiters), [`characters`] (no control characters) and [`rust_blocks`] (only compiled code is shown
 //! as Rust); [`paths`] resolves paths lexically. This module walks the chapters and holds
 //! the [`Checker`] they share.
 
+mod characters;
 mod images;
 mod includes;
 mod math;
@@ -128,6 +129,7 @@ impl Checker {
         self.check_numbers(&file, text, &mut problems);
         self.check_rust_blocks(&file, text, &mut problems);
         self.check_math_delimiters(&file, text, &mut problems);
+        self.check_control_characters(&file, text, &mut problems);
         problems.sort_by_key(|p| p.line);
         problems
     }

@@ -185,6 +185,29 @@ fn math_in_other_delimiters_is_refused() {
 }
 
 #[test]
+fn control_characters_are_refused_with_what_they_were() {
+    let t = Tree::new("control");
+    t.write(
+        "chapters/a.md",
+        "Fine: $\\rho$.\nBroken: $\u{8}ar L$ and $2 \times 3$.\n$\rho$\n",
+    );
+    // One problem per line, for its first control character: line 2's backspace (and
+    // not its tab), line 3's carriage return.
+    let found = t.check();
+    assert_eq!(found.len(), 2, "{found:?}");
+    assert!(
+        found[0].starts_with("chapters/a.md:2: control character U+0008")
+            && found[0].contains("\\bar"),
+        "{found:?}"
+    );
+    assert!(
+        found[1].starts_with("chapters/a.md:3: control character U+000D")
+            && found[1].contains("\\rho"),
+        "{found:?}"
+    );
+}
+
+#[test]
 fn numbers_are_checked_against_what_the_figure_job_recorded() {
     let t = Tree::new("numbers");
     t.write(
