@@ -179,113 +179,55 @@ fn vieta_keeps_the_near_root_where_c_is_exact() {
     );
 }
 
-// ---------------------------------------------------------------------------------------
-// Planted bugs (`raylemma::check::sphere::planted`): each must be rejected by the
-// checker, naming the right claim.
-
-fn verdict_f64(f: fn(&Ray, &Sphere, f64) -> Option<f64>) -> raylemma::check::Verdict {
-    check::intersection(&f, &Options::default().cases(4_000))
-}
-
-#[test]
-fn checker_rejects_the_textbook_form() {
-    // Even at ordinary scales (centres within 10 radii of the origin) the discriminant's
-    // cancellation exceeds the error bound for some rays (d / r of about 10 in the verdict's
-    // examples).
-    let verdict = check::intersection(&single::intersect_textbook, &Options::default());
-    assert!(!verdict.passed(), "{verdict}");
-    // And in f64: rarer, but the same cancellation.
-    let verdict = check::intersection(&intersect_textbook, &Options::default());
-    assert!(!verdict.passed(), "{verdict}");
-}
-
-#[test]
-fn checker_rejects_the_seeds_t_greater_than_zero_rule() {
-    // The source notes: "the smallest value that is still greater than 0", ignoring t_min.
-    let verdict = verdict_f64(planted::t_greater_than_zero);
-    assert!(verdict.failed("surface_origin"), "{verdict}");
-    assert!(verdict.failed("nearest_root"), "{verdict}");
-}
-
-#[test]
-fn checker_rejects_always_the_far_root() {
-    let verdict = verdict_f64(planted::always_far_root);
-    assert!(
-        verdict.failed("hits") && verdict.failed("nearest_root"),
-        "{verdict}"
-    );
-}
-
-#[test]
-fn checker_rejects_ignoring_t_min() {
-    assert!(verdict_f64(planted::ignoring_t_min).failed("nearest_root"));
-}
-
-#[test]
-fn checker_rejects_assuming_a_unit_direction() {
-    // a = D.D replaced by 1: right only for normalised directions.
-    let verdict = verdict_f64(planted::assuming_unit_direction);
-    assert!(
-        verdict.failed("direction_scale") && verdict.failed("hits"),
-        "{verdict}"
-    );
-}
-
-#[test]
-fn checker_rejects_a_loose_discriminant_test() {
-    // Counting near misses as hits (discriminant >= -1% of a r^2), clamped to a real root.
-    assert!(verdict_f64(planted::loose_discriminant).failed("misses"));
-}
-
-#[test]
-fn checker_rejects_nan() {
-    let verdict = check::intersection(&planted::always_nan, &Options::default().cases(1_000));
-    assert!(
-        verdict.failed("hits") && verdict.failed("misses"),
-        "{verdict}"
-    );
-}
-
-/// The half-fix of exercise 2: only `b^2 - ac` in f64, from `b` and `c` rounded to f32.
-/// The cancellation has already happened in `c`, so the far bundle still defeats it.
-#[test]
-fn only_the_discriminant_in_f64_still_fails_far_spheres() {
-    let verdict = check::far(&planted::discriminant_only_in_f64, &Options::default());
-    for distance in ["far_1e3", "far_3e3", "far_1e4"] {
-        assert!(verdict.failed(distance), "passed {distance}:\n{verdict}");
-    }
-}
-
-/// Exercise 3's change: the direction normalised first (a = 1). The discriminant
-/// `b^2 - c` still subtracts two numbers of about d^2, so the far bundle still defeats it,
-/// and at ordinary scales it fails the same claims as the textbook form.
-#[test]
-fn normalising_first_keeps_the_cancellation() {
-    let verdict = check::far(&planted::textbook_normalised, &Options::default());
-    for distance in ["far_1e3", "far_3e3", "far_1e4"] {
-        assert!(verdict.failed(distance), "passed {distance}:\n{verdict}");
-    }
-    let failed = |v: &raylemma::check::Verdict| {
-        v.findings
-            .iter()
-            .filter(|f| !f.passed())
-            .map(|f| f.name.clone())
-            .collect::<Vec<_>>()
+fn random_case(rng: &mut raylemma::rng::Rng) -> Case {
+    use raylemma::rng::uniform;
+    let mut v = || {
+        DVec3::new(
+            uniform(rng, -100.0, 100.0),
+            uniform(rng, -100.0, 100.0),
+            uniform(rng, -100.0, 100.0),
+        )
     };
-    let normalised = check::intersection(&planted::textbook_normalised, &Options::default());
-    let textbook = check::intersection(&single::intersect_textbook, &Options::default());
-    assert_eq!(
-        failed(&normalised),
-        failed(&textbook),
-        "{normalised}\n{textbook}"
-    );
+    let (o, d, c) = (v(), v(), v());
+    Case {
+        o,
+        d,
+        c,
+        r: uniform(rng, 0.0, 50.0) + 1e-3,
+    }
 }
 
-#[test]
-fn far_checker_rejects_a_sphere_that_is_never_hit() {
-    let verdict = check::far(&planted::never_hits, &Options::default());
-    assert!(!verdict.passed(), "{verdict}");
+/// A ray and a sphere with components in [-100, 100], radius in (0, 50], any direction.
+#[derive(Clone, Debug)]
+struct Case {
+    o: DVec3,
+    d: DVec3,
+    c: DVec3,
+    r: f64,
 }
+
+impl Case {
+    fn f64(&self) -> (Ray, Sphere) {
+        (Ray::new(self.o, self.d), Sphere::new(self.c, self.r))
+    }
+    fn f32(&self) -> (Ray32, Sphere32) {
+        (
+            Ray32::new(self.o.as_vec3(), self.d.as_vec3()),
+            Sphere32::new(self.c.as_vec3(), self.r as f32),
+        )
+    }
+    /// Distance of the centre from the ray's line, in f64.
+    fn line_distance(&self) -> f64 {
+        let f = self.o - self.c;
+        (f - self.d * (f.dot(self.d) / self.d.dot(self.d))).length()
+    }
+    fn unit(&self, eps: f64) -> f64 {
+        eps * (self.o.length() + self.c.length() + self.r)
+    }
+}
+
+mod planted_bugs;
+mod properties;
 
 // ---------------------------------------------------------------------------------------
 // The source notes' claims, one by one.
@@ -417,200 +359,6 @@ fn f32_and_f64_agree_on_a_simple_case() {
     let s32 = Sphere32::new(Vec3::ZERO, 2.0);
     assert_eq!(single::intersect_stable(&ray32, &s32, 0.0), Some(8.0));
     assert_eq!(single::intersect_textbook(&ray32, &s32, 0.0), Some(8.0));
-}
-
-// ---------------------------------------------------------------------------------------
-// Properties over random rays and spheres (quickcheck, fixed seed).
-
-/// A ray and a sphere with components in [-100, 100], radius in (0, 50], any direction.
-#[derive(Clone, Debug)]
-struct Case {
-    o: DVec3,
-    d: DVec3,
-    c: DVec3,
-    r: f64,
-}
-
-impl Case {
-    fn f64(&self) -> (Ray, Sphere) {
-        (Ray::new(self.o, self.d), Sphere::new(self.c, self.r))
-    }
-    fn f32(&self) -> (Ray32, Sphere32) {
-        (
-            Ray32::new(self.o.as_vec3(), self.d.as_vec3()),
-            Sphere32::new(self.c.as_vec3(), self.r as f32),
-        )
-    }
-    /// Distance of the centre from the ray's line, in f64.
-    fn line_distance(&self) -> f64 {
-        let f = self.o - self.c;
-        (f - self.d * (f.dot(self.d) / self.d.dot(self.d))).length()
-    }
-    fn unit(&self, eps: f64) -> f64 {
-        eps * (self.o.length() + self.c.length() + self.r)
-    }
-}
-
-fn component(g: &mut Gen) -> f64 {
-    let x = i32::arbitrary(g) % 100_000;
-    f64::from(x) / 1000.0
-}
-
-impl Arbitrary for Case {
-    fn arbitrary(g: &mut Gen) -> Self {
-        let v = |g: &mut Gen| DVec3::new(component(g), component(g), component(g));
-        let r = f64::from(u16::arbitrary(g) % 50_000 + 1) / 1000.0;
-        Case {
-            o: v(g),
-            d: v(g),
-            c: v(g),
-            r,
-        }
-    }
-    fn shrink(&self) -> Box<dyn Iterator<Item = Self>> {
-        // Shrink towards a simpler picture: sphere at the origin, then a unit radius.
-        let mut simpler = Vec::new();
-        if self.c != DVec3::ZERO {
-            simpler.push(Case {
-                o: self.o - self.c,
-                c: DVec3::ZERO,
-                ..self.clone()
-            });
-        }
-        if self.r != 1.0 {
-            simpler.push(Case {
-                r: 1.0,
-                ..self.clone()
-            });
-        }
-        Box::new(simpler.into_iter())
-    }
-}
-
-fn random_case(rng: &mut raylemma::rng::Rng) -> Case {
-    use raylemma::rng::uniform;
-    let mut v = || {
-        DVec3::new(
-            uniform(rng, -100.0, 100.0),
-            uniform(rng, -100.0, 100.0),
-            uniform(rng, -100.0, 100.0),
-        )
-    };
-    let (o, d, c) = (v(), v(), v());
-    Case {
-        o,
-        d,
-        c,
-        r: uniform(rng, 0.0, 50.0) + 1e-3,
-    }
-}
-
-fn quickcheck(seed: u64) -> QuickCheck {
-    QuickCheck::new()
-        .rng(Gen::from_size_and_seed(100, seed))
-        .tests(5_000)
-        .max_tests(50_000)
-}
-
-/// A t returned by `intersect` (the stable form, in either precision) is finite, above
-/// t_min, and its point lies on the sphere.
-fn prop_hit_point_on_sphere<R: Real>(
-    intersect: fn(&R::Ray, &R::Sphere, R) -> Option<R>,
-    case: Case,
-) -> TestResult {
-    if case.d.length() < 1e-3 {
-        return TestResult::discard();
-    }
-    let ray = R::ray(case.o, case.d);
-    let sphere = R::sphere(case.c, case.r);
-    let Some(t) = intersect(&ray, &sphere, R::ZERO) else {
-        return TestResult::passed();
-    };
-    let (center, radius) = (R::wide3(R::center(&sphere)), R::radius(&sphere).wide());
-    let p = R::wide3(R::at(&ray, t));
-    let off = ((p - center).length() - radius).abs();
-    // Error budget: the inputs' own rounding plus that of the point O + tD.
-    let eps = R::EPSILON.wide();
-    let scale = R::wide3(R::origin(&ray)).length() + center.length() + radius;
-    let bound = T_ERROR_BOUND * eps * (scale + t.wide() * R::wide3(R::dir(&ray)).length());
-    TestResult::from_bool(t.wide().is_finite() && t > R::ZERO && off <= bound)
-}
-
-#[test]
-fn quickcheck_hit_point_on_sphere_f32() {
-    let prop: fn(Case) -> TestResult =
-        |case| prop_hit_point_on_sphere(single::intersect_stable, case);
-    quickcheck(1).quickcheck(prop);
-}
-
-#[test]
-fn quickcheck_hit_point_on_sphere_f64() {
-    let prop: fn(Case) -> TestResult = |case| prop_hit_point_on_sphere(intersect_stable, case);
-    quickcheck(2).quickcheck(prop);
-}
-
-/// f32 and f64 agree on hit or miss, except within the silhouette band of f32.
-fn prop_precisions_agree(case: Case) -> TestResult {
-    if case.d.length() < 1e-3 {
-        return TestResult::discard();
-    }
-    let (r32, s32) = case.f32();
-    // Compare on the f32 inputs, widened exactly.
-    let wide = Case {
-        o: r32.origin.as_dvec3(),
-        d: r32.dir.as_dvec3(),
-        c: s32.center.as_dvec3(),
-        r: f64::from(s32.radius),
-    };
-    if (wide.line_distance() - wide.r).abs() <= SILHOUETTE_BAND * wide.unit(f64::from(f32::EPSILON))
-    {
-        return TestResult::discard();
-    }
-    let (r64, s64) = wide.f64();
-    let a = single::intersect_stable(&r32, &s32, f32::NEG_INFINITY).is_some();
-    let b = intersect_stable(&r64, &s64, f64::NEG_INFINITY).is_some();
-    TestResult::from_bool(a == b)
-}
-
-#[test]
-fn quickcheck_precisions_agree() {
-    quickcheck(3).quickcheck(prop_precisions_agree as fn(Case) -> TestResult);
-}
-
-/// Translating ray and sphere together moves nothing: the same t within the bound.
-fn prop_translation_invariant(case: Case, shift: (i16, i16, i16)) -> TestResult {
-    if case.d.length() < 1e-3 || (case.line_distance() - case.r).abs() < 1e-3 * case.r {
-        return TestResult::discard();
-    }
-    let v = DVec3::new(f64::from(shift.0), f64::from(shift.1), f64::from(shift.2)) / 100.0;
-    let (ray, sphere) = case.f64();
-    let moved = Case {
-        o: case.o + v,
-        c: case.c + v,
-        ..case.clone()
-    };
-    let (ray2, sphere2) = moved.f64();
-    let (t1, t2) = (
-        intersect_stable(&ray, &sphere, 0.0),
-        intersect_stable(&ray2, &sphere2, 0.0),
-    );
-    let unit = moved.unit(f64::EPSILON).max(case.unit(f64::EPSILON));
-    // Near the tangent the root is ill-conditioned; elsewhere the two agree closely.
-    let bound = 64.0 * unit
-        / (case.d.length()
-            * (1.0 - (case.line_distance() / case.r).min(1.0))
-                .sqrt()
-                .max(1e-6));
-    TestResult::from_bool(match (t1, t2) {
-        (None, None) => true,
-        (Some(a), Some(b)) => (a - b).abs() <= bound,
-        _ => false,
-    })
-}
-
-#[test]
-fn quickcheck_translation_invariant() {
-    quickcheck(4).quickcheck(prop_translation_invariant as fn(Case, (i16, i16, i16)) -> TestResult);
 }
 
 // ---------------------------------------------------------------------------------------
