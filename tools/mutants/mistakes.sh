@@ -59,7 +59,7 @@ for m in "${mistakes[@]}"; do
     rm -f "$table"
     exit 1
   fi
-  failed="$( (grep -E '^test .* FAILED$' <<< "$out" || true) | sed -E 's/^test renderer::([a-z_]+::)?([a-z_0-9]+) .*/`\2`/' | sort -u | paste -sd, - | sed 's/,/, /g')"
+  failed="$( (grep -E '^test .* FAILED$' <<< "$out" || true) | sed -E 's/^test renderer::([a-z_]+::)*([a-z_0-9]+) .*/`\2`/' | sort -u | paste -sd, - | sed 's/,/, /g')"
   [ "$status" -ne 0 ] || failed="**none: not caught**"
   echo "| $what | $failed |" >> "$table"
 done
