@@ -9,7 +9,7 @@
 //! formulas), a box's walls, whose normal and edges lie along the axes, in the cheaper
 //! form of `AxisQuad`, and every sphere in another array. It finds the same first
 //! surface as the book's loop at the same distance to within rounding (but for rays that
-//! graze a parallelogram's edge to within rounding): `tests/book/renderer/render.rs`
+//! graze a parallelogram's edge to within rounding): `tests/book/renderer/render/tracer.rs`
 //! compares the two on many rays.
 
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};

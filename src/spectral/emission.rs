@@ -351,7 +351,8 @@ pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, String> {
 // ANCHOR_END: write_image
 
 /// Writes `<stem>.png` for every lamp of [`lamps`] into `dir` (the shipped `data/`
-/// drawings are made by this; `tests/book/spectral/emission.rs` regenerates them when the environment
+/// drawings are made by this; `tests/book/spectral/emission/image_format.rs` regenerates them
+/// when the environment
 /// variable `RAYLEMMA_WRITE_DATA` is set), all together or none ([`crate::output::FileSet`]).
 /// Returns the paths written.
 ///

@@ -360,7 +360,8 @@ pub const WAVELENGTH_COLUMN: &str = "wavelength_nm";
 /// field, a field that is not a number, a NaN or infinite number, a negative value, a
 /// wavelength that is not positive, wavelengths that repeat or decrease, fewer than two
 /// rows, or a range with no overlap with 360-830 nm (the colour-matching range; the
-/// error points at the row nearest to it). Every case is a test in `tests/book/spectral/colour.rs`.
+/// error points at the row nearest to it). Every case is a test in
+/// `tests/book/spectral/colour/bad_input.rs`.
 pub fn parse_csv(text: &str, file: &str) -> Result<Vec<(String, Table)>, DataError> {
     let err = |line: usize, problem: String| DataError::new(file, line, problem);
     let mut rows = text
