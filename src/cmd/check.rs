@@ -15,7 +15,7 @@ use raylemma::check::warp::Domain;
 use raylemma::check::{Options, Verdict};
 use raylemma::data::DataError;
 
-use super::{CmdResult, Failure, Outcome, done_or_bad_input};
+use super::{CmdResult, Failure, Outcome, done};
 
 /// `raylemma check`.
 #[derive(Subcommand, Debug)]
@@ -213,26 +213,23 @@ pub fn run(command: &CheckCmd) -> CmdResult {
 /// `raylemma check corpus`: every verdict printed; 0 if all pass, 1 if one fails, 2 for
 /// bad input.
 fn corpora(args: &CorpusArgs) -> CmdResult {
-    let bad = |e: DataError| Failure::BadInput(e.to_string());
     let corpora = if args.files.is_empty() {
-        corpus::load_all(Path::new(".")).map_err(bad)?
+        corpus::load_all(Path::new("."))?
     } else {
         args.files
             .iter()
             .map(|p| corpus::load(p))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(bad)?
+            .collect::<Result<Vec<_>, _>>()?
     };
     let mut passed = true;
     for c in &corpora {
         let verdict = match &args.program {
             Some(command) => {
-                accuracy::check_program(c, &args.verbs, &program(command, args.timeout))
-                    .map_err(bad)?
+                accuracy::check_program(c, &args.verbs, &program(command, args.timeout))?
             }
             None => {
                 let forms = accuracy::forms::of(&c.name).ok_or_else(|| {
-                    bad(DataError::new(
+                    Failure::from(DataError::new(
                         &c.file,
                         0,
                         "no routine of this crate answers this corpus (check another \
@@ -259,7 +256,7 @@ fn corpora(args: &CorpusArgs) -> CmdResult {
 
 /// Prints the verdict: exit status 0 if it passes, 1 if not, 2 for bad input.
 fn verdict(result: Result<Verdict, DataError>) -> CmdResult {
-    let verdict = result.map_err(|e| Failure::BadInput(e.to_string()))?;
+    let verdict = result?;
     print!("{verdict}");
     Ok(if verdict.passed() {
         Outcome::Done
@@ -310,7 +307,7 @@ fn function(
     questions: Questions,
 ) -> CmdResult {
     if let Some(out) = &args.questions {
-        return done_or_bad_input(write_questions(
+        return done(write_questions(
             args.table.as_deref(),
             out,
             options,
@@ -321,8 +318,7 @@ fn function(
         (Some(command), _) => Function::Program(program(command, args.timeout)),
         (None, Some(path)) => Function::Table(path.clone()),
         (None, None) => {
-            let e = usage("--program, --table or --questions is needed");
-            return Err(Failure::BadInput(e.to_string()));
+            return Err(usage("--program, --table or --questions is needed").into());
         }
     };
     verdict(check(&function, options))
@@ -334,9 +330,9 @@ fn write_questions(
     out: &Path,
     options: &Options,
     questions: Questions,
-) -> Result<(), String> {
-    let text = questions(table, options).map_err(|e| e.to_string())?;
-    raylemma::output::write_file(out, text.as_bytes()).map_err(|e| e.to_string())?;
+) -> Result<(), Failure> {
+    let text = questions(table, options)?;
+    raylemma::output::write_file(out, text.as_bytes())?;
     let rows = text.lines().count() - 1;
     if rows == 0 {
         eprintln!("raylemma: the table answers every question; check it with --table");

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use clap::{Args, ValueEnum};
 use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
-use super::{CmdResult, done_or_bad_input};
+use super::{CmdResult, Failure, done};
 
 /// The formats `export` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -37,17 +37,17 @@ pub struct ExportArgs {
 
 /// Runs `raylemma export`: what cannot be exported is bad input (exit status 2).
 pub fn run(args: &ExportArgs) -> CmdResult {
-    done_or_bad_input(export(&args.scene, args.to, &args.out))
+    done(export(&args.scene, args.to, &args.out))
 }
 
-fn export(scene: &Path, to: Target, out: &Path) -> Result<(), String> {
-    let file = SceneFile::load(scene).map_err(|e| e.to_string())?;
+fn export(scene: &Path, to: Target, out: &Path) -> Result<(), Failure> {
+    let file = SceneFile::load(scene)?;
     let text = match to {
-        Target::Mitsuba => mitsuba::to_xml(&file).map_err(|e| e.to_string())?,
-        Target::Pbrt => pbrt::to_pbrt(&file).map_err(|e| e.to_string())?,
+        Target::Mitsuba => mitsuba::to_xml(&file)?,
+        Target::Pbrt => pbrt::to_pbrt(&file)?,
         Target::Json => json::to_json(&file),
     };
-    raylemma::output::write_file(out, text.as_bytes()).map_err(|e| e.to_string())?;
+    raylemma::output::write_file(out, text.as_bytes())?;
     eprintln!("raylemma: wrote {}", out.display());
     Ok(())
 }

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use clap::Args;
 use raylemma::render::{self, merge};
 
-use super::{CmdResult, done_or_bad_input};
+use super::{CmdResult, Failure, done};
 
 /// `raylemma merge`.
 #[derive(Args, Debug)]
@@ -24,20 +24,20 @@ pub struct MergeArgs {
 
 /// Runs `raylemma merge`.
 pub fn run(args: &MergeArgs) -> CmdResult {
-    done_or_bad_input(merge_files(args))
+    done(merge_files(args))
 }
 
-fn merge_files(args: &MergeArgs) -> Result<(), String> {
+fn merge_files(args: &MergeArgs) -> Result<(), Failure> {
     let stem = args
         .out
         .file_stem()
         .filter(|_| args.out.extension().is_some_and(|e| e == "exr"))
         .map(|s| s.to_string_lossy().into_owned())
         .ok_or_else(|| {
-            format!(
+            Failure::BadInput(format!(
                 "--out {}: the merged render's name must end in .exr",
                 args.out.display()
-            )
+            ))
         })?;
     let parts = args
         .renders
@@ -47,7 +47,7 @@ fn merge_files(args: &MergeArgs) -> Result<(), String> {
     let (image, sidecar) = merge::merge(&parts)?;
     let dir = args.out.parent().filter(|d| !d.as_os_str().is_empty());
     let dir = dir.map_or_else(|| PathBuf::from("."), PathBuf::from);
-    let files = render::write_outputs(&dir, &stem, &image, &sidecar).map_err(|e| e.to_string())?;
+    let files = render::write_outputs(&dir, &stem, &image, &sidecar)?;
     eprintln!(
         "raylemma: merged {} renders of {} ({} spp in all, seeds {:?})",
         parts.len(),

@@ -67,9 +67,19 @@ pub fn exit(result: CmdResult) -> ExitCode {
     }
 }
 
-/// `Ok(())` as [`Outcome::Done`], an error as bad input.
-pub fn done_or_bad_input(result: Result<(), String>) -> CmdResult {
-    result.map(|()| Outcome::Done).map_err(Failure::BadInput)
+/// A typed error of the library (an input that cannot be used: a scene, a table, an image,
+/// a program) is bad input, exit status 2: its message names the file, flag or program. A
+/// subcommand that judges an error a failure on good input says so with
+/// [`Failure::Failed`] where it happens.
+impl<E: std::error::Error> From<E> for Failure {
+    fn from(e: E) -> Self {
+        Failure::BadInput(e.to_string())
+    }
+}
+
+/// `Ok(())` as [`Outcome::Done`].
+pub fn done(result: Result<(), Failure>) -> CmdResult {
+    result.map(|()| Outcome::Done)
 }
 
 /// `s` as XML text or attribute value (the JUnit files of `conformance` and `grade`).

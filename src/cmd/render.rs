@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use raylemma::render;
 
-use super::{CmdResult, done_or_bad_input};
+use super::{CmdResult, Failure, done};
 
 /// `raylemma render`.
 #[derive(Args, Debug)]
@@ -31,7 +31,7 @@ pub struct RenderArgs {
 /// Runs `raylemma render`: a scene that cannot be rendered, or an output folder that cannot
 /// be written, is bad input (exit status 2).
 pub fn run(args: &RenderArgs) -> CmdResult {
-    done_or_bad_input(render_scene(
+    done(render_scene(
         &args.scene,
         args.spp,
         args.seed,
@@ -46,21 +46,21 @@ fn render_scene(
     seed: Option<u64>,
     out: &Path,
     threads: Option<u32>,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     if let Some(t) = threads {
         rayon::ThreadPoolBuilder::new()
             .num_threads(t as usize)
             .build_global()
-            .map_err(|e| format!("cannot start {t} threads: {e}"))?;
+            .map_err(|e| Failure::BadInput(format!("cannot start {t} threads: {e}")))?;
     }
     let stem = scene
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
-        .ok_or_else(|| format!("{}: not a file name", scene.display()))?;
+        .ok_or_else(|| Failure::BadInput(format!("{}: not a file name", scene.display())))?;
     eprintln!("raylemma: rendering {}", scene.display());
     let (_, image, mut sidecar) = render::render_file(scene, spp, seed, render::Progress::Bar)?;
     sidecar.build = render::files::build_id();
-    let files = render::write_outputs(out, &stem, &image, &sidecar).map_err(|e| e.to_string())?;
+    let files = render::write_outputs(out, &stem, &image, &sidecar)?;
     eprintln!(
         "raylemma: {} spp in {:.2} s ({:.3e} pixel samples per second, {} threads)",
         sidecar.spp,

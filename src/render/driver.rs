@@ -266,14 +266,14 @@ where
 /// Renders the scene file `path` and times it: the image and its sidecar.
 ///
 /// # Errors
-/// The scene's [`crate::data::DataError`] as text, before anything is rendered.
+/// The scene's [`crate::data::DataError`], before anything is rendered.
 pub fn render_file(
     path: &Path,
     spp: Option<u32>,
     seed: Option<u64>,
     progress: Progress,
-) -> Result<(Scene, Image, Sidecar), String> {
-    let mut scene = format::load(path).map_err(|e| e.to_string())?;
+) -> Result<(Scene, Image, Sidecar), crate::data::DataError> {
+    let mut scene = format::load(path)?;
     if let Some(s) = spp {
         scene.settings.spp = s;
     }

@@ -194,7 +194,7 @@ pub fn stage_outputs(
     files.write_with(&exr, |f| image.encode_exr(f))?;
     let bytes = image
         .encode_png(0.0)
-        .map_err(|problem| FileError::new(&png, problem))?;
+        .map_err(|e| FileError::new(&png, e.to_string()))?;
     files.write(&png, &bytes)?;
     files.write(&json, sidecar.to_json(image).as_bytes())?;
     Ok([exr, png, json])

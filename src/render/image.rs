@@ -65,6 +65,74 @@ pub struct Image {
     pub spp: Option<u32>,
 }
 
+/// Why an image could not be read, encoded, drawn or merged: the one error type of the
+/// images (OpenEXR headers and pixels, PNG, a render's sidecar). Each variant says what a
+/// user needs: the file when one is known, and what is wrong with it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ImageError {
+    /// A file that cannot be read or written, or whose contents are wrong: the file named.
+    File(FileError),
+    /// The sidecar (`SCENE.json`) beside a render to merge cannot be read.
+    Sidecar(FileError),
+    /// An OpenEXR header that is malformed, or claims more than its file can back
+    /// ([`super::exr_header::check`]; the caller names the file).
+    Header(String),
+    /// A pixel whose mean is not finite or whose variance is not a finite number `>= 0`,
+    /// or a buffer of pixels that does not fit the image's size.
+    Pixels(String),
+    /// The OpenEXR or PNG encoder failed, or there is nothing to draw.
+    Encode(String),
+    /// Renders that do not go together (different scenes, sizes, builds or seeds in
+    /// common), or too few of them.
+    Mismatch(String),
+}
+
+impl ImageError {
+    /// The same error, its message prefixed with `what: ` (a lamp's name, say); a file's
+    /// error already names its file and is left as it is.
+    pub fn about(self, what: &str) -> Self {
+        let prefix = |m: String| format!("{what}: {m}");
+        match self {
+            ImageError::Header(m) => ImageError::Header(prefix(m)),
+            ImageError::Pixels(m) => ImageError::Pixels(prefix(m)),
+            ImageError::Encode(m) => ImageError::Encode(prefix(m)),
+            ImageError::Mismatch(m) => ImageError::Mismatch(prefix(m)),
+            e @ (ImageError::File(_) | ImageError::Sidecar(_)) => e,
+        }
+    }
+}
+
+impl std::fmt::Display for ImageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ImageError::File(e) => write!(f, "{e}"),
+            ImageError::Sidecar(e) => write!(
+                f,
+                "{e} (a render to merge needs its sidecar, which `raylemma render` writes beside it)"
+            ),
+            ImageError::Header(m)
+            | ImageError::Pixels(m)
+            | ImageError::Encode(m)
+            | ImageError::Mismatch(m) => f.write_str(m),
+        }
+    }
+}
+
+impl std::error::Error for ImageError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ImageError::File(e) | ImageError::Sidecar(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<FileError> for ImageError {
+    fn from(e: FileError) -> Self {
+        ImageError::File(e)
+    }
+}
+
 /// The accumulator of a pixel: the project's one Welford recurrence, on linear sRGB.
 pub type Welford = crate::stats::welford::Welford<DVec3>;
 
@@ -79,8 +147,8 @@ impl Image {
     /// `out`, with the samples per pixel as the header attribute `spp` when known.
     ///
     /// # Errors
-    /// The encoder's or the writer's error, in words.
-    pub fn encode_exr(&self, out: impl Write + Seek) -> Result<(), String> {
+    /// The encoder's or the writer's error ([`ImageError::Encode`]).
+    pub fn encode_exr(&self, out: impl Write + Seek) -> Result<(), ImageError> {
         let channel = |k: usize| -> Vec<f32> {
             let src = if k < 3 { &self.mean } else { &self.var };
             src.iter().map(|v| v[k % 3] as f32).collect()
@@ -105,7 +173,7 @@ impl Image {
         ExrImage::from_layer(layer)
             .write()
             .to_unbuffered(out)
-            .map_err(|e| format!("OpenEXR: {e}"))
+            .map_err(|e| ImageError::Encode(format!("OpenEXR: {e}")))
     }
 
     /// Writes the image as OpenEXR ([`Image::encode_exr`]) to `path`, atomically
@@ -143,7 +211,7 @@ impl Image {
     ///
     /// # Errors
     /// As [`display::encode_png`].
-    pub fn encode_png(&self, stops: f64) -> Result<Vec<u8>, String> {
+    pub fn encode_png(&self, stops: f64) -> Result<Vec<u8>, ImageError> {
         display::encode_png(
             self.width,
             self.height,
@@ -218,7 +286,10 @@ impl ExrContents {
             return Err(err(what.into()));
         }
         // The header's claimed sizes, checked against the file before the reader allocates.
-        super::exr_header::check_file(path).map_err(err)?;
+        super::exr_header::check_file(path).map_err(|e| match e {
+            ImageError::File(e) => e,
+            e => err(e.to_string()),
+        })?;
         let image = exr::prelude::read()
             .no_deep_data()
             .largest_resolution_level()
@@ -310,21 +381,21 @@ impl ExrContents {
             half,
             from_xyz,
         };
-        contents.check().map_err(err)?;
+        contents.check().map_err(|e| err(e.to_string()))?;
         Ok(contents)
     }
 
     /// The first pixel whose mean is not finite or whose variance is not a finite number
-    /// `>= 0`, in words.
-    fn check(&self) -> Result<(), String> {
+    /// `>= 0` ([`ImageError::Pixels`]).
+    fn check(&self) -> Result<(), ImageError> {
         let at = |i: usize| (i as u32 % self.width.max(1), i as u32 / self.width.max(1));
         for (i, m) in self.mean.iter().enumerate() {
             if let Some(c) = (0..3).find(|&c| !m[c].is_finite()) {
                 let (x, y) = at(i);
-                return Err(format!(
+                return Err(ImageError::Pixels(format!(
                     "pixel ({x}, {y}) channel {} is {}, not a finite number",
                     CHANNELS[c], m[c]
-                ));
+                )));
             }
         }
         for (i, v) in self.var.iter().flatten().enumerate() {
@@ -335,11 +406,11 @@ impl ExrContents {
                 } else {
                     ""
                 };
-                return Err(format!(
+                return Err(ImageError::Pixels(format!(
                     "pixel ({x}, {y}) channel {} is {}: a variance must be a finite number >= 0{why}",
                     CHANNELS[c + 3],
                     v[c]
-                ));
+                )));
             }
         }
         Ok(())

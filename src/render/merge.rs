@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 
 use super::files::Sidecar;
-use super::image::Image;
+use super::image::{Image, ImageError};
 use crate::stats::welford::combine;
 
 /// One render to pool: its image (with its variances) and its sidecar.
@@ -38,23 +38,20 @@ pub struct Part {
 /// Reads the render `exr` and its sidecar, the `.json` of the same name beside it.
 ///
 /// # Errors
-/// The EXR or the sidecar cannot be read, or they disagree on the samples per pixel.
-pub fn read_part(exr: &Path) -> Result<Part, String> {
-    let image = Image::read_exr(exr).map_err(|e| e.to_string())?;
+/// The EXR ([`ImageError::File`]) or the sidecar ([`ImageError::Sidecar`]) cannot be
+/// read, or they disagree on the samples per pixel ([`ImageError::Mismatch`]).
+pub fn read_part(exr: &Path) -> Result<Part, ImageError> {
+    let image = Image::read_exr(exr)?;
     let json = exr.with_extension("json");
-    let sidecar = Sidecar::read(&json).map_err(|e| {
-        format!(
-            "{e} (a render to merge needs its sidecar, which `raylemma render` writes beside it)"
-        )
-    })?;
+    let sidecar = Sidecar::read(&json).map_err(ImageError::Sidecar)?;
     if image.spp.is_some_and(|n| n != sidecar.spp) {
-        return Err(format!(
+        return Err(ImageError::Mismatch(format!(
             "{}: {} samples per pixel in the image, {} in {}",
             exr.display(),
             image.spp.unwrap_or(0),
             sidecar.spp,
             json.display()
-        ));
+        )));
     }
     Ok(Part {
         path: exr.to_path_buf(),
@@ -110,25 +107,26 @@ pub fn pool(parts: &[(&Image, u32)]) -> Image {
 /// settings), wavelength strategies, sizes or builds (the `raylemma` executable's hash,
 /// when both recorded it); two parts with a seed in common (their samples would be the
 /// same samples, counted twice); a part of fewer than 2 samples per pixel (no variance);
-/// more than `u32::MAX` samples per pixel in all. Each message names the files.
-pub fn merge(parts: &[Part]) -> Result<(Image, Sidecar), String> {
+/// more than `u32::MAX` samples per pixel in all. Each message names the files
+/// ([`ImageError::Mismatch`]).
+pub fn merge(parts: &[Part]) -> Result<(Image, Sidecar), ImageError> {
     let [first, rest @ ..] = parts else {
-        return Err("nothing to merge".into());
+        return Err(ImageError::Mismatch("nothing to merge".into()));
     };
     if rest.is_empty() {
-        return Err(format!(
+        return Err(ImageError::Mismatch(format!(
             "{}: one render; merge pools two or more renders of one scene made with different seeds",
             first.path.display()
-        ));
+        )));
     }
     let (a, name) = (&first.sidecar, first.path.display());
     let mut seen: HashMap<u64, &Path> = HashMap::new();
     for part in parts {
         let (b, other) = (&part.sidecar, part.path.display());
         let differ = |what: &str, x: &dyn std::fmt::Display, y: &dyn std::fmt::Display| {
-            format!(
+            ImageError::Mismatch(format!(
                 "{name} and {other} are renders of different {what} ({x} and {y}): only renders of one scene with one renderer pool"
-            )
+            ))
         };
         if b.scene_hash != a.scene_hash {
             return Err(differ(
@@ -154,24 +152,27 @@ pub fn merge(parts: &[Part]) -> Result<(Image, Sidecar), String> {
             return Err(differ("builds of raylemma (the executable's hash)", x, y));
         }
         if b.spp < 2 {
-            return Err(format!(
+            return Err(ImageError::Mismatch(format!(
                 "{other}: {} sample per pixel has no variance; render each part with at least 2",
                 b.spp
-            ));
+            )));
         }
         for seed in b.all_seeds() {
             if let Some(earlier) = seen.insert(seed, &part.path) {
-                return Err(format!(
+                return Err(ImageError::Mismatch(format!(
                     "{} and {other} were both rendered with seed {seed}: their samples are the same \
                      samples, and would be counted twice; render each part with its own --seed",
                     earlier.display()
-                ));
+                )));
             }
         }
     }
     let total: u64 = parts.iter().map(|p| u64::from(p.sidecar.spp)).sum();
-    let spp = u32::try_from(total)
-        .map_err(|_| format!("{total} samples per pixel in all: more than a render can record"))?;
+    let spp = u32::try_from(total).map_err(|_| {
+        ImageError::Mismatch(format!(
+            "{total} samples per pixel in all: more than a render can record"
+        ))
+    })?;
     let counts: Vec<(&Image, u32)> = parts.iter().map(|p| (&p.image, p.sidecar.spp)).collect();
     let image = pool(&counts);
     let mut seeds: Vec<u64> = parts.iter().flat_map(|p| p.sidecar.all_seeds()).collect();

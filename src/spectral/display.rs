@@ -13,6 +13,7 @@ use glam::{DVec2, DVec3};
 
 use super::cie;
 use crate::output::{self, FileError};
+use crate::render::image::ImageError;
 
 // ---------------------------------------------------------------------------------------
 // Transfer functions.
@@ -239,21 +240,22 @@ pub fn to_display_rgb8(linear_srgb: &[DVec3], stops: f64) -> Vec<u8> {
 /// Encodes `rgb8` (`3 w h` bytes, row-major, sRGB-encoded) as the bytes of a PNG file.
 ///
 /// # Errors
-/// A wrong buffer size, zero or too large dimensions, or a failure of the encoder.
-pub fn encode_png(w: u32, h: u32, rgb8: &[u8]) -> Result<Vec<u8>, String> {
+/// A wrong buffer size, zero or too large dimensions ([`ImageError::Pixels`]), or a
+/// failure of the encoder ([`ImageError::Encode`]).
+pub fn encode_png(w: u32, h: u32, rgb8: &[u8]) -> Result<Vec<u8>, ImageError> {
     let expected = 3 * u64::from(w) * u64::from(h);
     if w == 0 || h == 0 || rgb8.len() as u64 != expected {
-        return Err(format!(
+        return Err(ImageError::Pixels(format!(
             "{} bytes for a {w}x{h} image; it needs 3 x {w} x {h} = {expected} (and w, h > 0)",
             rgb8.len()
-        ));
+        )));
     }
     let image = image::RgbImage::from_raw(w, h, rgb8.to_vec())
-        .ok_or_else(|| "the buffer does not match the size".to_string())?;
+        .ok_or_else(|| ImageError::Pixels("the buffer does not match the size".to_string()))?;
     let mut bytes = std::io::Cursor::new(Vec::new());
     image
         .write_to(&mut bytes, image::ImageFormat::Png)
-        .map_err(|e| format!("cannot encode the PNG: {e}"))?;
+        .map_err(|e| ImageError::Encode(format!("cannot encode the PNG: {e}")))?;
     Ok(bytes.into_inner())
 }
 
@@ -265,7 +267,7 @@ pub fn encode_png(w: u32, h: u32, rgb8: &[u8]) -> Result<Vec<u8>, String> {
 /// A [`FileError`] naming `path`: wrong buffer size, zero or too large dimensions, or an
 /// I/O failure (missing directory, no permission, `path` is a directory...).
 pub fn write_png(path: &Path, w: u32, h: u32, rgb8: &[u8]) -> Result<(), FileError> {
-    let bytes = encode_png(w, h, rgb8).map_err(|problem| FileError::new(path, problem))?;
+    let bytes = encode_png(w, h, rgb8).map_err(|e| FileError::new(path, e.to_string()))?;
     output::write_file(path, &bytes)
 }
 // ANCHOR_END: write_png

@@ -23,6 +23,7 @@ use glam::DVec3;
 use super::spectrum::{Table, builtin};
 use super::{cie, display};
 use crate::data::DataError;
+use crate::render::image::ImageError;
 use crate::sampling::tabulated::{PiecewiseLinear1D, TableError};
 
 // ---------------------------------------------------------------------------------------
@@ -324,15 +325,19 @@ pub fn load_image(path: &Path) -> Result<Table, DataError> {
 ///
 /// # Errors
 /// If `height` is 0, the table is zero at every whole nanometre of 380-830 nm, or the PNG
-/// encoder fails.
-pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, String> {
+/// encoder fails ([`ImageError::Encode`]).
+pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, ImageError> {
     if height == 0 {
-        return Err("an image needs a height of at least 1 pixel".into());
+        return Err(ImageError::Encode(
+            "an image needs a height of at least 1 pixel".into(),
+        ));
     }
     let values: Vec<f64> = image_wavelengths().iter().map(|&l| table.eval(l)).collect();
     let max = values.iter().copied().fold(0.0, f64::max);
     if max <= 0.0 {
-        return Err("the spectrum is zero at every whole nanometre of 380-830 nm".into());
+        return Err(ImageError::Encode(
+            "the spectrum is zero at every whole nanometre of 380-830 nm".into(),
+        ));
     }
     let h = f64::from(height);
     let mut img = image::GrayImage::from_pixel(IMAGE_WIDTH, height, image::Luma([255]));
@@ -345,7 +350,7 @@ pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, String> {
     }
     let mut out = Cursor::new(Vec::new());
     img.write_to(&mut out, image::ImageFormat::Png)
-        .map_err(|e| format!("cannot encode the PNG: {e}"))?;
+        .map_err(|e| ImageError::Encode(format!("cannot encode the PNG: {e}")))?;
     Ok(out.into_inner())
 }
 // ANCHOR_END: write_image
@@ -358,15 +363,14 @@ pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, String> {
 ///
 /// # Errors
 /// If an image cannot be drawn or written; the earlier drawings are then left as they were.
-pub fn write_lamp_images(dir: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn write_lamp_images(dir: &Path) -> Result<Vec<PathBuf>, ImageError> {
     let mut files = crate::output::FileSet::new();
     for lamp in lamps() {
-        let bytes =
-            write_image(&lamp.spectrum, IMAGE_HEIGHT).map_err(|e| format!("{}: {e}", lamp.name))?;
+        let bytes = write_image(&lamp.spectrum, IMAGE_HEIGHT).map_err(|e| e.about(lamp.name))?;
         let path = dir.join(format!("{}.png", lamp.stem));
-        files.write(&path, &bytes).map_err(|e| e.to_string())?;
+        files.write(&path, &bytes)?;
     }
-    files.commit().map_err(|e| e.to_string())
+    Ok(files.commit()?)
 }
 
 /// The XYZ of a lamp, normalised to `Y = 1`.
