@@ -20,6 +20,7 @@ use serde::{Deserialize, Serialize};
 
 use super::format::fnv1a;
 use super::scene::Scene;
+use crate::output::FileError;
 
 /// A file and the FNV-1a hash of its bytes.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -84,8 +85,13 @@ fn slashed(p: &Path) -> String {
         .join("/")
 }
 
-fn hash_file(root: &Path, path: &Path) -> Result<FileHash, String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+/// `path`'s error `e` while reading it ("PATH: cannot read: ...").
+fn cannot_read(path: &Path, e: std::io::Error) -> FileError {
+    FileError::new(path, format!("cannot read: {e}"))
+}
+
+fn hash_file(root: &Path, path: &Path) -> Result<FileHash, FileError> {
+    let bytes = std::fs::read(path).map_err(|e| cannot_read(path, e))?;
     Ok(FileHash {
         file: relative(root, path),
         fnv1a: hex(fnv1a(&bytes)),
@@ -187,8 +193,8 @@ fn literal_arguments<'t>(text: &'t str, mac: &str) -> Vec<&'t str> {
 /// the data files compiled in, and `Cargo.lock`. Sorted, relative to `root`.
 ///
 /// # Errors
-/// If a file cannot be read.
-pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, String> {
+/// A [`FileError`] if a file cannot be read or a folder listed.
+pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, FileError> {
     let src = root.join("src");
     let mut seen: BTreeSet<PathBuf> = BTreeSet::new();
     let mut queue: VecDeque<PathBuf> = VecDeque::new();
@@ -200,8 +206,8 @@ pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, String> {
     let render = src.join("render");
     let mut stack = vec![render];
     while let Some(dir) = stack.pop() {
-        let entries =
-            std::fs::read_dir(&dir).map_err(|e| format!("{}: cannot list: {e}", dir.display()))?;
+        let entries = std::fs::read_dir(&dir)
+            .map_err(|e| FileError::new(&dir, format!("cannot list: {e}")))?;
         for e in entries.flatten() {
             let p = e.path();
             let not_pixels = ["compare.rs", "provenance.rs"]
@@ -215,8 +221,7 @@ pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, String> {
         }
     }
     while let Some(file) = queue.pop_front() {
-        let text = std::fs::read_to_string(&file)
-            .map_err(|e| format!("{}: cannot read: {e}", file.display()))?;
+        let text = std::fs::read_to_string(&file).map_err(|e| cannot_read(&file, e))?;
         let code = code_text(&text);
         // The folders' module files on the way to this one.
         let mut dir = file.parent().map(Path::to_path_buf);
@@ -302,8 +307,8 @@ pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, String> {
 /// without comments and blank lines for source files, bytes for data), and its file count.
 ///
 /// # Errors
-/// If a file cannot be read.
-pub fn code_version(root: &Path) -> Result<(String, usize), String> {
+/// A [`FileError`] if a file cannot be read.
+pub fn code_version(root: &Path) -> Result<(String, usize), FileError> {
     let files = source_closure(root)?;
     let mut all = Vec::new();
     for f in &files {
@@ -313,14 +318,10 @@ pub fn code_version(root: &Path) -> Result<(String, usize), String> {
         all.extend_from_slice(slashed(f).as_bytes());
         all.push(0);
         if f.extension().is_some_and(|e| e == "rs") {
-            let text = std::fs::read_to_string(&path)
-                .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+            let text = std::fs::read_to_string(&path).map_err(|e| cannot_read(&path, e))?;
             all.extend_from_slice(code_text(&text).as_bytes());
         } else {
-            all.extend(
-                std::fs::read(&path)
-                    .map_err(|e| format!("{}: cannot read: {e}", path.display()))?,
-            );
+            all.extend(std::fs::read(&path).map_err(|e| cannot_read(&path, e))?);
         }
         all.push(0);
     }
@@ -333,13 +334,13 @@ impl MadeFrom {
     /// ([`code_version`]).
     ///
     /// # Errors
-    /// If the scene file or a data file cannot be read.
+    /// A [`FileError`] if the scene file or a data file cannot be read.
     pub fn of(
         root: &Path,
         scene_file: &Path,
         scene: &Scene,
         code: &(String, usize),
-    ) -> Result<Self, String> {
+    ) -> Result<Self, FileError> {
         let s = &scene.settings;
         Ok(MadeFrom {
             scene: hash_file(root, scene_file)?,
