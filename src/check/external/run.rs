@@ -225,17 +225,81 @@ fn spawn(command: &str, dir: Option<&std::path::Path>) -> std::io::Result<Child>
     sh.spawn()
 }
 
+/// Why a program run by [`run_logged`] did not succeed: the one error type of a program
+/// run whole (a renderer run by `raylemma conformance`), as opposed to a program that
+/// answers the protocol's questions, whose bad answers are a [`DataError`] on their line.
+#[derive(Debug)]
+pub enum ProgramError {
+    /// The log file cannot be created.
+    Log {
+        /// The log file.
+        path: std::path::PathBuf,
+        /// Why not.
+        source: std::io::Error,
+    },
+    /// The shell cannot be started.
+    Start(std::io::Error),
+    /// The command ended with a status other than 0 (or was killed by a signal).
+    Status {
+        /// The command, as given.
+        command: String,
+        /// How it ended.
+        status: ExitStatus,
+    },
+    /// The command did not finish in its time, and was killed with every process it
+    /// started.
+    Timeout {
+        /// The command, as given.
+        command: String,
+        /// Its time.
+        timeout: Duration,
+    },
+}
+
+impl std::fmt::Display for ProgramError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ProgramError::Log { path, source } => write!(f, "{}: {source}", path.display()),
+            ProgramError::Start(e) => write!(f, "cannot start `sh -c`: {e}"),
+            ProgramError::Status { command, status } => {
+                write!(f, "`{command}` {}{}", describe(*status), hint(*status))
+            }
+            ProgramError::Timeout { command, timeout } => write!(
+                f,
+                "`{command}` did not finish in {:.0} s: killed it",
+                timeout.as_secs_f64()
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ProgramError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ProgramError::Log { source, .. } | ProgramError::Start(source) => Some(source),
+            ProgramError::Status { .. } | ProgramError::Timeout { .. } => None,
+        }
+    }
+}
+
 /// Runs `command` by `sh -c` in a process group of its own, its standard output and error
 /// into the file `log`, for at most `timeout` (then it is killed, with every process it
 /// started): a renderer run by `raylemma conformance`.
 ///
 /// # Errors
-/// The command cannot be started, fails (its status), or does not finish in time.
-pub fn run_logged(command: &str, log: &std::path::Path, timeout: Duration) -> Result<(), String> {
-    let out = std::fs::File::create(log).map_err(|e| format!("{}: {e}", log.display()))?;
-    let err = out
-        .try_clone()
-        .map_err(|e| format!("{}: {e}", log.display()))?;
+/// The command cannot be started, fails (its status), or does not finish in time
+/// ([`ProgramError`]).
+pub fn run_logged(
+    command: &str,
+    log: &std::path::Path,
+    timeout: Duration,
+) -> Result<(), ProgramError> {
+    let cannot_log = |source| ProgramError::Log {
+        path: log.to_path_buf(),
+        source,
+    };
+    let out = std::fs::File::create(log).map_err(cannot_log)?;
+    let err = out.try_clone().map_err(cannot_log)?;
     let mut sh = Command::new("sh");
     sh.arg("-c")
         .arg(command)
@@ -244,18 +308,19 @@ pub fn run_logged(command: &str, log: &std::path::Path, timeout: Duration) -> Re
         .stderr(err);
     #[cfg(unix)]
     std::os::unix::process::CommandExt::process_group(&mut sh, 0);
-    let mut child = sh
-        .spawn()
-        .map_err(|e| format!("cannot start `sh -c`: {e}"))?;
+    let mut child = sh.spawn().map_err(ProgramError::Start)?;
     match wait_until(&mut child, Instant::now() + timeout) {
         Some(status) if status.success() => Ok(()),
-        Some(status) => Err(format!("`{command}` {}{}", describe(status), hint(status))),
+        Some(status) => Err(ProgramError::Status {
+            command: command.to_string(),
+            status,
+        }),
         None => {
             kill(&mut child);
-            Err(format!(
-                "`{command}` did not finish in {:.0} s: killed it",
-                timeout.as_secs_f64()
-            ))
+            Err(ProgramError::Timeout {
+                command: command.to_string(),
+                timeout,
+            })
         }
     }
 }
