@@ -82,8 +82,9 @@ pub enum ImageError {
     Pixels(String),
     /// The OpenEXR or PNG encoder failed, or there is nothing to draw.
     Encode(String),
-    /// Renders that do not go together (different scenes, sizes, builds or seeds in
-    /// common), or too few of them.
+    /// Images that do not go together (a window outside its image, a reference of another
+    /// size than its scene), or renders that cannot be merged (different scenes, sizes,
+    /// builds or seeds in common, or too few of them).
     Mismatch(String),
 }
 
