@@ -14,6 +14,7 @@ use std::time::Duration;
 use clap::{Args, ValueEnum};
 use raylemma::check::render::diagnose::{self, diagnose};
 use raylemma::check::render::ladder::{self, LADDER, Rung, header};
+use raylemma::output::FileError;
 use raylemma::render::compare;
 use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
@@ -279,10 +280,10 @@ fn write_scene(
     depth: Option<u32>,
     format: Format,
     dir: &Path,
-) -> Result<Written, String> {
+) -> Result<Written, Box<dyn std::error::Error>> {
     let source = root().join("scenes/conformance").join(rung.file);
     let text =
-        std::fs::read_to_string(&source).map_err(|e| format!("{}: {e}", source.display()))?;
+        std::fs::read_to_string(&source).map_err(|e| FileError::new(&source, e.to_string()))?;
     let mut text: String = text
         .lines()
         .filter(|l| !(depth.is_some() && l.trim_start().starts_with("max_depth")))
@@ -302,8 +303,7 @@ fn write_scene(
         .collect::<Vec<_>>()
         .join("\n");
     text.push('\n');
-    let file = SceneFile::parse(&text, rung.file, &root().join("scenes/conformance"))
-        .map_err(|e| e.to_string())?;
+    let file = SceneFile::parse(&text, rung.file, &root().join("scenes/conformance"))?;
     let exported = match format {
         Format::Toml => Ok(("toml", text)),
         Format::Json => Ok(("json", json::to_json(&file))),
@@ -314,9 +314,9 @@ fn write_scene(
         Ok(e) => e,
         Err(e) => return Ok(Written::Refused(e.to_string())),
     };
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    std::fs::create_dir_all(dir).map_err(|e| FileError::new(dir, e.to_string()))?;
     let path = dir.join(format!("scene.{ext}"));
-    raylemma::output::write_file(&path, body.as_bytes()).map_err(|e| e.to_string())?;
+    raylemma::output::write_file(&path, body.as_bytes())?;
     Ok(Written::Scene(path, Box::new(file)))
 }
 
