@@ -95,6 +95,27 @@ pub enum StatsError {
         /// `cdf(x1)`, smaller than `f0`.
         f1: f64,
     },
+    /// A sample of the sampler under test cannot be binned: not finite, outside its
+    /// domain, or where the claimed pdf is not positive and finite (a renderer divides by
+    /// it).
+    InvalidSample {
+        /// Its index, in the order drawn.
+        index: u64,
+        /// The sample.
+        sample: glam::DVec3,
+        /// What is wrong with it, in words.
+        problem: String,
+    },
+    /// The claimed pdf is negative or not finite at a point where a cell's probability is
+    /// integrated.
+    InvalidPdf {
+        /// The cell: its row and column.
+        cell: (usize, usize),
+        /// The point, in the cell's coordinates.
+        at: (f64, f64),
+        /// The pdf there.
+        value: f64,
+    },
     /// A parameter of the test itself (not the data) is invalid.
     InvalidArgument {
         /// Which parameter and what it must be.
@@ -149,6 +170,19 @@ impl fmt::Display for StatsError {
             Self::CdfNotMonotone { x0, f0, x1, f1 } => write!(
                 f,
                 "the cdf decreases: cdf({x0}) = {f0} but cdf({x1}) = {f1}, although {x0} < {x1}"
+            ),
+            Self::InvalidSample {
+                index,
+                sample,
+                ref problem,
+            } => write!(f, "sample {index} = {sample:?}: {problem}"),
+            Self::InvalidPdf {
+                cell: (i, j),
+                at: (s, t),
+                value,
+            } => write!(
+                f,
+                "the pdf is {value} (negative or not finite) in cell ({i}, {j}) at cell coordinates ({s:.6}, {t:.6})"
             ),
             Self::InvalidArgument { what, value } => {
                 write!(f, "invalid argument: {what} (got {value})")

@@ -7,6 +7,7 @@ use std::f64::consts::TAU;
 use glam::DVec3;
 
 use super::{Domain, Warp};
+use crate::stats::StatsError;
 
 // ANCHOR: cells
 /// The cells of a domain: `(rows, cols)` and, for a point, its cell index.
@@ -235,7 +236,7 @@ pub(super) fn cell_probabilities(
     warp: &dyn Warp,
     rows: usize,
     cols: usize,
-) -> Result<Vec<f64>, String> {
+) -> Result<Vec<f64>, StatsError> {
     let domain = warp.domain();
     let mut probs = Vec::with_capacity(rows * cols);
     for i in 0..rows {
@@ -272,8 +273,10 @@ pub(super) fn cell_probabilities(
                     }
                 }
             };
-            let p = integral.map_err(|(s, t, v)| {
-                format!("the pdf is {v} (negative or not finite) in cell ({i}, {j}) at cell coordinates ({s:.6}, {t:.6})")
+            let p = integral.map_err(|(s, t, value)| StatsError::InvalidPdf {
+                cell: (i, j),
+                at: (s, t),
+                value,
             })?;
             probs.push(p);
         }

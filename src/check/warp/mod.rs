@@ -30,7 +30,7 @@ use glam::{DVec2, DVec3};
 
 use super::{Finding, Options, Verdict};
 use crate::rng::{self, Rng};
-use crate::stats::chi2;
+use crate::stats::{StatsError, chi2};
 use cells::{cell_of, cell_probabilities, grid, outside, worst_cells};
 pub use images::{failure_dir, set_failure_dir};
 use images::{remove_stale_images, write_failure_images};
@@ -292,13 +292,13 @@ fn below_horizon(warp: &dyn Warp, rng: &mut Rng, rest: usize) -> String {
 /// Draws the samples, bins them, and runs Pearson's test.
 ///
 /// # Errors
-/// A message naming the first invalid sample (not finite, outside the domain, or where
-/// the claimed pdf is not positive and finite), a negative pdf, or what `pearson` rejects
-/// (samples in zero-probability cells, a pdf that does not integrate to 1).
+/// A [`StatsError`] naming the first invalid sample (not finite, outside the domain, or
+/// where the claimed pdf is not positive and finite), a negative pdf, or what `pearson`
+/// rejects (samples in zero-probability cells, a pdf that does not integrate to 1).
 pub fn chi_squared(
     warp: &dyn Warp,
     options: &impl ToWarpOptions,
-) -> Result<(chi2::Chi2, Vec<u64>, Vec<f64>), String> {
+) -> Result<(chi2::Chi2, Vec<u64>, Vec<f64>), StatsError> {
     let options = options.to_warp_options();
     let domain = warp.domain();
     let (rows, cols) = grid(domain, options.resolution);
@@ -307,8 +307,13 @@ pub fn chi_squared(
     // ANCHOR: support
     for k in 0..options.samples {
         let p = warp.sample(&mut rng);
+        let invalid = |problem: String| StatsError::InvalidSample {
+            index: k as u64,
+            sample: p,
+            problem,
+        };
         if let Some(why) = outside(domain, p) {
-            return Err(format!("sample {k} = {p:?}: {why}"));
+            return Err(invalid(why));
         }
         // Every sample must lie where the claimed pdf is positive: a renderer divides by it.
         // A cell's integral cannot see a few samples leaked just past a jump of the pdf,
@@ -322,13 +327,12 @@ pub fn chi_squared(
             } else {
                 "zero"
             };
-            let mut message = format!(
-                "sample {k} = {p:?}: the claimed pdf is {pdf} there ({why}), and a renderer divides by it"
-            );
+            let mut problem =
+                format!("the claimed pdf is {pdf} there ({why}), and a renderer divides by it");
             if domain == Domain::Sphere && p.z < 0.0 && pdf == 0.0 {
-                message += &below_horizon(warp, &mut rng, options.samples - k - 1);
+                problem += &below_horizon(warp, &mut rng, options.samples - k - 1);
             }
-            return Err(message);
+            return Err(invalid(problem));
         }
         observed[cell_of(domain, p, rows, cols)] += 1;
     }
@@ -337,7 +341,7 @@ pub fn chi_squared(
         .into_iter()
         .map(|p| p * options.samples as f64)
         .collect();
-    let result = chi2::pearson(&observed, &expected, 5.0).map_err(|e| e.to_string())?;
+    let result = chi2::pearson(&observed, &expected, 5.0)?;
     Ok((result, observed, expected))
 }
 
@@ -371,7 +375,7 @@ fn chi_squared_finding(warp: &dyn Warp, options: &WarpOptions) -> Finding {
                 )
             });
         }
-        Err(why) => finding.record(false, || why),
+        Err(why) => finding.record(false, || why.to_string()),
     }
     finding
 }
