@@ -42,7 +42,8 @@
 //! header, blank lines and `#` comments.
 //!
 //! Every bad input is a [`DataError`](crate::data::DataError): the file or program, the
-//! line and what is wrong.
+//! line and what is wrong. A program run whole rather than asked questions (a renderer
+//! run by `raylemma conformance`, [`run_logged`]) fails with a [`ProgramError`].
 
 mod memo;
 mod optics;
