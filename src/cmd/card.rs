@@ -27,8 +27,7 @@ pub struct CardArgs {
 /// Runs `raylemma card`: 0 if every exercise judged passes, 1 if one does not, 2 for an
 /// unknown exercise, markers that cannot be read or JSON that cannot be written.
 pub fn run(args: &CardArgs) -> CmdResult {
-    let mut markers =
-        edition::markers_under(&root()).map_err(|e| Failure::BadInput(e.to_string()))?;
+    let mut markers = edition::markers_under(&root())?;
     if let Some(unknown) = args
         .only
         .iter()
@@ -67,8 +66,7 @@ pub fn run(args: &CardArgs) -> CmdResult {
     if let Some(path) = &args.json {
         let text = serde_json::to_string_pretty(&card.report())
             .map_err(|e| Failure::Failed(format!("cannot write the card as JSON: {e}")))?;
-        raylemma::output::write_file(path, (text + "\n").as_bytes())
-            .map_err(|e| Failure::BadInput(e.to_string()))?;
+        raylemma::output::write_file(path, (text + "\n").as_bytes())?;
     }
     Ok(if card.passed() {
         Outcome::Done

@@ -134,8 +134,7 @@ pub fn run(args: &ConformanceArgs) -> CmdResult {
     let card = card_text(&rows, args);
     print!("{card}");
     let write = |path: &Path, text: String| {
-        raylemma::output::write_file(path, text.as_bytes())
-            .map_err(|e| Failure::BadInput(e.to_string()))
+        raylemma::output::write_file(path, text.as_bytes()).map_err(Failure::from)
     };
     if let Some(p) = &args.json {
         write(p, card_json(&rows, args))?;

@@ -45,7 +45,6 @@ pub struct GradeArgs {
 /// written either way), 2 for a submission that is not a hand-out, a bad weights file or
 /// a folder that cannot be written.
 pub fn run(args: &GradeArgs) -> CmdResult {
-    let bad = |e: &dyn std::fmt::Display| Failure::BadInput(e.to_string());
     if !args.submission.join(STAMP).is_file() {
         return Err(Failure::BadInput(format!(
             "{}: not a raylemma edition (it has no {STAMP}; make one with `raylemma exercises DIR`)",
@@ -53,24 +52,24 @@ pub fn run(args: &GradeArgs) -> CmdResult {
         )));
     }
     let root = root();
-    let sources = edition::read_sources(&root).map_err(|e| bad(&e))?;
-    let exercises = edition::markers(&sources).map_err(|e| bad(&e))?;
+    let sources = edition::read_sources(&root)?;
+    let exercises = edition::markers(&sources)?;
     let summary = std::fs::read_to_string(root.join("chapters/SUMMARY.md"))
         .map_err(|e| Failure::Failed(format!("cannot read chapters/SUMMARY.md: {e}")))?;
     let chapters = marker::chapters(&summary);
     let weights = match &args.weights {
         Some(path) => {
-            let (text, name) = raylemma::data::read_text(path).map_err(|e| bad(&e))?;
-            grade::parse_weights(&text, &name, &exercises).map_err(|e| bad(&e))?
+            let (text, name) = raylemma::data::read_text(path)?;
+            grade::parse_weights(&text, &name, &exercises)?
         }
         None => Weights::default(),
     };
     let (files, notes) = grade::splice(sources, &exercises, &chapters, &args.submission);
-    let graded = edition::make(files, Kind::Graded).map_err(|e| bad(&e))?;
+    let graded = edition::make(files, Kind::Graded)?;
     let work = args.work.clone().unwrap_or_else(default_work);
     let copy = work.join("crate");
-    raylemma::output::create_dir_all(&work).map_err(|e| bad(&e))?;
-    edition::write(&graded, &copy).map_err(|e| bad(&e))?;
+    raylemma::output::create_dir_all(&work)?;
+    edition::write(&graded, &copy)?;
     eprintln!(
         "raylemma: grading {}: its {} exercise bodies in the edition's own code, at {}",
         args.submission.display(),
@@ -83,7 +82,7 @@ pub fn run(args: &GradeArgs) -> CmdResult {
         Err(why) => grade::unbuilt(&exercises, &weights, &why, notes),
     };
     let text = text(&grade, &args.submission);
-    write_all(&args.out, &grade, &text).map_err(|e| bad(&e))?;
+    write_all(&args.out, &grade, &text)?;
     print!("{text}");
     eprintln!("raylemma: wrote the grade to {}", args.out.display());
     Ok(if grade.rows.iter().all(|r| r.entry.passed()) {
