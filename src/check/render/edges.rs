@@ -2,7 +2,7 @@
 //! values are known in closed form. Chapter: *Testing the renderer*
 //! (`chapters/renderer/testing.md`, *Edges*).
 //!
-//! The exact images of [`super::exact`] leave out every pixel an edge crosses. A mistake
+//! The exact images of [`mod@super::exact`] leave out every pixel an edge crosses. A mistake
 //! in a pixel's footprint (the jitter's distribution, the filter's width) moves a pixel by
 //! about half the radiance's change across it, or by its curvature: little where the
 //! radiance varies slowly. One that ties the point in the pixel to another sample

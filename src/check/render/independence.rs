@@ -45,7 +45,7 @@ fn mix(mut z: u64) -> u64 {
 
 /// A pixel's numbers with one stream per sample dimension: dimension `k` of pixel `pixel`
 /// for `seed` is drawn from its own PCG-64, whose state and stream are hashes of all
-/// three ([`mix`]), so that no two dimensions or pixels share a generator or start from
+/// three (by SplitMix64's finaliser), so that no two dimensions or pixels share a generator or start from
 /// related states.
 #[derive(Clone, Debug)]
 pub struct Dimensions {
