@@ -1,7 +1,7 @@
 //! The single-precision (`f32`) twins of the dual-precision derivations.
 //!
 //! The modules below are the source files of `crate::geometry::{ray, sphere}` and
-//! `crate::sampling::{sphere, disc, cosine, frame}`, compiled a second time: each parent
+//! `crate::sampling::{sphere, disc, cosine, frame, trig}`, compiled a second time: each parent
 //! module here brings [`crate::precision::single`] into scope as `precision`, so inside
 //! those files `Float` is `f32` and `V2`, `V3` are `Vec2`, `Vec3` (see
 //! [`crate::precision`]). The book measures the same formulas in both precisions with
@@ -42,4 +42,5 @@ pub mod sampling {
     pub mod disc; // src/sampling/disc.rs
     pub mod frame; // src/sampling/frame.rs
     pub mod sphere; // src/sampling/sphere.rs
+    pub mod trig; // src/sampling/trig.rs
 }

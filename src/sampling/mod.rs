@@ -13,3 +13,4 @@ pub mod frame;
 pub mod importance;
 pub mod sphere;
 pub mod tabulated;
+pub mod trig;

@@ -5,6 +5,7 @@ use glam::{DVec2, DVec3};
 use raylemma::check::warp::{self, Domain, SquareWarp, planted};
 use raylemma::check::{Options, max_abs};
 use raylemma::sampling::disc::*;
+use raylemma::sampling::trig::{QUARTER_TERMS, sin_cos_quarter};
 
 /// The warp checker at the sampler tests' settings (400 000 samples, 21 rows and 5 000
 /// points by its rule), with the round trip.
@@ -142,7 +143,7 @@ fn the_quarter_range_sine_and_cosine_are_within_two_eps() {
                 && (c - c0).abs() <= 2.0 * f64::EPSILON * c0,
             "at {x}: series ({s}, {c}), std ({s0}, {c0})"
         );
-        let (s32, c32) = raylemma::single::sampling::disc::sin_cos_quarter(x as f32);
+        let (s32, c32) = raylemma::single::sampling::trig::sin_cos_quarter(x as f32);
         let (s1, c1) = (x as f32 as f64).sin_cos();
         assert!(
             (f64::from(s32) - s1).abs() <= 2.0 * f64::from(f32::EPSILON) * s1.abs()
@@ -179,7 +180,7 @@ fn the_quarter_range_sine_and_cosine_are_within_two_eps() {
 /// 8 coefficients per series, `f32` 4 (its twin once summed all 8, sized for `f64`).
 #[test]
 fn the_quarter_series_sum_only_the_terms_their_precision_needs() {
-    use raylemma::single::sampling::disc as single;
+    use raylemma::single::sampling::trig as single;
     let x = std::f64::consts::FRAC_PI_4;
     // x^k / k!
     let term = |k: i32| (1..=k).fold(1.0, |t: f64, i| t * x / f64::from(i));

@@ -11,6 +11,7 @@ use crate::plot::BoxError;
 use crate::{Record, Settings, timing};
 use raylemma::rng;
 use raylemma::sampling::disc::*;
+use raylemma::sampling::trig::sin_cos_quarter;
 
 /// The concentric map with the standard library's `sin_cos` of the wedge angle in place
 /// of [`sin_cos_quarter`]: the form the series replaces.
@@ -32,7 +33,7 @@ fn disc_concentric_std(u: DVec2) -> DVec3 {
 /// library's `sin_cos` on angles in `[-pi/4, pi/4]`, in both precisions, and of the
 /// concentric map with each, on the same random points of the square.
 pub(super) fn quarter_speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
-    use raylemma::single::sampling::disc as disc32;
+    use raylemma::single::sampling::trig as trig32;
     let reps = if settings.quick { 5 } else { 201 };
     let mut rng = rng::seeded(0x5eed_d15c);
     let angles: Vec<f64> = (0..4096)
@@ -85,7 +86,7 @@ pub(super) fn quarter_speed_md(settings: &Settings, r: &mut Record) -> Result<Ve
             "sin_cos",
             "f32",
             time32(&|x| {
-                let (s, c) = disc32::sin_cos_quarter(x);
+                let (s, c) = trig32::sin_cos_quarter(x);
                 s + c
             }),
             time32(&|x| {
