@@ -37,10 +37,36 @@ pub fn stub_line(indent: &str, name: &str) -> String {
     format!("{indent}    crate::exercise::todo(\"{name}\")")
 }
 
+/// Whether `text` is a file compiled twice, for `f64` and for `f32` (its twin in
+/// `src/single.rs`): it takes its types from the precision its parent module chose.
+pub fn is_twin(text: &str) -> bool {
+    text.contains("use super::precision::")
+}
+
+/// The first line of a stub in a file compiled twice ([`is_twin`]): a body written with
+/// `f64` types compiles for the first precision and fails for the second, in an error that
+/// does not say why.
+pub fn twin_note(indent: &str) -> String {
+    format!(
+        "{indent}    // This file is compiled twice: for f64, and for f32 as its twin in \
+         src/single.rs. Write the body with Float, V2, V3 and consts::, not f64, DVec3 or \
+         std::f64: an error that expects f32 (or names `single::`) is the f32 twin's."
+    )
+}
+
 /// `text` (the file of `markers`, which must all be in it) with every marked body
-/// replaced by its stub, and the lines removed. Line endings are kept as they were.
+/// replaced by its stub, and the lines removed; in a file compiled twice, each stub starts
+/// with [`twin_note`]. Line endings are kept as they were.
 pub fn stub_file(text: &str, markers: &[Marker]) -> (String, Vec<Removed>) {
-    replace_bodies(text, markers, |m| vec![stub_line(&m.indent, &m.name)])
+    let twin = is_twin(text);
+    replace_bodies(text, markers, |m| {
+        let stub = stub_line(&m.indent, &m.name);
+        if twin {
+            vec![twin_note(&m.indent), stub]
+        } else {
+            vec![stub]
+        }
+    })
 }
 
 /// `text` (the file of `markers`, which must all be in it) with every marked body
