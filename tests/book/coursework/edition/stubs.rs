@@ -49,3 +49,46 @@ impl Table {
         ]
     );
 }
+
+/// In a file compiled twice (its types from `super::precision`, as the disc's), each stub
+/// starts with the note that it is, so that a body written in `f64` types, which the
+/// second build refuses with an error about `f32`, is explained where it is written; in
+/// other files the stub is the one line. This crate's twin files are those of
+/// `src/single.rs`.
+#[test]
+fn a_stub_in_a_file_compiled_twice_says_so() {
+    let twin = FIXTURE.replace("use super::V2;", "use super::precision::{Float, V2};");
+    let m = marker::parse("src/fixture.rs", &twin, &chapters()).unwrap();
+    let (stubbed, _) = stub::stub_file(&twin, &m);
+    let note = stub::twin_note("");
+    assert_eq!(stubbed.matches(note.trim()).count(), 2, "{stubbed}");
+    assert!(
+        stubbed.contains(&format!(
+            "{note}\n    crate::exercise::todo(\"disc_polar\")"
+        )),
+        "{stubbed}"
+    );
+    let (plain, _) = stub::stub_file(
+        FIXTURE,
+        &marker::parse("src/fixture.rs", FIXTURE, &chapters()).unwrap(),
+    );
+    assert!(!plain.contains(note.trim()), "{plain}");
+    for file in [
+        "src/geometry/ray.rs",
+        "src/geometry/sphere.rs",
+        "src/sampling/disc.rs",
+        "src/sampling/trig.rs",
+    ] {
+        let text = std::fs::read_to_string(crate::support::root().join(file)).unwrap_or_default();
+        assert!(
+            stub::is_twin(&text),
+            "{file} is compiled twice but not seen as a twin"
+        );
+    }
+    let text = std::fs::read_to_string(crate::support::root().join("src/optics/fresnel.rs"))
+        .unwrap_or_default();
+    assert!(
+        !stub::is_twin(&text) && !text.is_empty(),
+        "fresnel.rs is compiled once"
+    );
+}
