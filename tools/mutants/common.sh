@@ -11,10 +11,22 @@ if [ -n "$(git status --porcelain --untracked-files=no)" ]; then
 fi
 mkdir -p "$out"
 
+# The tests a filter names must pass on the unmutated code, once per filter and run: with
+# `--baseline skip`, a test that already fails would make every mutant look caught.
+passed_baseline=" "
 mutate() { # name, test filter, cargo-mutants arguments...
   local name="$1" filter="$2"
   shift 2
   [ -f "$out/$name/mutants.out/outcomes.json" ] && { echo "== $name: done before"; return; }
+  if [[ "$passed_baseline" != *" $filter "* ]]; then
+    echo "== baseline: cargo test --test book $filter (must pass unmutated)"
+    if ! cargo test -q --test book -- "$filter" > "$out/baseline.log" 2>&1; then
+      tail -20 "$out/baseline.log" >&2
+      echo "$(basename "$0"): the tests '$filter' fail on the unmutated code; every mutant would look caught (log: $out/baseline.log)" >&2
+      exit 1
+    fi
+    passed_baseline+="$filter "
+  fi
   echo "== $name (tests: $filter)"
   cargo mutants --in-place --no-shuffle --baseline skip --timeout 300 --build-timeout 900 \
     -o "$out/$name" "$@" -C --test=book -- "$filter" || true
