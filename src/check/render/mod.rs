@@ -147,7 +147,9 @@ pub const DIRECT_VARIANTS: [(&str, DirectLight); 4] = [
 ///   direct-lighting strategy ([`DIRECT_VARIANTS`]);
 /// * the floor under the fluorescent light with every wavelength strategy
 ///   ([`wavelength_variants`]);
-/// * the glass sphere, the mirror sphere and the thin film in the sky.
+/// * the glass sphere, the mirror sphere and the thin film in the sky;
+/// * the scenes of edges ([`edge_scenes`]), and some of them with other strategies
+///   ([`edge_strategy_scenes`]).
 pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
     let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
     let mut list = vec![
@@ -209,6 +211,7 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
         },
     ]);
     list.extend(edge_scenes(scale));
+    list.extend(edge_strategy_scenes(scale));
     for s in &mut list {
         s.scene.settings.seed = seed;
     }
@@ -240,6 +243,40 @@ pub fn edge_scenes(scale: f64) -> Vec<ExactScene> {
             block: EDGE_BLOCK,
         },
     ]
+}
+
+/// The scenes of edges with other strategies, in the exact set only: the shadows of two
+/// lights by light sampling alone and by MIS with the balance heuristic (the choice between
+/// two lights and the strategies' weights, at every shadow's edge; the scene's own is MIS
+/// with the power heuristic; BSDF sampling alone would meet lights this small in too few
+/// samples to test), and the
+/// red quad with the hero's four wavelengths (the scene's own is one wavelength), each at
+/// its own samples per pixel times `scale`.
+pub fn edge_strategy_scenes(scale: f64) -> Vec<ExactScene> {
+    let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
+    let mut list = Vec::new();
+    for (name, direct, own) in [
+        ("light sampling only", DirectLight::Light, 256),
+        ("MIS, balance heuristic", DirectLight::Mis(Heuristic::Balance), 256),
+    ] {
+        let mut scene = scenes::shadows_of_two_lights(32, spp(own));
+        scene.settings.direct = direct;
+        list.push(ExactScene {
+            name: format!("shadows of two lights, {name}"),
+            scene,
+            expected: edges::shadow,
+            block: EDGE_BLOCK,
+        });
+    }
+    let mut scene = scenes::coloured_quad_in_sky(32, spp(512));
+    scene.settings.wavelengths = Wavelength::Strategy(Strategy::HeroVisible);
+    list.push(ExactScene {
+        name: "edges of a red quad in a sky, hero".into(),
+        scene,
+        expected: edges::flat,
+        block: EDGE_BLOCK,
+    });
+    list
 }
 
 /// The default seed of the renderer checks.
