@@ -91,7 +91,12 @@ use std::fmt;
 /// * `cases`: the number of cases per claim (for a statistical claim, the number of
 ///   samples). Defaults: [`sphere::CASES`], [`sphere::FAR_RAYS`],
 ///   [`sphere::SELF_HIT_RAYS`], [`warp::SAMPLES`], [`reflect::CASES`], [`fresnel::ANGLES`],
-///   [`single::POINTS`].
+///   [`single::POINTS`]. The renderer's checks render images instead of drawing cases,
+///   and there `cases` is how many samples: a percentage of each scene's own samples per
+///   pixel for the exact images and the independence check ([`render::exact()`],
+///   [`render::independence::independence`]: default 100), the samples per pixel
+///   themselves for the comparisons of estimators and of the references' windows
+///   ([`render::agreement`], [`render::depths`]: 64; [`render::references`]: 32).
 /// * `seed`: the seed of the random cases. Defaults: [`sphere::SEED`],
 ///   [`sphere::SELF_HIT_SEED`], [`warp::SEED`], [`reflect::REFLECTION_SEED`],
 ///   [`reflect::REFRACTION_SEED`], [`single::SEED`]; the Fresnel sweep is deterministic
