@@ -257,7 +257,11 @@ pub fn edge_strategy_scenes(scale: f64) -> Vec<ExactScene> {
     let mut list = Vec::new();
     for (name, direct, own) in [
         ("light sampling only", DirectLight::Light, 256),
-        ("MIS, balance heuristic", DirectLight::Mis(Heuristic::Balance), 256),
+        (
+            "MIS, balance heuristic",
+            DirectLight::Mis(Heuristic::Balance),
+            256,
+        ),
     ] {
         let mut scene = scenes::shadows_of_two_lights(32, spp(own));
         scene.settings.direct = direct;
