@@ -4,11 +4,11 @@
 
 use std::fmt::Write as _;
 
+use anyhow::Context;
 use raylemma::check::accuracy::{self, BOUND, Expect, corpus, forms};
 use raylemma_values::slug;
 
 use crate::job::{Output, Record, Settings};
-use crate::plot::BoxError;
 
 /// One table per corpus of [`forms::CORPORA`] (`accuracy_NAME.md`, the corpus named by its
 /// file), and the summary of them all.
@@ -31,22 +31,22 @@ pub fn outputs() -> Vec<Output> {
 }
 
 /// The corpus a table's file is for: `accuracy_NAME.md` is `NAME`.
-fn corpus_of(r: &Record) -> Result<&'static str, BoxError> {
+fn corpus_of(r: &Record) -> anyhow::Result<&'static str> {
     let file = r.file();
     let name = file
         .strip_prefix("accuracy_")
         .and_then(|f| f.strip_suffix(".md"))
-        .ok_or_else(|| format!("{file} is not an accuracy table's file"))?;
+        .with_context(|| format!("{file} is not an accuracy table's file"))?;
     Ok(*forms::CORPORA
         .iter()
         .find(|c| **c == name)
-        .ok_or_else(|| format!("no corpus named {name}"))?)
+        .with_context(|| format!("no corpus named {name}"))?)
 }
 
 /// Per corpus, in book order: its cases and routines, its forms and how many of the
 /// renderer's are within the bound, the worst ratio among them, and the forms kept to show
 /// a loss (which exceed it). The claim `every_shipped_form_within` covers every corpus.
-fn summary(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn summary(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::from(
         "| corpus | chapter | cases | routines | forms | the renderer's forms within | their worst ulps / max(κ, 1) | forms that exceed (kept to show the loss) |\n|---|---|---:|---:|---:|---:|---:|---|\n",
     );
@@ -62,12 +62,13 @@ fn summary(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
             .and_then(|l| l.split(" (").next())
             .unwrap_or("?")
             .to_string();
-        let forms = forms::of(name).ok_or_else(|| format!("no forms answer the corpus {name}"))?;
+        let forms =
+            forms::of(name).with_context(|| format!("no forms answer the corpus {name}"))?;
         let (mut shipped, mut within, mut worst) = (0, 0, 0.0_f64);
         let mut exceed = Vec::new();
         for form in &forms {
             let s = accuracy::summarize(&accuracy::measure_form(&corpus, form))
-                .ok_or_else(|| format!("{name}: no case of {}", form.verb))?;
+                .with_context(|| format!("{name}: no case of {}", form.verb))?;
             let ok = s.worst_ratio.ratio <= BOUND;
             match form.expect {
                 Expect::Within => {
@@ -139,10 +140,10 @@ fn kappa(c: f64) -> String {
 /// The table of one corpus ([`corpus_of`] the record's file): per verb and form, the cases, the median
 /// and worst errors (ulps), the input of the worst and the condition number there, and
 /// the worst error divided by `max(κ, 1)`, which the claim holds to at most [`BOUND`].
-fn table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn table(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let name = corpus_of(r)?;
     let corpus = corpus::load(&settings.root.join(format!("data/corpus/{name}.txt")))?;
-    let forms = forms::of(name).ok_or_else(|| format!("no forms answer the corpus {name}"))?;
+    let forms = forms::of(name).with_context(|| format!("no forms answer the corpus {name}"))?;
     let mut md = String::new();
     writeln!(
         md,
@@ -153,7 +154,7 @@ fn table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     for form in &forms {
         let measured = accuracy::measure_form(&corpus, form);
         let s = accuracy::summarize(&measured)
-            .ok_or_else(|| format!("{name}: no case of {} for {}", form.verb, form.label()))?;
+            .with_context(|| format!("{name}: no case of {} for {}", form.verb, form.label()))?;
         let key = format!("{}.{}", form.verb, slug(&form.label()));
         let worst_case = &corpus.cases[s.worst.case];
         let within = s.worst_ratio.ratio <= BOUND;

@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use plotters::prelude::*;
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, PALETTE, Panel, Series};
+use crate::plot::{self, PALETTE, Panel, Series};
 use raylemma::spectral::cie::{
     self, chromaticity, cmf, cmf_fit, krystek, xyz, xyz_to_linear_srgb, xyz_with,
 };
@@ -88,7 +88,7 @@ fn planck_xy(kelvin: f64) -> DVec2 {
     xy_of(xyz(|nm| planck(nm, kelvin)))
 }
 
-fn chromaticity_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn chromaticity_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let small = || plot::font(plot::TICK_PX);
     plot::svg(plot::WIDTH, 800, |root, _| {
         let rest = plot::draw_title(
@@ -209,7 +209,7 @@ struct IlluminantRow {
     fit: f64,
 }
 
-fn illuminants_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn illuminants_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -361,7 +361,7 @@ fn illuminants_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn fit_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn fit_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let nms: Vec<f64> = (0..=94).map(|i| 360.0 + 5.0 * f64::from(i)).collect();
     // The error oscillates with a period of about 10 nm: 5 nm steps would alias it.
     let fine: Vec<f64> = (0..=470).map(|i| 360.0 + f64::from(i)).collect();
@@ -429,7 +429,7 @@ pub fn fit_errors() -> [(f64, f64, f64); 3] {
     out
 }
 
-fn fit_md(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn fit_md(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let errors = fit_errors();
     let mut peak = DVec3::ZERO;
     for i in 0..cie::CMF_ROWS {
@@ -458,7 +458,7 @@ fn fit_md(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let reps = if settings.quick { 5 } else { 41 };
     // Wavelengths as a renderer draws them: uniform over the range, not on the knots.
     let mut rng = raylemma::rng::seeded(0xC0);
@@ -520,7 +520,7 @@ fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn planck_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn planck_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,

@@ -15,7 +15,6 @@ use std::fmt::Write as _;
 use rayon::prelude::*;
 
 use super::{Output, Record, Settings};
-use crate::plot::BoxError;
 use crate::timing::quick_note;
 use raylemma::render::compare::{Estimate, compare};
 use raylemma::render::image::Image;
@@ -229,14 +228,15 @@ fn calibration_claims(r: &mut Record, all: &[(&str, usize, Counts)], n: u32) {
 const SCENES: [&str; 2] = ["cornell-diffuse", "cornell"];
 
 /// The counts of every candidate set over `trials` trials of `name`.
-fn calibrate(settings: &Settings, name: &str, trials: u64) -> Result<[Counts; 4], BoxError> {
+fn calibrate(settings: &Settings, name: &str, trials: u64) -> anyhow::Result<[Counts; 4]> {
     let mut scene = render::load(&settings.root.join("scenes").join(format!("{name}.toml")))?;
     scene.camera.width = SIDE;
     scene.camera.height = SIDE;
     let results: Vec<Vec<Outcome>> = (0..trials)
         .into_par_iter()
         .map(|k| trial(&scene, k))
-        .collect::<Result<_, _>>()?;
+        .collect::<Result<_, _>>()
+        .map_err(anyhow::Error::msg)?;
     let mut counts = [Counts::default(); SETS.len()];
     for r in &results {
         for (c, &(fa, nfa, det, z2)) in counts.iter_mut().zip(r) {
@@ -260,7 +260,7 @@ fn set_name(set: usize) -> String {
     }
 }
 
-fn calibration_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let trials: u64 = if settings.quick { 2 } else { 100 };
     let n = u32::try_from(trials)?;
     let rate = |k: u32| {

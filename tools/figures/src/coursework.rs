@@ -2,10 +2,10 @@
 //! and the verdicts the chapter reads, each produced by running the library's own code (the
 //! stub writer, the card, the checkers on planted mistakes), never typed by hand.
 
+use anyhow::{Context, anyhow, bail};
 use glam::{DVec2, DVec3};
 
 use super::{Output, Record, Settings};
-use crate::plot::BoxError;
 use raylemma::check::warp::{self, Domain, SquareWarp};
 use raylemma::check::{self, Finding, Options, Verdict};
 use raylemma::exercise::card::{self, Status};
@@ -96,7 +96,7 @@ fn cosine_verdict() -> Verdict {
 /// The chapter's *Statistical verdicts*: what a correct sampler's chi-squared p-value looks
 /// like over seeds 1 to 12 at the tests' settings, against a small real bug (the `cos^1.1`
 /// lobe claimed as a cosine lobe), whose Jacobian check fails too.
-fn seeds_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn seeds_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     use std::fmt::Write as _;
     let correct = SquareWarp::new("disc, polar", Domain::Disc, disc_polar, disc_pdf);
     let lobe = SquareWarp::new(
@@ -105,11 +105,8 @@ fn seeds_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
         warp::planted::cosine_power_lobe,
         cosine_pdf,
     );
-    let p = |w: &dyn warp::Warp, o: &Options| -> Result<f64, BoxError> {
-        Ok(warp::chi_squared(w, o)
-            .map_err(|e| -> BoxError { e.into() })?
-            .0
-            .p_value)
+    let p = |w: &dyn warp::Warp, o: &Options| -> anyhow::Result<f64> {
+        Ok(warp::chi_squared(w, o)?.0.p_value)
     };
     let show = |p: f64| {
         if p >= 1e-3 {
@@ -188,7 +185,7 @@ fn portable(settings: &Settings, text: String) -> String {
     text.replace(&format!("{}/", target.display()), "target/")
 }
 
-fn verdict_txt(settings: &Settings, verdict: Verdict) -> Result<Vec<u8>, BoxError> {
+fn verdict_txt(settings: &Settings, verdict: Verdict) -> anyhow::Result<Vec<u8>> {
     Ok(portable(settings, verdict.to_string()).into_bytes())
 }
 
@@ -198,12 +195,12 @@ fn verdict_txt(settings: &Settings, verdict: Verdict) -> Result<Vec<u8>, BoxErro
 ///
 /// # Errors
 /// If an anchor or the number is missing.
-pub(crate) fn number_after(text: &str, anchors: &[&str]) -> Result<f64, BoxError> {
+pub(crate) fn number_after(text: &str, anchors: &[&str]) -> anyhow::Result<f64> {
     let mut rest = text;
     for a in anchors {
         let at = rest
             .find(a)
-            .ok_or_else(|| format!("{a:?} (of {anchors:?}) not found in {text:?}"))?;
+            .with_context(|| format!("{a:?} (of {anchors:?}) not found in {text:?}"))?;
         rest = &rest[at + a.len()..];
     }
     let rest = rest.trim_start();
@@ -227,28 +224,28 @@ pub(crate) fn number_after(text: &str, anchors: &[&str]) -> Result<f64, BoxError
     }
     rest[..end]
         .parse()
-        .map_err(|_| format!("no number after {anchors:?} in {text:?}").into())
+        .map_err(|_| anyhow!("no number after {anchors:?} in {text:?}"))
 }
 
 /// The first counterexample of `finding`.
-pub(crate) fn first_failure(finding: &Finding) -> Result<&str, BoxError> {
+pub(crate) fn first_failure(finding: &Finding) -> anyhow::Result<&str> {
     finding
         .example
         .as_deref()
-        .ok_or_else(|| format!("`{}` has no counterexample", finding.name).into())
+        .with_context(|| format!("`{}` has no counterexample", finding.name))
 }
 
 /// The worst counterexample of `finding` (a quantitative claim's largest error).
-pub(crate) fn worst_failure(finding: &Finding) -> Result<&str, BoxError> {
+pub(crate) fn worst_failure(finding: &Finding) -> anyhow::Result<&str> {
     finding
         .worst_example
         .as_deref()
-        .ok_or_else(|| format!("`{}` has no worst counterexample", finding.name).into())
+        .with_context(|| format!("`{}` has no worst counterexample", finding.name))
 }
 
 /// The disc with `r = u1`: the derivation read off the Jacobian and round-trip lines, and
 /// where the chi-squared line puts the worst cell.
-fn disc_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn disc_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let verdict = disc_verdict();
     let jacobian = verdict.finding("jacobian");
     let at = first_failure(jacobian)?;
@@ -300,7 +297,7 @@ fn disc_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxE
 }
 
 /// The cosine pdf without `1/pi`: the pdf's integral and pdf x area element, both pi.
-fn cosine_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn cosine_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     use std::f64::consts::PI;
     let verdict = cosine_verdict();
     let integral = number_after(
@@ -333,7 +330,7 @@ fn cosine_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, Bo
 
 /// The seed's Schlick: of the claims an approximation keeps, it breaks `tir` and
 /// `reciprocity`, as their counterexamples show.
-fn schlick_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn schlick_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let verdict = check::fresnel::reflectance(&schlick_seed, &Options::default());
     // The five claims the chapter names, and the two of them it says the seed breaks.
     let named = ["range", "normal", "grazing", "tir", "reciprocity"];
@@ -399,7 +396,7 @@ fn schlick_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, B
 }
 
 /// The far root: about a quarter of `nearest_root`'s cases fail.
-fn sphere_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn sphere_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let f = check::sphere::planted::always_far_root;
     let verdict = check::sphere::intersection(&f, &Options::default());
     let nearest = verdict.finding("nearest_root");
@@ -454,13 +451,13 @@ fn stable_far_root(
 }
 
 /// Refraction without the square root: how far `|w_t|` is off, and `tir_iff` passing.
-fn refract_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn refract_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let f = check::reflect::planted::refract_without_sqrt;
     let verdict = check::reflect::refraction(&f, &Options::default());
     let worst = verdict
         .finding("unit_length")
         .worst
-        .ok_or("unit_length measured no error")?
+        .context("unit_length measured no error")?
         .0;
     r.number("unit_length.worst_eps", worst, "x1");
     r.number("unit_length.worst_abs", worst * f64::EPSILON, ".2");
@@ -475,7 +472,7 @@ fn refract_verdict_txt(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, B
 
 /// The marked region of `disc_polar` in the hand-out: `src/sampling/disc.rs` through the
 /// stub writer.
-fn stub_txt(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn stub_txt(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let root = &settings.root;
     let summary = std::fs::read_to_string(root.join("chapters/SUMMARY.md"))?;
     let file = "src/sampling/disc.rs";
@@ -500,7 +497,7 @@ fn stub_txt(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
 /// The report card of a student who wrote four exercises right, made a seed's mistake in
 /// five, and has not started the others: each mistake judged by its exercise's checkers,
 /// each exercise not started by a stub's panic, as the hand-out would have them.
-fn card_txt(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn card_txt(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let markers = edition::markers_under(&settings.root)?;
     let o = Options::default();
     let card = card::run_with(&markers, |m| {
@@ -542,7 +539,7 @@ fn card_txt(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
 ///
 /// The ratios it prints are recorded from the same counts, drawn again here (with the same
 /// samples: the seed is fixed), and must be the ones printed.
-fn disc_rows_txt(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn disc_rows_txt(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let text = tests_mine::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
     let options = warp::WarpOptions::from(warp_options());
     let disc = SquareWarp::new(
@@ -554,7 +551,7 @@ fn disc_rows_txt(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let (_, observed, expected) = warp::chi_squared(&disc, &options)?;
     let cols = options.resolution;
     let rows = expected.len() / cols;
-    let mut ratio = |row: usize| -> Result<f64, BoxError> {
+    let mut ratio = |row: usize| -> anyhow::Result<f64> {
         let o: u64 = observed[row * cols..(row + 1) * cols].iter().sum();
         let e: f64 = expected[row * cols..(row + 1) * cols].iter().sum();
         let x = o as f64 / e;
@@ -563,10 +560,7 @@ fn disc_rows_txt(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
             l.starts_with(&format!("row {row}: ")) && l.ends_with(&format!("ratio {shown}"))
         });
         if !printed {
-            return Err(format!(
-                "row {row}: ratio {shown} is not what the example printed:\n{text}"
-            )
-            .into());
+            bail!("row {row}: ratio {shown} is not what the example printed:\n{text}");
         }
         Ok(x)
     };

@@ -34,8 +34,9 @@ mod path;
 mod solid_angle;
 mod thinfilm;
 
+use anyhow::anyhow;
+
 use super::Output;
-use crate::plot::BoxError;
 
 /// The outputs: one diagram each, in book order.
 pub fn outputs() -> Vec<Output> {
@@ -79,11 +80,11 @@ pub fn outputs() -> Vec<Output> {
 }
 
 /// An error unless `ok`: a diagram that would disagree with the library is not drawn.
-fn ensure(ok: bool, what: &str) -> Result<(), BoxError> {
+fn ensure(ok: bool, what: &str) -> anyhow::Result<()> {
     if ok {
         Ok(())
     } else {
-        Err(format!("diagram disagrees with the library: {what}").into())
+        Err(anyhow!("diagram disagrees with the library: {what}"))
     }
 }
 

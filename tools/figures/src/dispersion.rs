@@ -3,8 +3,10 @@
 use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write as _;
 
+use anyhow::{Context, bail};
+
 use super::{Output, Record, Settings};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::optics::dispersion::{
     self as disp, FUSED_SILICA, LINE_C_NM, LINE_D_NM, LINE_F_NM, N_BK7, PrismPath, RENDER_RANGE_NM,
     WATER,
@@ -69,7 +71,7 @@ fn wavelengths(step: usize) -> Vec<f64> {
     (lo..=hi).step_by(step).map(|l| l as f64).collect()
 }
 
-fn index_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn index_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let ls = wavelengths(5);
     let series = MATERIALS
         .iter()
@@ -112,7 +114,7 @@ fn index_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::ranged_chart(&panels)
 }
 
-fn catalogue_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn catalogue_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let bk7 = disp::material(N_BK7);
     let fs = disp::material(FUSED_SILICA);
     let water = disp::material(WATER);
@@ -246,14 +248,14 @@ fn catalogue_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
 
 const APEX_DEG: f64 = 60.0;
 
-fn prism_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn prism_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let apex = APEX_DEG.to_radians();
     let ls = wavelengths(5);
     let mut by_wavelength = Vec::new();
     for name in [N_BK7, FUSED_SILICA] {
         let g = disp::material(name);
         let (i0, _) = disp::minimum_deviation_numeric(g.index(LINE_D_NM), apex)
-            .ok_or("no ray through the prism")?;
+            .context("no ray through the prism")?;
         by_wavelength.push(Series::line(
             format!("{name}, incidence {:.2}°", i0.to_degrees()),
             ls.iter()
@@ -308,7 +310,7 @@ fn prism_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn prism_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn prism_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let apex = APEX_DEG.to_radians();
     let mut md = String::new();
     writeln!(
@@ -324,10 +326,10 @@ fn prism_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
         let (mut at_f, mut at_c) = (f64::NAN, f64::NAN);
         for (line, l) in [("F", LINE_F_NM), ("d", LINE_D_NM), ("C", LINE_C_NM)] {
             let n = g.index(l);
-            let (i, dn) = disp::minimum_deviation_numeric(n, apex).ok_or("no ray through")?;
-            let de = disp::minimum_deviation_analytic(n, apex).ok_or("no ray through")?;
+            let (i, dn) = disp::minimum_deviation_numeric(n, apex).context("no ray through")?;
+            let de = disp::minimum_deviation_analytic(n, apex).context("no ray through")?;
             let back = disp::index_from_minimum_deviation(apex, de);
-            let lim = disp::prism_limiting_incidence(n, apex).ok_or("no ray through")?;
+            let lim = disp::prism_limiting_incidence(n, apex).context("no ray through")?;
             // Inside, the ray misses the exit face once θ2 <= A − 90°, i.e. below
             // sin θ1 = n sin(A − 90°) (a wide enough prism only).
             let s_miss = n * (apex - FRAC_PI_2).sin();
@@ -379,7 +381,7 @@ fn prism_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
 /// does what the caption says: through above `limiting`, totally reflected at the exit
 /// face between `miss` and `limiting`, missing the exit face below `miss` (rays within
 /// 0.001° of a threshold are left out: rounding decides them).
-fn check_caption(n: f64, apex: f64, limiting: f64, miss: Option<f64>) -> Result<(), BoxError> {
+fn check_caption(n: f64, apex: f64, limiting: f64, miss: Option<f64>) -> anyhow::Result<()> {
     let lowest = miss.unwrap_or(-FRAC_PI_2);
     let near = |a: f64, b: f64| (a - b).abs() < 1e-3f64.to_radians();
     for k in -9000..=9000 {
@@ -398,20 +400,19 @@ fn check_caption(n: f64, apex: f64, limiting: f64, miss: Option<f64>) -> Result<
             PrismPath::TotalInternalReflection { .. } => false,
         };
         if !ok {
-            return Err(format!(
+            bail!(
                 "n = {n}, apex {:.1}°: at incidence {:.2}° the ray is {path:?}, not what the caption of dispersion_prism.md says (limiting incidence {:.2}°, misses below {:?})",
                 apex.to_degrees(),
                 i.to_degrees(),
                 limiting.to_degrees(),
                 miss.map(f64::to_degrees)
-            )
-            .into());
+            );
         }
     }
     Ok(())
 }
 
-fn rainbow_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn rainbow_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let water = disp::material(WATER);
     let ls = wavelengths(5);
     let bow = vec![Series::line(
@@ -460,7 +461,7 @@ fn rainbow_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     ])
 }
 
-fn rainbow_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn rainbow_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let water = disp::material(WATER);
     let mut md = String::new();
     writeln!(
@@ -492,7 +493,7 @@ fn rainbow_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
             .iter()
             .find(|&&(w, _)| w == l)
             .map(|&(_, d)| d)
-            .ok_or_else(|| format!("no row for {l} nm"))
+            .with_context(|| format!("no row for {l} nm"))
     };
     r.number("band_400_700", at(700.0)? - at(400.0)?, ".2");
     let red = at(650.0)?;

@@ -6,7 +6,7 @@ use glam::DVec3;
 use plotters::prelude::*;
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Legend, Panel, Series};
+use crate::plot::{self, Legend, Panel, Series};
 use raylemma::spectral::display::*;
 
 /// The outputs of this chapter.
@@ -40,7 +40,7 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn curves_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn curves_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     // Linear inputs spaced evenly in log from 1e-4 to 1, so that the dark end shows.
     let xs: Vec<f64> = (0..=120)
         .map(|i| 10f64.powf(-4.0 + 4.0 * f64::from(i) / 120.0))
@@ -131,7 +131,7 @@ const SHADOWS: std::ops::Range<u8> = 0..32;
 /// The middle half of the codes: "the mid-tones".
 const MID_TONES: std::ops::Range<u8> = 64..192;
 
-fn codes_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn codes_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -258,7 +258,7 @@ const METHODS: [Method; 3] = [
     ("ours: toward equal-Y grey", fit_to_gamut),
 ];
 
-fn ramps_png(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn ramps_png(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     plot::register_embedded_font();
     let (label_w, cell_h, cols) = (250u32, 34u32, 600u32);
     let rows = (RAMP_COLOURS.len() * METHODS.len()) as u32;
@@ -307,7 +307,7 @@ fn ramps_png(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::encode_png(w, h, buffer)
 }
 
-fn hue_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn hue_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -398,7 +398,7 @@ fn hue_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = 1 << 16;
     let pixels: Vec<DVec3> = (0..n)
         .map(|i| {

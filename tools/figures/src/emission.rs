@@ -2,11 +2,12 @@
 
 use std::fmt::Write as _;
 
+use anyhow::{Context, anyhow};
 use glam::DVec3;
 use rand::RngExt;
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::rng;
 use raylemma::spectral::cie;
 use raylemma::spectral::emission::*;
@@ -49,11 +50,11 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn sampler(t: &Table) -> Result<EmissionSampler, BoxError> {
-    EmissionSampler::new(t).map_err(|e| e.to_string().into())
+fn sampler(t: &Table) -> anyhow::Result<EmissionSampler> {
+    Ok(EmissionSampler::new(t)?)
 }
 
-fn histograms_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn histograms_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
     let mut panels = Vec::new();
     for (k, lamp) in lamps().iter().enumerate() {
@@ -91,7 +92,7 @@ fn histograms_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxErr
     plot::chart(&panels, 2)
 }
 
-fn swatches_png(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn swatches_png(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     use plotters::prelude::*;
     let lamps = lamps();
     let (side, gap, label) = (200i32, 24i32, 70i32);
@@ -105,7 +106,7 @@ fn swatches_png(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
                 [(x0, gap), (x0 + side, gap + side)],
                 RGBColor(r, g, b).filled(),
             ))?;
-            let xy = cie::chromaticity(xyz_unit(&lamp.spectrum)).ok_or("black lamp")?;
+            let xy = cie::chromaticity(xyz_unit(&lamp.spectrum)).context("black lamp")?;
             root.draw(&Text::new(
                 lamp.name.to_string(),
                 (x0, gap + side + 12),
@@ -177,7 +178,7 @@ fn cct_duv(xy: glam::DVec2, locus: &[(f64, glam::DVec2)]) -> (f64, f64) {
     (best.1, best.2 * best.0)
 }
 
-fn colour_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn colour_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let locus = planckian_locus();
     let mut md = String::new();
     writeln!(
@@ -187,7 +188,7 @@ fn colour_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     writeln!(md, "|---|---:|---:|---:|---:|---|---|")?;
     for lamp in lamps() {
         let xyz = xyz_unit(&lamp.spectrum);
-        let xy = cie::chromaticity(xyz).ok_or("black lamp")?;
+        let xy = cie::chromaticity(xyz).context("black lamp")?;
         let (cct, duv) = cct_duv(xy, &locus);
         let rgb = cie::xyz_to_linear_srgb(xyz);
         let [red, green, blue] = swatch_rgb8(&lamp.spectrum);
@@ -254,15 +255,15 @@ struct Gain {
 
 /// The gains, measured once per run (with fixed seeds): the gain table and the speed table's
 /// efficiencies read the same measurement.
-fn gains(settings: &Settings) -> Result<&'static [Gain], BoxError> {
+fn gains(settings: &Settings) -> anyhow::Result<&'static [Gain]> {
     static GAINS: std::sync::OnceLock<Result<Vec<Gain>, String>> = std::sync::OnceLock::new();
     GAINS
-        .get_or_init(|| measure_gains(settings).map_err(|e| e.to_string()))
+        .get_or_init(|| measure_gains(settings).map_err(|e| crate::job::message(&e)))
         .as_deref()
-        .map_err(|e| e.clone().into())
+        .map_err(|e| anyhow!("{e}"))
 }
 
-fn measure_gains(settings: &Settings) -> Result<Vec<Gain>, BoxError> {
+fn measure_gains(settings: &Settings) -> anyhow::Result<Vec<Gain>> {
     let n = gain_samples(settings);
     lamps()
         .iter()
@@ -302,7 +303,7 @@ fn lamps_where(rows: &[Gain], pred: impl Fn(&Gain) -> bool) -> Vec<String> {
         .collect()
 }
 
-fn gain_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn gain_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = gain_samples(settings);
     let rows = gains(settings)?;
     let mut md = String::new();
@@ -385,7 +386,7 @@ fn gain_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     let lamp = |key: &str| {
         rows.iter()
             .find(|g| g.key == key)
-            .ok_or_else(|| format!("no lamp {key}"))
+            .with_context(|| format!("no lamp {key}"))
     };
     let (inc, hps) = (lamp("incandescent")?, lamp("high_pressure_sodium")?);
     r.claim(
@@ -503,7 +504,7 @@ fn gain_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn drawing_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn drawing_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -516,7 +517,7 @@ fn drawing_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     for lamp in lamps() {
         let t = &lamp.spectrum;
         let key = lamp_key(&lamp);
-        let xy_table = cie::chromaticity(xyz_unit(t)).ok_or("black lamp")?;
+        let xy_table = cie::chromaticity(xyz_unit(t)).context("black lamp")?;
         let nm = image_wavelengths();
         let max = nm.iter().map(|&l| t.eval(l)).fold(0.0, f64::max);
         let total: f64 = nm.iter().map(|&l| t.eval(l)).sum();
@@ -532,7 +533,7 @@ fn drawing_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
                 .filter(|&&l| t.eval(l) > 0.0 && drawn.eval(l) == 0.0)
                 .map(|&l| t.eval(l))
                 .collect();
-            let xy = cie::chromaticity(xyz_unit(&drawn)).ok_or("black drawing")?;
+            let xy = cie::chromaticity(xyz_unit(&drawn)).context("black drawing")?;
             let shift = (xy - xy_table).length();
             if height == IMAGE_HEIGHT {
                 worst_shift_256 = worst_shift_256.max(shift);
@@ -613,7 +614,7 @@ fn drawing_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let reps = if settings.quick { 5 } else { 101 };
     let us = raylemma::workload::uniform_inputs(4096);
     let gains = gains(settings)?;
@@ -642,7 +643,7 @@ fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
         let gain = gains
             .iter()
             .find(|g| g.key == key)
-            .ok_or("a lamp without gains")?;
+            .context("a lamp without gains")?;
         for (proposal, g) in [("colour", gain.colour), ("balanced", gain.balanced)] {
             for (axis, g) in [("x", g.x), ("y", g.y), ("z", g.z)] {
                 r.number(

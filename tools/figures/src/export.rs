@@ -4,7 +4,6 @@
 //! ladder, read from its scene files' headers.
 
 use super::{Output, Record, Settings};
-use crate::plot::BoxError;
 use raylemma::render::export::{SceneFile, json, mitsuba};
 
 /// The outputs of this module.
@@ -30,7 +29,7 @@ pub fn outputs() -> Vec<Output> {
 
 /// The rungs of [`raylemma::check::render::ladder::LADDER`], each with what its file's header says it tests, where it is
 /// derived and what a failure there usually means.
-fn ladder_table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn ladder_table(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     use raylemma::check::render::ladder::{LADDER, header};
     let mut md = String::from(
         "| rung | scene | tests | derived in | a failure here usually means |\n|---:|---|---|---|---|\n",
@@ -72,17 +71,17 @@ fn ladder_table(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError
 }
 
 /// The example scene, named as the command line names it from the project root.
-fn example(settings: &Settings) -> Result<SceneFile, BoxError> {
+fn example(settings: &Settings) -> anyhow::Result<SceneFile> {
     let path = settings.root.join("scenes").join("furnace-grey.toml");
     let mut file = SceneFile::load(&path)?;
     file.file = "scenes/furnace-grey.toml".into();
     Ok(file)
 }
 
-fn json_example(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn json_example(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     Ok(json::to_json(&example(settings)?).into_bytes())
 }
 
-fn xml_example(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn xml_example(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     Ok(mitsuba::to_xml(&example(settings)?)?.into_bytes())
 }

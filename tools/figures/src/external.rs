@@ -9,7 +9,6 @@ use std::process::{Command, Stdio};
 
 use super::{Output, Record, Settings};
 use crate::coursework::{first_failure, number_after, worst_failure};
-use crate::plot::BoxError;
 use raylemma::check::external::{self, Density, Function, Program, Sampler, Target};
 use raylemma::check::{Options, Verdict};
 
@@ -59,7 +58,7 @@ fn block(md: &mut String, command: &str, verdict: &str) -> std::fmt::Result {
     writeln!(md, "```text\n$ {command}\n{verdict}```\n")
 }
 
-fn sampler_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn sampler_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }
@@ -96,7 +95,7 @@ fn sampler_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> 
 /// The uniform hemisphere claimed as cosine-weighted: pdf x area element is `2z` (the
 /// claimed `z / pi` times `2 pi`) at the Jacobian's first failure and, almost 0, at its worst
 /// one on the rim; and how many times their share the chi-squared line's worst cell gets.
-fn record_uniform(verdict: &Verdict, r: &mut Record) -> Result<(), BoxError> {
+fn record_uniform(verdict: &Verdict, r: &mut Record) -> anyhow::Result<()> {
     let jacobian = verdict.finding("jacobian");
     let z_of = ["T(u) = DVec3(", ", ", ", "];
     let first = first_failure(jacobian)?;
@@ -154,7 +153,7 @@ fn record_uniform(verdict: &Verdict, r: &mut Record) -> Result<(), BoxError> {
     Ok(())
 }
 
-fn fresnel_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn fresnel_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     if !python() {
         return Ok(NO_PYTHON.as_bytes().to_vec());
     }

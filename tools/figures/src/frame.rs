@@ -8,7 +8,7 @@ use std::hint::black_box;
 use glam::{DVec3, Vec3};
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::rng;
 use raylemma::sampling::frame::{Construction, Frame, cross_product_frame, duff, frisvad};
 use raylemma::single::sampling::frame as frame32;
@@ -115,7 +115,7 @@ fn pole_sweep(settings: &Settings) -> (Vec<PolePoint>, Vec<PolePoint>) {
     (f32s, f64s)
 }
 
-fn error_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn error_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (sweep32, sweep64) = pole_sweep(settings);
     fn line(label: &str, sweep: &[PolePoint], pick: fn(&PolePoint) -> f64) -> Series {
         Series::line(label, sweep.iter().map(|p| (p.dz, pick(p))).collect())
@@ -147,7 +147,7 @@ fn error_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 2)
 }
 
-fn errors_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn errors_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 10_000 } else { 100_000 };
     let mut g = rng::seeded(1);
     let random: Vec<DVec3> = (0..n).map(|_| sphere_uniform(&mut g)).collect();
@@ -251,7 +251,7 @@ fn errors_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
 /// as `frisvad_fails_near_the_south_pole` asserts) until its special case takes over below
 /// `1 + z = 1e-7`, where in f64 the fixed frame is off by `sqrt(2 (1 + z))`
 /// (`frisvad_special_case_is_off_by_the_distance_to_the_pole`, within 10 %).
-fn rings_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn rings_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -349,7 +349,7 @@ fn time_frames<V: Copy>(normals: &[V], reps: usize, f: impl Fn(V) -> f64) -> f64
     })
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let reps = if settings.quick { 5 } else { 201 };
     let n64 = timing_normals(4096);
     let n32: Vec<Vec3> = n64.iter().map(|n| n.as_vec3()).collect();

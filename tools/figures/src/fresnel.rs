@@ -3,8 +3,10 @@
 use std::fmt::Write as _;
 use std::hint::black_box;
 
+use anyhow::Context;
+
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::check::Options;
 use raylemma::check::fresnel::{self as check, planted};
 use raylemma::optics::fresnel::{
@@ -114,15 +116,15 @@ fn reflectance_panels(inside: bool) -> Vec<Panel> {
         .collect()
 }
 
-fn outside_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn outside_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     plot::chart(&reflectance_panels(false), 2)
 }
 
-fn inside_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn inside_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     plot::chart(&reflectance_panels(true), 2)
 }
 
-fn error_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn error_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let panels: Vec<Panel> = FIGURE_IORS
         .iter()
         .map(|&n| {
@@ -185,7 +187,7 @@ fn ior_name(label: &str) -> &'static str {
     }
 }
 
-fn errors_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn errors_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -274,7 +276,7 @@ fn errors_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn verdicts_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn verdicts_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     type Reflectance = fn(f64, f64, f64) -> f64;
     let fit: Reflectance = |c, n1, n2| FresnelFit::new(n1, n2).eval(c);
     let routines: [(&str, Reflectance); 7] = [
@@ -301,7 +303,7 @@ fn verdicts_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
         verdicts
             .iter()
             .position(|(name, _)| name.starts_with(prefix))
-            .ok_or_else(|| format!("no routine {prefix} in the table"))
+            .with_context(|| format!("no routine {prefix} in the table"))
     };
     let (schlick_row, fit_row) = (row_of("`schlick`")?, row_of("`FresnelFit`")?);
     let fails_only = |row: usize, expected: &[&str]| {
@@ -335,7 +337,7 @@ fn verdicts_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
         .findings
         .iter()
         .find(|f| f.name == "normal")
-        .ok_or("the checker has no claim `normal`")?;
+        .context("the checker has no claim `normal`")?;
     r.text(
         "fit_normal_failures",
         format!("{} of {}", normal.failures, normal.cases),
@@ -529,7 +531,7 @@ fn fit_construction_ns(settings: &Settings) -> f64 {
     })
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let rows = timed(settings);
     let cosines = timing_cosines(4096);
     let tir_share = cosines
@@ -613,7 +615,7 @@ fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
     Ok(md.into_bytes())
 }
 
-fn speed_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let rows = timed(settings);
     let panel = |title: &str, pick: fn(&Timed) -> (f64, f64)| {
         Panel::new(

@@ -7,6 +7,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use anyhow::{Context, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use raylemma::output::{self, FileSet};
@@ -14,7 +15,6 @@ use raylemma::render::format::fnv1a;
 pub use raylemma_values::Record;
 use raylemma_values::{Entry, Values, fingerprint};
 
-use crate::plot::BoxError;
 use crate::{
     accuracy, colour, compare, coursework, diagram, dispersion, display, emission, export,
     external, frame, fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow,
@@ -40,7 +40,25 @@ pub struct Output {
     /// What it shows, for progress and error messages.
     pub what: &'static str,
     /// Produces the file's bytes, recording the values the book quotes from it.
-    pub make: fn(&Settings, &mut Record) -> Result<Vec<u8>, BoxError>,
+    pub make: fn(&Settings, &mut Record) -> anyhow::Result<Vec<u8>>,
+}
+
+/// What the job prints of an error: its message and then each cause's, `outer: inner`, as
+/// anyhow's `{:#}` prints them, leaving out a cause whose message is already in the text
+/// (the library's errors that name their source in their own message, such as
+/// `ImageError::File`, say it once).
+pub fn message(e: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in e.chain() {
+        let m = cause.to_string();
+        if text.is_empty() {
+            text = m;
+        } else if !text.contains(&m) {
+            text.push_str(": ");
+            text.push_str(&m);
+        }
+    }
+    text
 }
 
 /// Every output of every chapter, in book order.
@@ -92,7 +110,7 @@ const KEPT_WHILE_CODE_UNCHANGED: [&str; 3] = [
 ///
 /// # Errors
 /// If a file cannot be read.
-fn code_version(root: &Path) -> Result<String, BoxError> {
+fn code_version(root: &Path) -> anyhow::Result<String> {
     let mut files = Vec::new();
     let mut stack = vec![
         root.join("src"),
@@ -100,7 +118,7 @@ fn code_version(root: &Path) -> Result<String, BoxError> {
         root.join("tools/figures/src"),
     ];
     while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).map_err(|e| format!("{}: {e}", d.display()))? {
+        for e in std::fs::read_dir(&d).with_context(|| d.display().to_string())? {
             let p = e?.path();
             if p.is_dir() {
                 stack.push(p);
@@ -119,7 +137,7 @@ fn code_version(root: &Path) -> Result<String, BoxError> {
                 .to_string_lossy()
                 .as_bytes(),
         );
-        all.extend(std::fs::read(f).map_err(|e| format!("{}: {e}", f.display()))?);
+        all.extend(std::fs::read(f).with_context(|| f.display().to_string())?);
     }
     Ok(format!("{:016x}", fnv1a(&all)))
 }
@@ -145,19 +163,18 @@ pub fn write_all(
     dir: &Path,
     settings: &Settings,
     only: Option<&str>,
-) -> Result<Vec<PathBuf>, BoxError> {
+) -> anyhow::Result<Vec<PathBuf>> {
     let outputs: Vec<Output> = all()
         .into_iter()
         .filter(|o| only.is_none_or(|s| o.file.contains(s)))
         .collect();
     if outputs.is_empty() {
         let names: Vec<_> = all().iter().map(|o| o.file).collect();
-        return Err(format!(
+        bail!(
             "no figure matches {:?}; figures are: {}",
             only.unwrap_or(""),
             names.join(", ")
-        )
-        .into());
+        );
     }
     write_outputs(dir, &outputs, settings)
 }
@@ -180,7 +197,7 @@ pub fn stage_values(
     mut values: Values,
     made: Vec<(&str, Entry)>,
     set: &mut FileSet,
-) -> Result<(), BoxError> {
+) -> anyhow::Result<()> {
     for (file, entry) in made {
         let key = stem(file).to_string();
         if entry.values.is_empty() && entry.claims.is_empty() {
@@ -193,11 +210,10 @@ pub fn stage_values(
             && old.file != file
             && dir.join(&old.file).exists()
         {
-            return Err(format!(
+            bail!(
                 "{file} and {} both record values under the name {key}: rename one",
                 old.file
-            )
-            .into());
+            );
         }
         values.insert(key, entry);
     }
@@ -253,12 +269,11 @@ pub fn write_outputs(
     dir: &Path,
     outputs: &[Output],
     settings: &Settings,
-) -> Result<Vec<PathBuf>, BoxError> {
+) -> anyhow::Result<Vec<PathBuf>> {
     output::create_dir_all(dir)?;
     let bar = ProgressBar::new(outputs.len() as u64);
     bar.set_style(
-        ProgressStyle::with_template("{elapsed:>4} [{bar:30}] {pos}/{len} {msg}")
-            .map_err(|e| e.to_string())?
+        ProgressStyle::with_template("{elapsed:>4} [{bar:30}] {pos}/{len} {msg}")?
             .progress_chars("=> "),
     );
     let say = |line: String| {
@@ -269,7 +284,7 @@ pub fn write_outputs(
         }
     };
     let version = code_version(&settings.root)?;
-    let before = raylemma_values::read(dir)?;
+    let before = raylemma_values::read(dir).map_err(anyhow::Error::msg)?;
     let mut made = Vec::new();
     let mut set = FileSet::new();
     for o in outputs {
@@ -306,7 +321,7 @@ pub fn write_outputs(
         let start = Instant::now();
         let mut record = Record::new(o.file);
         let mut bytes = (o.make)(settings, &mut record)
-            .map_err(|e| format!("figure {} ({}) failed: {e}", o.file, o.what))?;
+            .with_context(|| format!("figure {} ({}) failed", o.file, o.what))?;
         if kept {
             bytes.extend_from_slice(b"\n");
             bytes.extend_from_slice(marker.as_bytes());
@@ -315,9 +330,10 @@ pub fn write_outputs(
             mark_quick(o.file, &mut bytes);
         }
         let entry = record.finish(&bytes, settings.quick).map_err(|e| {
-            format!(
+            anyhow!(
                 "figure {} ({}) recorded its values wrongly: {e}",
-                o.file, o.what
+                o.file,
+                o.what
             )
         })?;
         made.push((o.file, entry));
@@ -407,6 +423,14 @@ mod tests {
     }
 
     #[test]
+    fn a_cause_already_in_the_message_is_not_repeated() {
+        let e = anyhow::anyhow!("a.exr: no such file").context("a.exr: no such file");
+        assert_eq!(message(&e), "a.exr: no such file");
+        let e = e.context("figure a.svg (a) failed");
+        assert_eq!(message(&e), "figure a.svg (a) failed: a.exr: no such file");
+    }
+
+    #[test]
     fn unknown_figure_name_is_reported_with_the_list() {
         let dir =
             std::env::temp_dir().join(format!("raylemma-figures-only-{}", std::process::id()));
@@ -420,12 +444,12 @@ mod tests {
         assert!(!dir.exists(), "nothing is written for an unknown name");
     }
 
-    fn good(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+    fn good(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
         Ok(b"new".to_vec())
     }
 
-    fn bad(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
-        Err("planted failure".into())
+    fn bad(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
+        bail!("planted failure")
     }
 
     #[test]
@@ -447,13 +471,8 @@ mod tests {
                 make: bad,
             },
         ];
-        let err = write_outputs(&dir, &outputs, &settings())
-            .unwrap_err()
-            .to_string();
-        assert!(
-            err.contains("b.md") && err.contains("planted failure"),
-            "{err}"
-        );
+        let err = message(&write_outputs(&dir, &outputs, &settings()).unwrap_err());
+        assert_eq!(err, "figure b.md (bad) failed: planted failure");
         assert_eq!(fs::read_to_string(dir.join("a.md")).unwrap(), "old");
         assert!(!dir.join("b.md").exists());
         // And when every output succeeds, all are written.

@@ -6,7 +6,7 @@ use std::hint::black_box;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::rng;
 use raylemma::stats::ttest::{self, Summary};
 use raylemma::transport::lambert::*;
@@ -50,7 +50,7 @@ struct Compared {
     cosine_efficiency: f64,
 }
 
-fn estimators_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn estimators_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let reps = if settings.quick { 5 } else { 51 };
     let mut md = String::new();
@@ -178,7 +178,7 @@ fn finite_or_infinity(r: &mut Record, name: &str, x: f64, format: &str) -> Strin
     }
 }
 
-fn furnace_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn furnace_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     const LEVEL: f64 = 0.01;
     let mut md = String::new();
@@ -384,7 +384,7 @@ fn sky_variance_points(settings: &Settings) -> &'static [SkyPoint] {
     })
 }
 
-fn sky_variance_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn sky_variance_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut series = vec![
         Series::line("uniform, formula", Vec::new()),
         Series::points("uniform, measured", Vec::new()),

@@ -17,7 +17,6 @@ use glam::{DVec2, DVec3};
 use rand::RngExt;
 
 use super::{Output, Record, Settings};
-use crate::plot::BoxError;
 use crate::timing::{machine, median_ns_per_item, quick_note};
 use raylemma::render::camera::Camera;
 use raylemma::render::integrator::offset_origin;
@@ -78,7 +77,7 @@ fn ray_set(tracer: &Tracer, camera: &Camera, paths: usize, depth: u32) -> Vec<Ti
     rays
 }
 
-fn limit_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn limit_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (side, spp, reps) = if settings.quick {
         (32, 4, 3)
     } else {

@@ -139,7 +139,7 @@ fn main() -> ExitCode {
                     ExitCode::FAILURE
                 }
                 Err(e) => {
-                    eprintln!("raylemma: error: {e}");
+                    eprintln!("raylemma: error: {}", job::message(&e));
                     ExitCode::from(2)
                 }
             };
@@ -162,7 +162,7 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("raylemma: error: {e}");
+            eprintln!("raylemma: error: {}", job::message(&e));
             ExitCode::FAILURE
         }
     }

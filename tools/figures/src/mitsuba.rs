@@ -18,7 +18,6 @@ use std::fmt::Write as _;
 use glam::{DMat3, DVec3};
 
 use super::{Output, Record, Settings};
-use crate::plot::BoxError;
 use raylemma::render;
 use raylemma::render::scene::Environment;
 use raylemma::spectral::cie;
@@ -77,7 +76,7 @@ fn mitsuba_rgb(s: &Spectrum) -> DVec3 {
     m * (sum * MITSUBA_Y_NORMALIZATION)
 }
 
-fn colour_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn colour_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let scenes = [
         "cornell",
         "lamps/amber-led",

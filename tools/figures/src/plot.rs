@@ -36,8 +36,6 @@ mod look;
 mod series;
 mod text;
 
-use std::error::Error;
-
 pub(crate) use axes::mesh;
 pub use axes::{builder, format_linear_tick, format_tick};
 pub use canvas::{draw_png, encode_png, svg};
@@ -45,6 +43,3 @@ pub use layout::{WIDTH, chart, ranged_chart};
 pub use look::PALETTE;
 pub use series::{Legend, Panel, Series, steps};
 pub use text::{FAMILY, LABEL_PX, TICK_PX, draw_title, font, register_embedded_font};
-
-/// A boxed error, for figure code.
-pub type BoxError = Box<dyn Error + Send + Sync>;

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use super::{Output, Record, Settings};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::check::reflect::{self as check, planted};
 use raylemma::check::{Options, Verdict};
 use raylemma::optics::reflect::{Refraction, reflect, refract};
@@ -53,7 +53,7 @@ fn verdict_table(md: &mut String, rows: &[(&str, Verdict)]) -> std::fmt::Result 
     Ok(())
 }
 
-fn checks_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn checks_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let cases = if settings.quick { 2_000 } else { check::CASES };
     let options = Options::default().cases(cases); // seeds: the checker's defaults
     let reflectors: [(&str, Reflector); 2] = [
@@ -104,7 +104,7 @@ pub fn refracted_degrees(degrees: f64, n1: f64, n2: f64) -> Option<f64> {
     Some(w_t.cross(n).length().atan2(-w_t.dot(n)).to_degrees())
 }
 
-fn snell_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn snell_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let pairs = [(1.0, 1.33), (1.0, 1.5), (1.0, 2.4)];
     let series = |inside: bool| -> Vec<Series> {
         pairs

@@ -10,9 +10,11 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use anyhow::{anyhow, bail};
+
 use super::timing::{machine_name, quick_note};
 use super::{Output, Record, Settings, job};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::check::render::ladder::{self, LADDER};
 use raylemma::check::render::references::CANONICAL;
 use raylemma::output::FileSet;
@@ -71,7 +73,7 @@ fn made_from_now(
     depth: Option<u32>,
     settings: &Settings,
     code: &(String, usize),
-) -> Result<(Scene, MadeFrom), BoxError> {
+) -> anyhow::Result<(Scene, MadeFrom)> {
     let path = scenes_dir(settings).join(file);
     let mut s = render::load(&path)?;
     s.settings.spp = reference_spp(&s, settings);
@@ -107,7 +109,7 @@ fn render_one(
     file: &'static str,
     scene: Scene,
     made_from: MadeFrom,
-) -> Result<Rendered, BoxError> {
+) -> anyhow::Result<Rendered> {
     eprintln!(
         "  {name}: {}x{}, {} spp",
         scene.camera.width, scene.camera.height, scene.settings.spp
@@ -135,7 +137,7 @@ fn render_one(
 }
 
 /// The committed reference `name`, read back.
-fn read_one(figures: &Path, name: &'static str, file: &'static str) -> Result<Rendered, BoxError> {
+fn read_one(figures: &Path, name: &'static str, file: &'static str) -> anyhow::Result<Rendered> {
     let [exr, _, json] = render::output_paths(&figures.join("reference"), name);
     Ok(Rendered {
         name,
@@ -152,7 +154,7 @@ fn read_one(figures: &Path, name: &'static str, file: &'static str) -> Result<Re
 pub fn stale_references(
     figures: &Path,
     settings: &Settings,
-) -> Result<Vec<(&'static str, Vec<String>)>, BoxError> {
+) -> anyhow::Result<Vec<(&'static str, Vec<String>)>> {
     let code = provenance::code_version(&settings.root)?;
     let mut stale = Vec::new();
     for (name, file, depth) in scenes() {
@@ -167,7 +169,7 @@ pub fn stale_references(
 
 /// The cornell scene at increasing sample counts: `(spp, seconds, RMSE)` against the
 /// reference (a different seed, so that the errors are independent).
-fn speed_series(reference: &Image, settings: &Settings) -> Result<Vec<(u32, f64, f64)>, BoxError> {
+fn speed_series(reference: &Image, settings: &Settings) -> anyhow::Result<Vec<(u32, f64, f64)>> {
     let mut s = render::load(&scenes_dir(settings).join("cornell.toml"))?;
     s.settings.seed = 1_000_003;
     let top = if settings.quick { 8 } else { 128 };
@@ -263,13 +265,13 @@ pub fn outputs() -> Vec<Output> {
     }]
 }
 
-fn error_time_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn error_time_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let path = settings.root.join("figures").join("render_speed.md");
     let md = std::fs::read_to_string(&path)
-        .map_err(|e| format!("{}: {e} (`references` writes it)", path.display()))?;
+        .map_err(|e| anyhow!("{}: {e} (`references` writes it)", path.display()))?;
     let series = parse_speed_md(&md);
     if series.is_empty() {
-        return Err(format!("{}: no rows of spp, seconds and RMSE", path.display()).into());
+        bail!("{}: no rows of spp, seconds and RMSE", path.display());
     }
     speed_svg(&series)
 }
@@ -294,7 +296,7 @@ fn parse_speed_md(md: &str) -> Vec<(u32, f64, f64)> {
         .collect()
 }
 
-fn speed_svg(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
+fn speed_svg(series: &[(u32, f64, f64)]) -> anyhow::Result<Vec<u8>> {
     let measured = Series::measured(
         "raylemma, cornell 256x256",
         series.iter().map(|&(_, s, e)| (s, e)).collect(),
@@ -322,7 +324,7 @@ fn speed_svg(series: &[(u32, f64, f64)]) -> Result<Vec<u8>, BoxError> {
 
 /// The standard error of each pixel's luminance, as a grey image scaled so that the
 /// image's 99th percentile is white.
-fn stderr_png(image: &Image) -> Result<Vec<u8>, BoxError> {
+fn stderr_png(image: &Image) -> anyhow::Result<Vec<u8>> {
     let se: Vec<f64> = image
         .var
         .iter()
@@ -350,7 +352,7 @@ pub fn write_references(
     figures: &Path,
     settings: &Settings,
     force: bool,
-) -> Result<Vec<PathBuf>, BoxError> {
+) -> anyhow::Result<Vec<PathBuf>> {
     let code = provenance::code_version(&settings.root)?;
     eprintln!(
         "  the renderer's code version: {} ({} files of src/ and data/, and Cargo.lock)",
@@ -391,7 +393,7 @@ pub fn write_references(
     for r in rendered.iter().filter(|r| fresh.contains(&r.name)) {
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
-    let values = raylemma_values::read(figures)?;
+    let values = raylemma_values::read(figures).map_err(anyhow::Error::msg)?;
     let mut record = Record::new("render_speed.md");
     let speed = speed_md(&series, &rendered[0], settings, &mut record).into_bytes();
     let flat: [(&str, Vec<u8>); 3] = [
@@ -405,7 +407,9 @@ pub fn write_references(
     for (name, bytes) in &flat {
         files.write(&figures.join(name), bytes)?;
     }
-    let entry = record.finish(&flat[2].1, settings.quick)?;
+    let entry = record
+        .finish(&flat[2].1, settings.quick)
+        .map_err(anyhow::Error::msg)?;
     job::stage_values(
         figures,
         values,

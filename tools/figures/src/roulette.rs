@@ -2,8 +2,10 @@
 
 use std::fmt::Write as _;
 
+use anyhow::Context;
+
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::rng;
 use raylemma::stats::ttest::{self, Summary};
 use raylemma::transport::lambert::{furnace_tail_index, uniform_weight_moment};
@@ -35,7 +37,7 @@ const FURNACE: Furnace = Furnace {
     albedo: 0.5,
 };
 
-fn single_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn single_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(
@@ -141,7 +143,7 @@ fn reliable(q: f64) -> bool {
     fixed_survival_tail_index(&FURNACE, q) > 4.0
 }
 
-fn efficiency_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn efficiency_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let s = study(settings);
     let fine: Vec<f64> = (1..200)
         .map(|i| 0.34 + (0.995 - 0.34) * f64::from(i) / 200.0)
@@ -190,7 +192,7 @@ fn efficiency_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxErr
     plot::chart(&panels, 1)
 }
 
-fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let s = study(settings);
     let a = FURNACE.albedo;
     let mut md = String::new();
@@ -265,7 +267,7 @@ fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxErro
         .fixed
         .iter()
         .max_by(|a, b| efficiency(&a.1).total_cmp(&efficiency(&b.1)))
-        .ok_or("no fixed survival probability")?;
+        .context("no fixed survival probability")?;
     let best_eff = efficiency(best);
     r.number("best_fixed.efficiency_measured", best_eff, "s3");
     // Timings of one run, so a ranking of them can flip under load: the claim is only that
@@ -289,7 +291,7 @@ fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxErro
                 .abs()
                 .total_cmp(&(y.1.vertices - t_vertices).abs())
         })
-        .ok_or("no fixed survival probability")?;
+        .context("no fixed survival probability")?;
     r.text("same_length.q", format!("{}", same_length.0));
     let (t_per_vertex, q_per_vertex) = (
         t.ns_per_path / t_vertices,
@@ -329,8 +331,8 @@ fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxErro
             opt_var * opt_vertices
         ),
     );
-    let (low_q, low) = s.fixed.first().ok_or("no fixed survival probability")?;
-    let (high_q, high) = s.fixed.last().ok_or("no fixed survival probability")?;
+    let (low_q, low) = s.fixed.first().context("no fixed survival probability")?;
+    let (high_q, high) = s.fixed.last().context("no fixed survival probability")?;
     let (low_eff, high_eff) = (efficiency(low), efficiency(high));
     let (low_var, best_var) = (low.summary.variance(), best.summary.variance());
     r.claim(

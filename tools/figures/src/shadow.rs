@@ -3,10 +3,11 @@
 use std::fmt::Write as _;
 use std::hint::black_box;
 
+use anyhow::anyhow;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::check::warp::square_point;
 use raylemma::rng;
 use raylemma::stats::ttest::Summary;
@@ -45,7 +46,7 @@ const STRATEGIES: [(&str, Strategy); 4] = [
 
 /// A square light of side `side` at height 1 above the origin, facing down; the shading
 /// point is the origin with normal `+z`.
-fn square_light(side: f64) -> Result<QuadLight, BoxError> {
+fn square_light(side: f64) -> anyhow::Result<QuadLight> {
     Ok(QuadLight::new(
         DVec3::new(0.3 - side / 2.0, -side / 2.0, 1.0),
         DVec3::new(0.0, side, 0.0),
@@ -91,7 +92,7 @@ type Row = (&'static str, f64, f64, f64);
 
 /// The strategies measured once per run for each light of [`SIDES`]: the table and the
 /// chart show the same measurement.
-fn measured(settings: &Settings) -> Result<&'static [Vec<Row>], BoxError> {
+fn measured(settings: &Settings) -> anyhow::Result<&'static [Vec<Row>]> {
     static MEASURED: std::sync::OnceLock<Result<Vec<Vec<Row>>, String>> =
         std::sync::OnceLock::new();
     MEASURED
@@ -101,12 +102,12 @@ fn measured(settings: &Settings) -> Result<&'static [Vec<Row>], BoxError> {
                 .map(|&(_, side)| {
                     square_light(side)
                         .map(|light| measure(&light, settings))
-                        .map_err(|e| e.to_string())
+                        .map_err(|e| crate::job::message(&e))
                 })
                 .collect()
         })
         .as_deref()
-        .map_err(|e| e.clone().into())
+        .map_err(|e| anyhow!("{e}"))
 }
 
 /// A light and a strategy as a value name: `small.mis_power`.
@@ -125,7 +126,7 @@ fn row_key(side: &str, strategy: &str) -> String {
     format!("{light}.{strategy}")
 }
 
-fn strategies_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn strategies_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -272,7 +273,7 @@ fn strategies_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxErro
     Ok(md.into_bytes())
 }
 
-fn convergence_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn convergence_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut panels = Vec::new();
     for ((label, _), rows) in SIDES.iter().zip(measured(settings)?) {
         let series = rows
@@ -304,7 +305,7 @@ fn convergence_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxEr
     plot::chart(&panels, 2)
 }
 
-fn sphere_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn sphere_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let samples = if settings.quick { 20_000 } else { 400_000 };
     let mut md = String::new();
     writeln!(

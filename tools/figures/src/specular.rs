@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use glam::{DVec2, DVec3};
 
 use super::{Output, Record, Settings};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::optics::specular::*;
 use raylemma::rng;
 use raylemma::stats::ttest::Summary;
@@ -41,7 +41,7 @@ fn lobe_mean(kappa: f64, theta: f64, divide: bool, n: usize) -> f64 {
         / n as f64
 }
 
-fn lobe_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn lobe_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 2_000 } else { 20_000 };
     let angles: Vec<f64> = (0..=44).map(|k| f64::from(k) * 2.0).collect();
     let mut series = Vec::new();
@@ -75,7 +75,7 @@ fn lobe_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::chart(&panels, 1)
 }
 
-fn furnace_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn furnace_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 2_000 } else { 100_000 };
     let mut md = String::new();
     writeln!(

@@ -6,7 +6,7 @@ use std::hint::black_box;
 use glam::DVec3;
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
 use raylemma::check::{Options, Real};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
@@ -73,7 +73,7 @@ fn far_options(settings: &Settings) -> Options {
     }
 }
 
-fn far_error_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn far_error_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let options = far_options(settings);
     let forms: [(&str, &dyn Fn(f64) -> FarRow); 2] = [
         ("textbook (seed)", &|d| {
@@ -119,7 +119,7 @@ fn far_error_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxErro
     plot::chart(&panels, 2)
 }
 
-fn far_table_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn far_table_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let options = far_options(settings);
     let grid = check::far_grid(&options);
     let mut md = String::new();
@@ -276,7 +276,7 @@ fn far_growth_claims(r: &mut Record, textbook: &[FarRow], stable: &[FarRow]) {
 /// The same far bundle in `f64`, where the textbook form keeps every hit or miss but its
 /// error of `t` still grows like d². The stable form's error of `t` is not shown: the
 /// reference is computed in `f64` too, and is no better than the stable form itself.
-fn far_table_f64_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn far_table_f64_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let options = far_options(settings);
     let grid = check::far_grid(&options);
     let mut md = String::new();
@@ -353,7 +353,7 @@ fn far_table_f64_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxE
 /// Hit maps: each pixel is one ray of a parallel bundle aimed at a unit sphere `distance`
 /// radii away. Light grey: correct hit; dark grey: correct miss; orange: wrong answer.
 /// Rays within the silhouette band ([`check::SILHOUETTE_BAND`]) accept either answer.
-fn silhouette_png(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn silhouette_png(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     use plotters::prelude::*;
     let n: u32 = if settings.quick { 100 } else { 200 };
     let distances = [1e3, 3e3, 1e4];
@@ -418,7 +418,7 @@ fn silhouette_png(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxErr
     plot::encode_png(width, height, buffer)
 }
 
-fn self_hit_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn self_hit_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let rays = if settings.quick { 20_000 } else { 200_000 };
     let options = Options::default().cases(rays); // seed: check::SELF_HIT_SEED
     let mut md = String::new();
@@ -471,7 +471,7 @@ fn self_hit_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError>
     Ok(md.into_bytes())
 }
 
-fn verdicts_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn verdicts_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let options = if settings.quick {
         Options::default().cases(2_000)
     } else {
@@ -535,7 +535,7 @@ fn time_form<R: Real>(f: fn(&R::Ray, &R::Sphere, R) -> Option<R>, quick: bool) -
     (ns, hits as f64 / rays.len() as f64)
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let q = settings.quick;
     let rows = [
         ("textbook", "f32", time_form::<f32>(textbook32, q)),

@@ -9,10 +9,11 @@
 use std::fmt::Write as _;
 use std::sync::OnceLock;
 
+use anyhow::{Context, bail};
 use rayon::prelude::*;
 
 use super::{Output, Record, Settings};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::rng;
 use raylemma::rng::standard_normal;
 use raylemma::stats::null::{NULL_CASES, NullCase, chi2_p_value};
@@ -45,7 +46,7 @@ struct Calibration {
     p_values: Vec<(NullCase, Vec<f64>)>,
 }
 
-fn calibration(settings: &Settings) -> Result<&'static Calibration, BoxError> {
+fn calibration(settings: &Settings) -> anyhow::Result<&'static Calibration> {
     static FULL: OnceLock<Calibration> = OnceLock::new();
     static QUICK: OnceLock<Calibration> = OnceLock::new();
     let (cell, runs) = if settings.quick {
@@ -65,7 +66,7 @@ fn calibration(settings: &Settings) -> Result<&'static Calibration, BoxError> {
 
 const BINS: usize = 20;
 
-fn pvalues_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn pvalues_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let cal = calibration(settings)?;
     // Under the null each bin holds Binomial(runs, 1/BINS) p-values: density 1 ± 2 sd.
     let share = 1.0 / BINS as f64;
@@ -145,13 +146,13 @@ fn stephens_lambda(n: f64, d: f64) -> f64 {
 /// law (Stephens' correction at the effective size `n_a n_b / (n_a + n_b)`) that
 /// `ks::two_sample` used before it computed the exact one at these sizes. Each run draws
 /// the samples of the same seed, which the exact p-values of `exact` confirm.
-fn two_sample_limit_law(exact: &[f64]) -> Result<Vec<f64>, BoxError> {
+fn two_sample_limit_law(exact: &[f64]) -> anyhow::Result<Vec<f64>> {
     // The generator of run `seed` of `NullCase::KsTwoSample` (its index in NULL_CASES is 3;
     // `NullCase::rng` is private).
     let index = NULL_CASES
         .iter()
         .position(|&c| c == NullCase::KsTwoSample)
-        .ok_or("no two-sample case")? as u64;
+        .context("no two-sample case")? as u64;
     let runs: Vec<(f64, f64)> = (0..exact.len() as u64)
         .into_par_iter()
         .map(|seed| {
@@ -167,12 +168,12 @@ fn two_sample_limit_law(exact: &[f64]) -> Result<Vec<f64>, BoxError> {
         })
         .collect::<Result<_, raylemma::stats::StatsError>>()?;
     if runs.iter().zip(exact).any(|((p, _), q)| p != q) {
-        return Err("the two-sample runs drawn again differ from NullCase::KsTwoSample's".into());
+        bail!("the two-sample runs drawn again differ from NullCase::KsTwoSample's");
     }
     Ok(runs.into_iter().map(|(_, limit)| limit).collect())
 }
 
-fn calibration_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn calibration_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let cal = calibration(settings)?;
     let alpha = test_alpha();
     let mut md = String::new();
@@ -186,7 +187,7 @@ fn calibration_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxErr
         .iter()
         .find(|(c, _)| *c == NullCase::KsTwoSample)
         .map(|(_, ps)| ps.as_slice())
-        .ok_or("no two-sample case")?;
+        .context("no two-sample case")?;
     let limit = two_sample_limit_law(two_sample)?;
     // How much the limit law overstates the exact p-value in the body of the distribution
     // (exact p from 0.05 to 0.95): the mean of limit / exact - 1 over those runs.
@@ -288,7 +289,7 @@ fn calibration_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxErr
 
 /// Pearson's chi-squared in the far tail: the experiment of the calibration table's first
 /// row run long enough to measure its false-failure rate at `test_alpha()` itself.
-fn far_tail_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn far_tail_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let runs: u64 = if settings.quick { 200_000 } else { 8_000_000 };
     let alpha = test_alpha();
     let rejected = (0..runs)

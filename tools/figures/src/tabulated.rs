@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use rand::RngExt;
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::check::max_abs;
 use raylemma::rng;
 use raylemma::sampling::tabulated::{
@@ -40,7 +40,7 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn histogram_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn histogram_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let table = emission_table();
     let n: usize = if settings.quick { 100_000 } else { 1_000_000 };
     let mut counts = vec![0u64; table.bins()];
@@ -115,7 +115,7 @@ fn tests_against(table: &Piecewise1D, xs: &[f64]) -> (f64, Result<f64, String>) 
     (ks, chi)
 }
 
-fn checks_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn checks_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n: usize = if settings.quick { 20_000 } else { 200_000 };
     let table = emission_table();
     let edges = table.edges().to_vec();
@@ -281,7 +281,7 @@ fn segment_inverse_textbook(a: f64, b: f64, xi: f64) -> f64 {
     (-a + (a * a + xi * (b * b - a * a)).sqrt()) / (b - a)
 }
 
-fn precision_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn precision_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n: usize = if settings.quick { 20_000 } else { 200_000 };
     let mut md = String::new();
     let table = emission_table();
@@ -379,7 +379,7 @@ fn precision_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let reps = if settings.quick { 5 } else { 201 };
     let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();

@@ -11,7 +11,6 @@ use std::fmt::Write as _;
 use rayon::prelude::*;
 
 use super::{Output, Record, Settings};
-use crate::plot::BoxError;
 use raylemma::check::Options;
 use raylemma::check::render::independence::{self, render_independence};
 use raylemma::check::render::pool::pool_blocks;
@@ -193,7 +192,7 @@ fn twins() -> Vec<Twin> {
 /// The second table: each planted mistake of [`twins`] on each scene of its check, over
 /// `seeds` seeds at the suite's level: in how many seeds the check rejects it, and the
 /// smallest ratio of the largest `|z|` (whole image or block) to the critical value.
-fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxError> {
+fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> anyhow::Result<()> {
     writeln!(
         md,
         "\n| check | planted mistake | scene | rejected in {seeds} seeds | least \\|z\\| / critical | least finite \\|z\\| / critical |"
@@ -294,7 +293,7 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> Result<(), BoxErro
     Ok(())
 }
 
-fn power_md(settings: &Settings, rec: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn power_md(settings: &Settings, rec: &mut Record) -> anyhow::Result<Vec<u8>> {
     let seeds: u64 = if settings.quick { 2 } else { 10 };
     let root = settings.root.clone();
     let options = |s: u64| Options::default().seed(0xB1A5 + s);

@@ -7,7 +7,7 @@ use plotters::prelude::*;
 
 use super::{Output, Record, Settings};
 use crate::plot::Legend;
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::optics::thinfilm::{
     Film, airy_r, cos_theta, film_colour, interface, phase, quarter_wave_reflectance,
     seed_reflectance,
@@ -59,7 +59,7 @@ fn film(n: (f64, f64, f64), d: f64) -> Film {
     Film::new(n.0, n.1, n.2, d)
 }
 
-fn spectra_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn spectra_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let thicknesses = [100.0, 250.0, 400.0, 800.0];
     let panel = |title: &str, n: (f64, f64, f64)| {
         Panel::new(
@@ -119,7 +119,7 @@ fn viridis(t: f64) -> RGBColor {
 
 /// Reflectance maps against wavelength (380–780 nm) and thickness (0–1000 nm), at normal
 /// incidence, for the soap film and for oil on water, with a common colour bar.
-fn map_png(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn map_png(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (dl, dd) = if settings.quick {
         (4.0, 10.0)
     } else {
@@ -186,7 +186,7 @@ fn map_png(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     })
 }
 
-fn angle_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn angle_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let angles: Vec<f64> = (0..=180).map(|k| f64::from(k) * 0.5).collect();
     let panel = |title: String, f: Film| {
         let curve = |label: &str, pick: &dyn Fn(f64) -> f64| {
@@ -230,7 +230,7 @@ fn angle_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
     plot::ranged_chart(&panels)
 }
 
-fn seed_md(_: &Settings, rec: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn seed_md(_: &Settings, rec: &mut Record) -> anyhow::Result<Vec<u8>> {
     let quarter = film(SOAP, 550.0 / (4.0 * SOAP.1));
     let soap300 = film(SOAP, 300.0);
     let tir = Film::new(1.52, 1.38, 1.0, 100.0);
@@ -332,7 +332,7 @@ fn plain_airy(f: &Film, wavelength_nm: f64, theta1: f64) -> f64 {
     0.5 * (airy_r(i12.r_s, i23.r_s, delta).norm_sqr() + airy_r(i12.r_p, i23.r_p, delta).norm_sqr())
 }
 
-fn precision_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn precision_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (n1, n2, n3) = (2.4, 1.2, 2.0);
     let mut md = String::new();
     writeln!(
@@ -423,7 +423,7 @@ fn least_squares_slope(points: &[(f64, f64)]) -> f64 {
 
 /// Colour strips against thickness, one per film, each scaled so that its brightest
 /// thickness has `Y = 0.9`, brought into gamut and encoded by the display chapter's rules.
-fn colours_png(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn colours_png(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let step = if settings.quick { 10.0 } else { 2.0 };
     let max_d = 1500.0;
     let films = [

@@ -2,11 +2,12 @@
 
 use std::fmt::Write as _;
 
+use anyhow::Context;
 use glam::DVec3;
 
 use super::{Output, Record, Settings, timing};
 use crate::plot::Legend;
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use raylemma::rng;
 use raylemma::spectral::display::delta_e;
 use raylemma::spectral::upsample::*;
@@ -33,7 +34,7 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-fn curve(label: &str, rgb: DVec3) -> Result<Series, BoxError> {
+fn curve(label: &str, rgb: DVec3) -> anyhow::Result<Series> {
     let fit = upsample(rgb)?;
     Ok(Series::line(
         format!("{label} ({}, {}, {})", rgb.x, rgb.y, rgb.z),
@@ -46,7 +47,7 @@ fn curve(label: &str, rgb: DVec3) -> Result<Series, BoxError> {
     ))
 }
 
-fn spectra_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn spectra_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let corners = Panel::new(
         "gamut corners (linear sRGB)",
         "wavelength, nm",
@@ -129,7 +130,7 @@ fn row(
     colours: &[DVec3],
     fitter: &Fitter,
     eval: fn(&Reflectance, f64) -> f64,
-) -> Result<Worst, BoxError> {
+) -> anyhow::Result<Worst> {
     let (mut lin, mut de_max, mut de_sum, mut at, mut its, mut lo, mut hi) =
         (0.0f64, 0.0f64, 0.0, DVec3::ZERO, 0u32, 1.0f64, 0.0f64);
     let mut lin_at = DVec3::ZERO;
@@ -166,7 +167,7 @@ fn row(
     })
 }
 
-fn roundtrip_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn roundtrip_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(
         md,
@@ -243,7 +244,7 @@ fn roundtrip_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError
          (CIELAB, white = sRGB (1, 1, 1)). Reflectance range over 360-830 nm in 0.1 nm steps.*"
     )?;
     let white = srgb_under_d65(|_| 1.0);
-    let xy = cie::chromaticity(cie::linear_srgb_to_xyz(white)).ok_or("white is black")?;
+    let xy = cie::chromaticity(cie::linear_srgb_to_xyz(white)).context("white is black")?;
     r.text(
         "white.d65_chromaticity",
         format!("({:.5}, {:.5})", xy.x, xy.y),
@@ -263,7 +264,7 @@ fn roundtrip_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError
     Ok(md.into_bytes())
 }
 
-fn speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let colours = if settings.quick { random(100) } else { grid() };
     let reps = if settings.quick { 3 } else { 11 };
     let d65 = Fitter::d65();

@@ -14,7 +14,6 @@ mod seed;
 use std::fmt::Write as _;
 
 use super::{Output, Record, Settings, timing};
-use crate::plot::BoxError;
 use raylemma::spectral::spectrum::{Spectrum, builtin};
 use raylemma::spectral::wavelength::{N, Strategy};
 
@@ -83,7 +82,7 @@ fn spectrum_key(name: &str) -> String {
     key.trim_end_matches('_').to_string()
 }
 
-fn speed_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+fn speed_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let reps = if settings.quick { 5 } else { 101 };
     let us = raylemma::workload::uniform_inputs(4096);
     let mut md = String::new();

@@ -9,7 +9,6 @@ use super::style::{
     BLUE, FAINT, GREEN, GREY, HEAD, INK, LABEL, NOTE, Pen, SKY, SMALL, VERMILION, font,
 };
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::render::camera::Camera;
 use raylemma::render::scene::CameraSpec;
@@ -21,7 +20,7 @@ const CAMERA_PIXELS: (u32, u32) = (8, 6);
 /// Checks the convention the diagram draws against the library's camera: pixel (0, 0) at
 /// the top left, x to the right (`forward × up`), y down, the top edge at `fov_y / 2` above
 /// the view direction.
-fn check_camera() -> Result<(), BoxError> {
+fn check_camera() -> anyhow::Result<()> {
     let (w, h) = CAMERA_PIXELS;
     let spec = CameraSpec {
         position: DVec3::ZERO,
@@ -57,7 +56,7 @@ fn check_camera() -> Result<(), BoxError> {
     Ok(())
 }
 
-pub(super) fn camera(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn camera(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     check_camera()?;
     let mut d = Svg::new(356.0);
     let half = (0.5 * CAMERA_FOV_DEG).to_radians().tan();

@@ -1,15 +1,16 @@
 //! The diagram of s and p polarisation, and of the beam's footprint (`diagram_fresnel_sp.svg`),
 //! of the chapter *Fresnel and Schlick* (`chapters/optics/fresnel.md`).
 
+use anyhow::Context;
+
 use super::ensure;
 use super::geometry::{V, bisector, dir, meet, to2, to3, v};
 use super::style::{BLUE, FAINT, GREEN, GREY, HEAD, INK, LABEL, NOTE, Pen, SKY, VERMILION, font};
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::optics::reflect::{reflect, refract};
 
-pub(super) fn fresnel_sp(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn fresnel_sp(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (n1, n2) = (1.0, 1.5);
     let theta_i: f64 = 50.0;
     let mut d = Svg::new(430.0);
@@ -19,7 +20,7 @@ pub(super) fn fresnel_sp(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxErr
     let wr = to2(reflect(to3(wi), to3(up)));
     let wt = to2(refract(to3(wi), to3(up), n1, n2)
         .transmitted()
-        .ok_or("no transmitted ray")?);
+        .context("no transmitted ray")?);
     let theta_t = wt.x.asin().to_degrees();
     ensure(
         ((n1 * theta_i.to_radians().sin()) - n2 * theta_t.to_radians().sin()).abs() < 1e-12,

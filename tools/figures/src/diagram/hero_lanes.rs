@@ -6,7 +6,6 @@ use super::style::{
     Anchor, BLUE, Font, GREEN, GREY, HEAD, INK, LABEL, NOTE, Pen, SMALL, VERMILION, font,
 };
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::spectral::wavelength::{self, N, Strategy};
 use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
@@ -26,7 +25,7 @@ fn lane_weights(s: Strategy) -> &'static str {
     }
 }
 
-pub(super) fn hero_lanes(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn hero_lanes(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let rows = Strategy::ALL.len();
     let row_gap = 44.0;
     let first_row = 262.0;

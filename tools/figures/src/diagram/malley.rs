@@ -6,11 +6,10 @@ use glam::DVec2;
 use super::geometry::{V, bisector, dir, v};
 use super::style::{BLUE, GREY, HEAD, INK, LABEL, NOTE, Pen, SKY, VERMILION, font};
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::sampling::disc::disc_concentric;
 
-pub(super) fn malley(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn malley(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut d = Svg::new(370.0);
     // Side view: the section y = 0 through the disc and the hemisphere above it.
     let o = v(190.0, 300.0);

@@ -7,7 +7,6 @@ use super::ensure;
 use super::geometry::{V, meet, to2, to3, turn, v};
 use super::style::{BLUE, GREY, INK, LABEL, NOTE, ORANGE, Pen, SKY, SMALL, font};
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::optics::reflect::reflect;
 
@@ -31,7 +30,7 @@ fn camera_icon(d: &mut Svg, c: V, dir: V) {
     d.polygon(&lens, GREY, 1.0);
 }
 
-pub(super) fn path(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn path(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut d = Svg::new(492.0);
     // A room in section: a diffuse floor, ceiling and walls, a mirror tile on the floor and
     // a quad light on the ceiling (seen edge-on).

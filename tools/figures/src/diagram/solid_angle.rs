@@ -4,10 +4,9 @@
 use super::geometry::{V, bisector, meet, turn, v};
 use super::style::{BLUE, FAINT, GREEN, GREY, INK, LABEL, NOTE, ORANGE, Pen, SKY, VERMILION, font};
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 
-pub(super) fn solid_angle(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn solid_angle(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut d = Svg::new(380.0);
     let p = v(130.0, 250.0);
     let unit = 84.0;

@@ -4,6 +4,7 @@
 
 use std::f64::consts::PI;
 
+use anyhow::Context;
 use num_complex::Complex64;
 
 use super::ensure;
@@ -12,7 +13,6 @@ use super::style::{
     BLUE, FAINT, GREEN, GREY, HEAD, INK, LABEL, NOTE, PURPLE, Pen, SKY, SMALL, VERMILION, font,
 };
 use super::svg::Svg;
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::optics::reflect::{reflect, refract};
 use raylemma::optics::thinfilm::{self, Film};
@@ -53,7 +53,7 @@ fn airy_terms(count: usize) -> (Vec<Complex64>, f64, Complex64, Complex64) {
     (terms, two_delta, round_trip, film.r_s)
 }
 
-pub(super) fn thinfilm_diagram(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn thinfilm_diagram(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (n1, n2, n3) = FILM;
     let mut d = Svg::new(380.0);
 
@@ -83,14 +83,14 @@ pub(super) fn thinfilm_diagram(_: &Settings, _: &mut Record) -> Result<Vec<u8>, 
     let wr = to2(reflect(to3(wi), to3(up)));
     let w2 = to2(refract(to3(wi), to3(up), n1, n2)
         .transmitted()
-        .ok_or("no ray in the film")?);
+        .context("no ray in the film")?);
     let w_back = to2(reflect(to3(w2), to3(up)));
     let w_out = to2(refract(to3(w_back), to3(down), n2, n1)
         .transmitted()
-        .ok_or("no ray out of the film")?);
+        .context("no ray out of the film")?);
     let w3 = to2(refract(to3(w2), to3(up), n2, n3)
         .transmitted()
-        .ok_or("no ray into the substrate")?);
+        .context("no ray into the substrate")?);
     ensure(
         (w_out - wr).length() < 1e-12,
         "the ray out of the film is parallel to the reflected one",

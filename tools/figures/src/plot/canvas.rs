@@ -2,11 +2,11 @@
 //! for elements written as text) and a PNG for pictures made of pixels ([`draw_png`],
 //! [`encode_png`]).
 
+use anyhow::Context;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters_backend::BackendCoord;
 
-use super::BoxError;
 use super::text::register_embedded_font;
 
 /// A drawing area of an SVG chart.
@@ -37,8 +37,8 @@ impl Overlay {
 pub fn svg(
     width: u32,
     height: u32,
-    draw: impl FnOnce(&SvgArea<'_>, &mut Overlay) -> Result<(), BoxError>,
-) -> Result<Vec<u8>, BoxError> {
+    draw: impl FnOnce(&SvgArea<'_>, &mut Overlay) -> anyhow::Result<()>,
+) -> anyhow::Result<Vec<u8>> {
     register_embedded_font();
     let mut text = String::new();
     let mut overlay = Overlay::default();
@@ -48,7 +48,7 @@ pub fn svg(
         draw(&root, &mut overlay)?;
         root.present()?;
     }
-    let end = text.rfind("</svg>").ok_or("plotters wrote no </svg>")?;
+    let end = text.rfind("</svg>").context("plotters wrote no </svg>")?;
     text.insert_str(end, &overlay.0.concat());
     // Opacity 1 is SVG's default: a tenth of the file on dense charts.
     Ok(text.replace(" opacity=\"1\"", "").into_bytes())
@@ -59,8 +59,8 @@ pub fn svg(
 pub fn draw_png(
     width: u32,
     height: u32,
-    draw: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), BoxError>,
-) -> Result<Vec<u8>, BoxError> {
+    draw: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> anyhow::Result<()>,
+) -> anyhow::Result<Vec<u8>> {
     register_embedded_font();
     let mut buffer = vec![255u8; (width * height * 3) as usize];
     {
@@ -74,7 +74,7 @@ pub fn draw_png(
 
 /// Encodes an RGB8 buffer as PNG, with the library's one encoder
 /// ([`raylemma::spectral::display::encode_png`]).
-pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> Result<Vec<u8>, BoxError> {
+pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> anyhow::Result<Vec<u8>> {
     Ok(raylemma::spectral::display::encode_png(
         width, height, &rgb,
     )?)

@@ -3,7 +3,6 @@
 
 use plotters::prelude::*;
 
-use super::BoxError;
 use super::axes::{builder, mesh, tick};
 use super::canvas::{Overlay, SvgArea, svg};
 use super::elements::{Marker, Styled};
@@ -31,7 +30,7 @@ fn panel_height(columns: usize, panels: usize) -> u32 {
 /// its bytes. When the panels have the same series (same labels in the same order) they
 /// share one legend, in the grid's empty cell if it has one, else below the panels; else
 /// each panel has its own, in its emptiest corner or where [`Panel::legend`] says.
-pub fn chart(panels: &[Panel], columns: usize) -> Result<Vec<u8>, BoxError> {
+pub fn chart(panels: &[Panel], columns: usize) -> anyhow::Result<Vec<u8>> {
     let columns = columns.clamp(1, 2).min(panels.len().max(1));
     let rows = panels.len().div_ceil(columns);
     let shared = shared_keys(panels).or_else(|| match panels {
@@ -79,7 +78,7 @@ pub fn chart(panels: &[Panel], columns: usize) -> Result<Vec<u8>, BoxError> {
 pub type RangedPanel = (Panel, (f64, f64), (f64, f64), Legend);
 
 /// [`chart`] of panels with the axis ranges and legend positions given, two across.
-pub fn ranged_chart(panels: &[RangedPanel]) -> Result<Vec<u8>, BoxError> {
+pub fn ranged_chart(panels: &[RangedPanel]) -> anyhow::Result<Vec<u8>> {
     let panels: Vec<Panel> = panels
         .iter()
         .map(|(p, x, y, at)| p.clone().x_range(*x).y_range(*y).legend(*at))
@@ -95,7 +94,7 @@ fn draw_panel(
     own_legend: bool,
     legend_below: i32,
     overlay: &mut Overlay,
-) -> Result<(), BoxError> {
+) -> anyhow::Result<()> {
     let pts = || {
         panel
             .series

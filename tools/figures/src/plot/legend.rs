@@ -5,7 +5,6 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::BoxError;
 use super::elements::{Marker, Styled};
 use super::look::{Shape, bar_colours, look};
 use super::series::{Key, Legend, Mark, Panel, Scale};
@@ -61,7 +60,7 @@ pub(super) fn draw_legend_box<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     keys: &[Key],
     at: (i32, i32),
-) -> Result<(), BoxError>
+) -> anyhow::Result<()>
 where
     DB::ErrorType: 'static,
 {
@@ -86,7 +85,7 @@ where
 pub(super) fn draw_legend_strip<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     keys: &[Key],
-) -> Result<(), BoxError>
+) -> anyhow::Result<()>
 where
     DB::ErrorType: 'static,
 {
@@ -108,7 +107,7 @@ fn draw_key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     key: &Key,
     (x, y): (i32, i32),
-) -> Result<(), BoxError>
+) -> anyhow::Result<()>
 where
     DB::ErrorType: 'static,
 {

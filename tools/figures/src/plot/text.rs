@@ -7,7 +7,6 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{FontStyle, register_font};
 
-use super::BoxError;
 use super::canvas::SvgArea;
 
 static FONT: &[u8] = include_bytes!("../../../../assets/fonts/DejaVuSans.ttf");
@@ -76,7 +75,7 @@ fn wrap(text: &str, px: f64, width: i32) -> Vec<String> {
 
 /// Draws `title` centred at the top of `area`, wrapped to its width, and returns the rest
 /// of the area.
-pub fn draw_title<'a>(area: &SvgArea<'a>, title: &str) -> Result<SvgArea<'a>, BoxError> {
+pub fn draw_title<'a>(area: &SvgArea<'a>, title: &str) -> anyhow::Result<SvgArea<'a>> {
     let (width, _) = area.dim_in_pixel();
     let lines = wrap(title, TITLE_PX, width as i32 - 16);
     let line = (TITLE_PX * 1.25) as i32;

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use rayon::prelude::*;
 
 use super::{chi2_p, correct_samplers};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use crate::{Record, Settings};
 use raylemma::stats;
 
@@ -29,7 +29,7 @@ fn calibration_p_values(settings: &Settings) -> Vec<(String, Vec<f64>)> {
         .collect()
 }
 
-pub(super) fn calibration_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn calibration_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let all: Vec<f64> = calibration_p_values(settings)
         .into_iter()
         .flat_map(|(_, ps)| ps)
@@ -60,7 +60,7 @@ pub(super) fn calibration_svg(settings: &Settings, _: &mut Record) -> Result<Vec
     plot::chart(&panels, 1)
 }
 
-pub(super) fn calibration_md(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn calibration_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let alpha = stats::test_alpha();
     let mut md = String::new();
     writeln!(

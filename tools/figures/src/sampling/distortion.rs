@@ -6,11 +6,11 @@ use std::fmt::Write as _;
 
 use glam::{DVec2, DVec3};
 
-use crate::plot::{self, BoxError};
+use crate::plot;
 use crate::{Record, Settings};
 use raylemma::sampling::disc::*;
 
-pub(super) fn distortion_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn distortion_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let grid: Vec<DVec2> = (0..200)
         .flat_map(|i| {
             (0..200).map(move |j| DVec2::new((i as f64 + 0.5) / 200.0, (j as f64 + 0.5) / 200.0))
@@ -91,7 +91,7 @@ pub(super) fn distortion_md(_: &Settings, r: &mut Record) -> Result<Vec<u8>, Box
     Ok(md.into_bytes())
 }
 
-pub(super) fn warped_grids_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn warped_grids_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     use plotters::prelude::*;
     plot::svg(plot::WIDTH, 420, |root, _| {
         type Map = fn(DVec2) -> DVec3;

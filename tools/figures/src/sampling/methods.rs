@@ -8,7 +8,6 @@ use std::hint::black_box;
 use glam::DVec3;
 
 use super::{chi2_p, correct_samplers, value_name};
-use crate::plot::BoxError;
 use crate::{Record, Settings, timing};
 use raylemma::check::Options;
 use raylemma::check::warp::{self, Domain};
@@ -32,7 +31,7 @@ fn sampler_key(name: &str) -> String {
     }
 }
 
-pub(super) fn methods_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn methods_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let samples = if settings.quick { 100_000 } else { 1_000_000 };
     let mut md = String::new();
     writeln!(

@@ -8,7 +8,6 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::{Boxed, chi2_p, square_warp, value_name};
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::check::warp::{Domain, planted};
 use raylemma::sampling::cosine::*;
@@ -38,7 +37,7 @@ fn cosine_power_lobe_1_05(u: DVec2) -> DVec3 {
     DVec3::new(r * phi.cos(), r * phi.sin(), z)
 }
 
-pub(super) fn power_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn power_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let runs = if settings.quick { 10 } else { 50 };
     let sizes = [10_000, 100_000, 400_000, 1_000_000];
     let alpha = stats::test_alpha();

@@ -7,7 +7,6 @@ use std::hint::black_box;
 
 use glam::{DVec2, DVec3};
 
-use crate::plot::BoxError;
 use crate::{Record, Settings, timing};
 use raylemma::rng;
 use raylemma::sampling::disc::*;
@@ -32,7 +31,7 @@ fn disc_concentric_std(u: DVec2) -> DVec3 {
 /// Does [`sin_cos_quarter`] pay? Median ns per call of the series and of the standard
 /// library's `sin_cos` on angles in `[-pi/4, pi/4]`, in both precisions, and of the
 /// concentric map with each, on the same random points of the square.
-pub(super) fn quarter_speed_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn quarter_speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     use raylemma::single::sampling::trig as trig32;
     let reps = if settings.quick { 5 } else { 201 };
     let mut rng = rng::seeded(0x5eed_d15c);

@@ -6,7 +6,7 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 
-use crate::plot::{self, BoxError, Legend, Panel, Series};
+use crate::plot::{self, Legend, Panel, Series};
 use crate::{Record, Settings};
 use raylemma::check::warp;
 use raylemma::rng::{self, Rng};
@@ -21,7 +21,7 @@ fn phi_z(w: DVec3) -> (f64, f64) {
     (if phi < 0.0 { phi + TAU } else { phi }, w.z)
 }
 
-pub(super) fn scatter_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn scatter_svg(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut rng = rng::seeded(0x5CA7);
     let n = 2500;
     let sphere_icdf: Vec<_> = (0..n)
@@ -69,7 +69,7 @@ pub(super) fn scatter_svg(_: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxEr
     plot::chart(&panels, 2)
 }
 
-pub(super) fn histograms_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn histograms_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let n = if settings.quick { 100_000 } else { 1_000_000 };
     let bins = 40;
     let histogram = |sample: &dyn Fn(&mut Rng) -> f64| {

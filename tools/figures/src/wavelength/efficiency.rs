@@ -3,17 +3,18 @@
 
 use std::fmt::Write as _;
 
+use anyhow::Context;
 use glam::DVec3;
 
 use super::measure::{ns_per_path, ns_per_path_all, path_xyz, relative_sq, relative_variance};
 use super::{spectra, spectrum_key};
-use crate::plot::{self, BoxError, Panel, Series};
+use crate::plot::{self, Panel, Series};
 use crate::{Record, Settings, timing};
 use raylemma::rng;
 use raylemma::spectral::cie;
 use raylemma::spectral::wavelength::Strategy;
 
-pub(super) fn error_svg(settings: &Settings, _: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn error_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (repeats, max_pow, reps) = if settings.quick {
         (60, 8, 3)
     } else {
@@ -92,7 +93,7 @@ fn extreme(column: &[f64], better: fn(&f64, &f64) -> bool) -> Option<usize> {
     (column.iter().filter(|&&x| x == column[best]).count() == 1).then_some(best)
 }
 
-pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (n, reps) = if settings.quick {
         (20_000, 5)
     } else {
@@ -163,11 +164,11 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u
     let hero = Strategy::ALL
         .iter()
         .position(|&s| s == Strategy::HeroVisible)
-        .ok_or("no hero-visible strategy")?;
+        .context("no hero-visible strategy")?;
     let seed = Strategy::ALL
         .iter()
         .position(|&s| s == Strategy::SeedBand)
-        .ok_or("no seed's band strategy")?;
+        .context("no seed's band strategy")?;
     // The smallest relative variance of every spectrum: hero-visible's?
     let not_smallest: Vec<&str> = spectra
         .iter()
@@ -321,7 +322,7 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> Result<Vec<u
     let sodium = spectra
         .iter()
         .position(|(name, _)| *name == "low-pr. sodium")
-        .ok_or("no low-pressure sodium spectrum")?;
+        .context("no low-pressure sodium spectrum")?;
     let easier: Vec<&str> = Strategy::ALL
         .iter()
         .enumerate()

@@ -7,10 +7,10 @@
 use std::fmt::Write as _;
 use std::hint::black_box;
 
+use anyhow::Context;
 use glam::DVec3;
 
 use super::measure::interleaved_ns;
-use crate::plot::BoxError;
 use crate::{Record, Settings, timing};
 use raylemma::rng;
 use raylemma::spectral::cie;
@@ -135,7 +135,7 @@ fn ratio_key(ratio: f64) -> String {
     format!("s{ratio}").replace('.', "_")
 }
 
-pub(super) fn dispersive_mis_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn dispersive_mis_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (n, reps) = if settings.quick {
         (20_000, 5)
     } else {
@@ -226,7 +226,7 @@ pub(super) fn dispersive_mis_md(settings: &Settings, r: &mut Record) -> Result<V
         rows.iter()
             .find(|(x, _)| *x == ratio)
             .map(|(_, row)| *row)
-            .ok_or_else(|| format!("no row σ/Δθ = {ratio}"))
+            .with_context(|| format!("no row σ/Δθ = {ratio}"))
     };
     let (narrow, wide) = (row(0.01)?, row(10.0)?);
     let (at_0_1, at_0_3) = (row(0.1)?, row(0.3)?);

@@ -7,7 +7,6 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use super::{spectra, spectrum_key};
-use crate::plot::BoxError;
 use crate::{Record, Settings};
 use raylemma::rng;
 use raylemma::spectral::cie;
@@ -26,7 +25,7 @@ pub fn seed_readings() -> Vec<(&'static str, SeedBand)> {
     ]
 }
 
-pub(super) fn seed_bias_md(settings: &Settings, r: &mut Record) -> Result<Vec<u8>, BoxError> {
+pub(super) fn seed_bias_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let spectra = spectra();
     let readings = seed_readings();
     let mut md = String::new();
