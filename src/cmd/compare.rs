@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use raylemma::render::compare::{self, Estimate};
-use raylemma::render::image::{ExrContents, Image};
+use raylemma::render::image::{ExrContents, Image, ImageError};
 
 use super::{CmdResult, Failure, Outcome};
 
@@ -35,23 +35,23 @@ pub fn run(args: &CompareArgs) -> CmdResult {
     match compare_files(args) {
         Ok(true) => Ok(Outcome::Done),
         Ok(false) => Ok(Outcome::Negative),
-        Err(e) => Err(Failure::BadInput(e)),
+        Err(e) => Err(Failure::from(e)),
     }
 }
 
 /// The reference: it must carry its variance.
-pub(crate) fn reference(path: &Path) -> Result<Estimate, String> {
-    let contents = ExrContents::read(path).map_err(|e| e.to_string())?;
+pub(crate) fn reference(path: &Path) -> Result<Estimate, ImageError> {
+    let contents = ExrContents::read(path)?;
     let channels = contents.channels.join(", ");
     let half = contents.half;
     match contents.into_image() {
         Some(image) => Ok(rounded(Estimate::from_variance(image), half)),
-        None => Err(format!(
+        None => Err(ImageError::Mismatch(format!(
             "{}: the reference has no variance channels var.R, var.G, var.B (it has {channels}); \
              the reference must be a render with its variance, such as `raylemma render` writes \
              or figures/reference/NAME.exr",
             path.display()
-        )),
+        ))),
     }
 }
 
@@ -60,19 +60,19 @@ pub(crate) fn reference(path: &Path) -> Result<Estimate, String> {
 pub(crate) fn candidate(
     paths: &[PathBuf],
     size: (u32, u32),
-) -> Result<(Estimate, String, bool), String> {
+) -> Result<(Estimate, String, bool), ImageError> {
     let mut files = Vec::new();
     for path in paths {
-        let c = ExrContents::read(path).map_err(|e| e.to_string())?;
+        let c = ExrContents::read(path)?;
         if (c.width, c.height) != size {
-            return Err(format!(
+            return Err(ImageError::Mismatch(format!(
                 "{}: {}x{}, but the reference is {}x{}",
                 path.display(),
                 c.width,
                 c.height,
                 size.0,
                 size.1
-            ));
+            )));
         }
         files.push(c);
     }
@@ -88,13 +88,13 @@ pub(crate) fn candidate(
                 name,
                 one.from_xyz,
             )),
-            None => Err(format!(
+            None => Err(ImageError::Mismatch(format!(
                 "{path} is a plain image without variance channels, and it is the only candidate: \
                  one image cannot say how noisy it is. Render the scene several times with \
                  different seeds (for example 16 renders of a sixteenth of the samples each) and \
                  pass them all: raylemma compare REF.exr render-1.exr render-2.exr ...; or write \
                  the variance of each pixel's mean as channels var.R, var.G, var.B"
-            )),
+            ))),
         };
     }
     let means: Vec<&[glam::DVec3]> = files.iter().map(|c| &c.mean[..]).collect();
@@ -168,7 +168,7 @@ fn xyz_hint(reference: &Image, candidate: &Image, from_xyz: bool) -> Option<Stri
 /// Candidates rendered with the same seed (a renderer's default, often) are the same
 /// image: their spread is zero, and every pixel that differs from the reference at all
 /// would fail. Two identical candidates are refused, naming them.
-fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), String> {
+fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), ImageError> {
     // Black images are the same whatever the seed: they have no noise to hide, and a
     // black candidate is compared (and differs from any reference that is not black).
     if means
@@ -179,22 +179,22 @@ fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), S
     }
     let same: Vec<usize> = (1..means.len()).filter(|&j| means[j] == means[0]).collect();
     if same.len() + 1 == means.len() {
-        return Err(format!(
+        return Err(ImageError::Mismatch(format!(
             "these {} images are identical ({} ... {}): their spread says nothing of their noise. \
              Render each with a different seed (Mitsuba: `mi.render(scene, seed=k)` or \
              `<integer name=\"seed\" value=\"k\"/>` in the sampler; raylemma: --seed k)",
             means.len(),
             paths[0].display(),
             paths[paths.len() - 1].display()
-        ));
+        )));
     }
     for i in 0..means.len() {
         if let Some(j) = (i + 1..means.len()).find(|&j| means[i] == means[j]) {
-            return Err(format!(
+            return Err(ImageError::Mismatch(format!(
                 "{} and {} are the same image: render each candidate with a different seed",
                 paths[i].display(),
                 paths[j].display()
-            ));
+            )));
         }
     }
     Ok(())
@@ -202,9 +202,12 @@ fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), S
 
 /// `Ok(true)`: agree, `Ok(false)`: differ; an error is returned for bad input (exit
 /// status 2).
-fn compare_files(args: &CompareArgs) -> Result<bool, String> {
+fn compare_files(args: &CompareArgs) -> Result<bool, ImageError> {
     if !(args.alpha > 0.0 && args.alpha < 1.0) {
-        return Err(format!("--alpha {} must be in (0, 1)", args.alpha));
+        return Err(ImageError::Parameter(format!(
+            "--alpha {} must be in (0, 1)",
+            args.alpha
+        )));
     }
     let reference = reference(&args.reference)?;
     let size = (reference.image.width, reference.image.height);
@@ -219,8 +222,7 @@ fn compare_files(args: &CompareArgs) -> Result<bool, String> {
     }
     if let Some(path) = &args.diff {
         let Image { width, height, .. } = reference.image;
-        raylemma::spectral::display::write_png(path, width, height, &compare::difference_rgb8(&c))
-            .map_err(|e| e.to_string())?;
+        raylemma::spectral::display::write_png(path, width, height, &compare::difference_rgb8(&c))?;
         println!("difference image: {}", path.display());
     }
     Ok(c.agree())

@@ -223,7 +223,7 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
         Ok((reference, candidate, c))
     });
     match result {
-        Err(e) => row("error", e),
+        Err(e) => row("error", e.to_string()),
         Ok((reference, candidate, c)) => {
             let diagnosis = if c.agree() {
                 Vec::new()

@@ -27,7 +27,7 @@ use glam::DVec3;
 use statrs::distribution::{ContinuousCDF, StudentsT};
 use statrs::function::erf::erfc_inv;
 
-use super::image::Image;
+use super::image::{Image, ImageError};
 use crate::spectral::display;
 use crate::stats::welford::Welford;
 use crate::stats::{sidak, ttest};
@@ -80,22 +80,26 @@ impl Estimate {
     /// with `K - 1` degrees of freedom.
     ///
     /// # Errors
-    /// Fewer than two images, or an image of another size than `width` by `height` (its
-    /// index in `means`).
-    pub fn from_spread(width: u32, height: u32, means: &[&[DVec3]]) -> Result<Estimate, String> {
+    /// [`ImageError::Mismatch`]: fewer than two images, or an image of another size than
+    /// `width` by `height` (its index in `means`).
+    pub fn from_spread(
+        width: u32,
+        height: u32,
+        means: &[&[DVec3]],
+    ) -> Result<Estimate, ImageError> {
         let k = means.len();
         if k < 2 {
-            return Err(format!(
+            return Err(ImageError::Mismatch(format!(
                 "{k} image: the spread of independent images needs at least 2"
-            ));
+            )));
         }
         let n = width as usize * height as usize;
         if let Some(i) = means.iter().position(|m| m.len() != n) {
-            return Err(format!(
+            return Err(ImageError::Mismatch(format!(
                 "image {} has {} pixels, not {width}x{height}",
                 i + 1,
                 means[i].len()
-            ));
+            )));
         }
         let mut acc = vec![Welford::<DVec3>::default(); n];
         for image in means {
@@ -404,26 +408,29 @@ pub fn region_dof(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
 /// all of them.
 ///
 /// # Errors
-/// If the sizes differ, `alpha` is not in (0, 1), a degree of freedom is not positive, a
-/// mean is not finite or a variance is NaN, negative or infinite (a render with one
-/// sample per pixel has no variance).
-pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, String> {
+/// If the sizes differ ([`ImageError::Mismatch`]), `alpha` is not in (0, 1) or a degree
+/// of freedom is not positive ([`ImageError::Parameter`]), a mean is not finite or a
+/// variance is NaN, negative or infinite (a render with one sample per pixel has no
+/// variance; [`ImageError::Pixels`]).
+pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, ImageError> {
     let (ia, ib) = (&a.image, &b.image);
     if (ia.width, ia.height) != (ib.width, ib.height) {
-        return Err(format!(
+        return Err(ImageError::Mismatch(format!(
             "the images have different sizes: {}x{} and {}x{}",
             ia.width, ia.height, ib.width, ib.height
-        ));
+        )));
     }
     if !(alpha > 0.0 && alpha < 1.0) {
-        return Err(format!("alpha = {alpha} must be in (0, 1)"));
+        return Err(ImageError::Parameter(format!(
+            "alpha = {alpha} must be in (0, 1)"
+        )));
     }
     for (name, e) in [("first", a), ("second", b)] {
         if e.dof.is_nan() || e.dof <= 0.0 {
-            return Err(format!(
+            return Err(ImageError::Parameter(format!(
                 "the {name} image's degrees of freedom, {}, must be > 0",
                 e.dof
-            ));
+            )));
         }
         check_values(&e.image, name)?;
     }
@@ -562,18 +569,18 @@ fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64, (f64, f6
 
 /// Refuses an image with a mean that is not finite or a variance that is not a finite
 /// number `>= 0`, naming the first such pixel.
-fn check_values(img: &Image, name: &str) -> Result<(), String> {
+fn check_values(img: &Image, name: &str) -> Result<(), ImageError> {
     for (i, (m, v)) in img.mean.iter().zip(&img.var).enumerate() {
         let (x, y) = (i as u32 % img.width, i as u32 / img.width);
         if !m.is_finite() {
-            return Err(format!(
+            return Err(ImageError::Pixels(format!(
                 "the {name} image's pixel ({x}, {y}) is {m}, not finite"
-            ));
+            )));
         }
         if !(v.is_finite() && v.min_element() >= 0.0) {
-            return Err(format!(
+            return Err(ImageError::Pixels(format!(
                 "the {name} image's pixel ({x}, {y}) has variance {v}: a variance image needs at least 2 samples per pixel"
-            ));
+            )));
         }
     }
     Ok(())
@@ -584,7 +591,7 @@ fn check_values(img: &Image, name: &str) -> Result<(), String> {
 ///
 /// # Errors
 /// As [`compare`].
-pub fn compare_images(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, String> {
+pub fn compare_images(a: &Image, b: &Image, alpha: f64) -> Result<Comparison, ImageError> {
     compare(
         &Estimate::from_variance(a.clone()),
         &Estimate::from_variance(b.clone()),

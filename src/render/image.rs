@@ -83,9 +83,14 @@ pub enum ImageError {
     /// The OpenEXR or PNG encoder failed, or there is nothing to draw.
     Encode(String),
     /// Images that do not go together (a window outside its image, a reference of another
-    /// size than its scene), or renders that cannot be merged (different scenes, sizes,
-    /// builds or seeds in common, or too few of them).
+    /// size than its scene), renders that cannot be merged (different scenes, sizes,
+    /// builds or seeds in common, or too few of them), or images that cannot be compared
+    /// (of different sizes, a reference without its variance, a single plain candidate,
+    /// candidates that are the same image).
     Mismatch(String),
+    /// A parameter of a computation on images outside its range: a comparison's level
+    /// `alpha` not in (0, 1), an estimate's degrees of freedom not `> 0`.
+    Parameter(String),
 }
 
 impl ImageError {
@@ -98,6 +103,7 @@ impl ImageError {
             ImageError::Pixels(m) => ImageError::Pixels(prefix(m)),
             ImageError::Encode(m) => ImageError::Encode(prefix(m)),
             ImageError::Mismatch(m) => ImageError::Mismatch(prefix(m)),
+            ImageError::Parameter(m) => ImageError::Parameter(prefix(m)),
             e @ (ImageError::File(_) | ImageError::Sidecar(_)) => e,
         }
     }
@@ -114,7 +120,8 @@ impl std::fmt::Display for ImageError {
             ImageError::Header(m)
             | ImageError::Pixels(m)
             | ImageError::Encode(m)
-            | ImageError::Mismatch(m) => f.write_str(m),
+            | ImageError::Mismatch(m)
+            | ImageError::Parameter(m) => f.write_str(m),
         }
     }
 }

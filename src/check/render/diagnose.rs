@@ -26,7 +26,7 @@ use glam::{DVec2, DVec3};
 
 use crate::render::camera::Camera;
 use crate::render::compare::{Comparison, Estimate, compare};
-use crate::render::image::Image;
+use crate::render::image::{Image, ImageError};
 use crate::render::scene::{Scene, Surface};
 
 /// The fraction of the failing tests, and of the excess of the blocks' `Σ z²`, a
@@ -69,7 +69,7 @@ pub fn diagnose(
             ),
         ));
     }
-    let mut judge = |undone: Result<Comparison, String>, what: String| {
+    let mut judge = |undone: Result<Comparison, ImageError>, what: String| {
         if let Ok(c) = undone {
             let (fail, left) = (failures(&c), excess(&c) / excess0);
             if c.agree() {

@@ -17,7 +17,7 @@ use rayon::prelude::*;
 use super::{Output, Record, Settings};
 use crate::timing::quick_note;
 use raylemma::render::compare::{Estimate, compare};
-use raylemma::render::image::Image;
+use raylemma::render::image::{Image, ImageError};
 use raylemma::render::{self, Progress};
 use raylemma::stats::binomial::wilson;
 
@@ -58,7 +58,7 @@ struct Counts {
 type Outcome = (bool, bool, [bool; 2], f64);
 
 /// One trial: the outcome of each candidate set.
-fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, String> {
+fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, ImageError> {
     let seeded = |seed: u64| {
         let mut s = scene.clone();
         s.settings.seed = seed;
@@ -76,7 +76,7 @@ fn trial(scene: &raylemma::render::Scene, k: u64) -> Result<Vec<Outcome>, String
     let one = render::render(&seeded(base + 50), 16 * CANDIDATE_SPP, Progress::Silent);
     let mut out = Vec::new();
     for &set in &SETS {
-        let candidate = |gain: f64| -> Result<Estimate, String> {
+        let candidate = |gain: f64| -> Result<Estimate, ImageError> {
             if set == 0 {
                 let mut image = one.clone();
                 for m in &mut image.mean {
@@ -235,8 +235,7 @@ fn calibrate(settings: &Settings, name: &str, trials: u64) -> anyhow::Result<[Co
     let results: Vec<Vec<Outcome>> = (0..trials)
         .into_par_iter()
         .map(|k| trial(&scene, k))
-        .collect::<Result<_, _>>()
-        .map_err(anyhow::Error::msg)?;
+        .collect::<Result<_, _>>()?;
     let mut counts = [Counts::default(); SETS.len()];
     for r in &results {
         for (c, &(fa, nfa, det, z2)) in counts.iter_mut().zip(r) {

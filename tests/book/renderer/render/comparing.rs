@@ -54,12 +54,14 @@ fn compare_refuses_images_it_cannot_judge() {
     assert!(
         compare(&a, &b, 0.01)
             .unwrap_err()
+            .to_string()
             .contains("different sizes")
     );
     let one = render(&s, 1, Progress::Silent);
     assert!(
         compare(&a, &one, 0.01)
             .unwrap_err()
+            .to_string()
             .contains("at least 2 samples")
     );
     assert!(compare(&a, &a, 0.0).is_err());
