@@ -43,15 +43,18 @@ pub fn is_twin(text: &str) -> bool {
     text.contains("use super::precision::")
 }
 
-/// The first line of a stub in a file compiled twice ([`is_twin`]): a body written with
+/// The first lines of a stub in a file compiled twice ([`is_twin`]): a body written with
 /// `f64` types compiles for the first precision and fails for the second, in an error that
 /// does not say why.
-pub fn twin_note(indent: &str) -> String {
-    format!(
-        "{indent}    // This file is compiled twice: for f64, and for f32 as its twin in \
-         src/single.rs. Write the body with Float, V2, V3 and consts::, not f64, DVec3 or \
-         std::f64: an error that expects f32 (or names `single::`) is the f32 twin's."
-    )
+pub fn twin_note(indent: &str) -> Vec<String> {
+    [
+        "// This file is compiled twice: for f64, and for f32 as its twin in src/single.rs.",
+        "// Write the body with Float, V2, V3 and consts::, not f64, DVec3 or std::f64: an",
+        "// error that expects f32 (or names `single::`) is the f32 twin's.",
+    ]
+    .iter()
+    .map(|line| format!("{indent}    {line}"))
+    .collect()
 }
 
 /// `text` (the file of `markers`, which must all be in it) with every marked body
@@ -62,7 +65,9 @@ pub fn stub_file(text: &str, markers: &[Marker]) -> (String, Vec<Removed>) {
     replace_bodies(text, markers, |m| {
         let stub = stub_line(&m.indent, &m.name);
         if twin {
-            vec![twin_note(&m.indent), stub]
+            let mut lines = twin_note(&m.indent);
+            lines.push(stub);
+            lines
         } else {
             vec![stub]
         }
