@@ -199,6 +199,8 @@ fn twins_md(md: &mut String, rec: &mut Record, seeds: u64) -> anyhow::Result<()>
     )?;
     writeln!(md, "|---|---|---|---:|---:|---:|")?;
     let options = |s: u64| Options::default().seed(0x7_1A5 + s);
+    // The tests hold each asserted twin to every seed of this count.
+    rec.number("twins.seeds", seeds as f64, "int");
     // (mistake, scene, seeds that rejected it), for the chapter's claims.
     let mut results: Vec<(&str, String, u64)> = Vec::new();
     for (check, what, twin) in twins() {
