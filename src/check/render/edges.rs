@@ -297,13 +297,19 @@ pub fn occluder_on_light(p: DVec3, occluder: &Rect, light: &Rect) -> Rect {
     }
 }
 
+/// The part of the rectangle `light` that `occluder` hides from the floor point `p`: the
+/// overlap of the light and the occluder's shadow on it ([`occluder_on_light`]), or
+/// `None`.
+fn hidden(p: DVec3, light: &Rect, occluder: &Rect) -> Option<Rect> {
+    light.and(&occluder_on_light(p, occluder, light))
+}
+
 /// The irradiance at the floor point `p` (normal `+y`) from the rectangle `light` of unit
 /// radiance, less what `occluder` hides: Lambert's formula for the light, less Lambert's
 /// formula for the overlap of the light and the occluder's shadow on it.
 pub fn unoccluded_irradiance(p: DVec3, light: &Rect, occluder: &Rect) -> f64 {
     let whole = polygon_irradiance(p, DVec3::Y, &light.corners(), 1.0);
-    let hidden = light
-        .and(&occluder_on_light(p, occluder, light))
+    let hidden = hidden(p, light, occluder)
         .map_or(0.0, |o| polygon_irradiance(p, DVec3::Y, &o.corners(), 1.0));
     whole - hidden
 }
@@ -312,9 +318,7 @@ pub fn unoccluded_irradiance(p: DVec3, light: &Rect, occluder: &Rect) -> f64 {
 /// `occluder`.
 pub fn visible_share(p: DVec3, light: &Rect, occluder: &Rect) -> f64 {
     let size = |r: &Rect| (r.x[1] - r.x[0]) * (r.z[1] - r.z[0]);
-    let hidden = light
-        .and(&occluder_on_light(p, occluder, light))
-        .map_or(0.0, |o| size(&o));
+    let hidden = hidden(p, light, occluder).map_or(0.0, |o| size(&o));
     1.0 - hidden / size(light)
 }
 

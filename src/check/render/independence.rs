@@ -20,14 +20,17 @@
 //! one number per sample. A render from it is the renderer's code with numbers that are
 //! independent by construction, so the renderer's own assignment must agree with it
 //! ([`independence`]), on scenes where a dependence shows: the scenes of edges and the floor
-//! under two lights. [`Reused`] is the planted twin: a source that gives one dimension the
-//! number of another.
+//! under two lights. [`Dimensions::reusing`] is the planted twin: a source that gives one
+//! dimension the number of another.
 
 use rand::TryRng;
 use rand::rand_core::Infallible;
+use rand::rand_core::utils::fill_bytes_via_next_word;
 
 use super::pool::{self, Expected};
-use super::{ExactScene, Options, Rendered, Renderer, SEED, Verdict, edge_scenes, judge, scenes};
+use super::{
+    ExactScene, Options, Rendered, Renderer, SEED, Verdict, edge_scenes, judge, scaled_spp, scenes,
+};
 use crate::render::image::Image;
 use crate::render::pixel::PixelNumbers;
 use crate::render::render_from;
@@ -45,14 +48,18 @@ fn mix(mut z: u64) -> u64 {
 
 /// A pixel's numbers with one stream per sample dimension: dimension `k` of pixel `pixel`
 /// for `seed` is drawn from its own PCG-64, whose state and stream are hashes of all
-/// three (by SplitMix64's finaliser), so that no two dimensions or pixels share a generator or start from
-/// related states.
+/// three (by SplitMix64's finaliser), so that no two dimensions or pixels share a generator
+/// or start from related states. Built by [`Dimensions::reusing`], it is the planted twin
+/// instead: one dimension gets the number of another.
 #[derive(Clone, Debug)]
 pub struct Dimensions {
     seed: u64,
     pixel: u64,
     streams: Vec<Rng>,
     next: usize,
+    /// The planted twin's `(from, to)`, and the number `from` drew in this sample.
+    reuse: Option<(usize, usize)>,
+    kept: u64,
 }
 
 impl Dimensions {
@@ -63,6 +70,22 @@ impl Dimensions {
             pixel,
             streams: Vec::new(),
             next: 0,
+            reuse: None,
+            kept: 0,
+        }
+    }
+
+    /// The planted twin: [`Dimensions::new`] except that dimension `to` gets the number of
+    /// dimension `from` (`from < to`) of the same sample, the mistake of a sampler whose
+    /// dimension counter does not advance between two uses.
+    pub fn reusing(seed: u64, pixel: u64, from: usize, to: usize) -> Self {
+        assert!(
+            from < to,
+            "Dimensions::reusing: dimension {to} can reuse only an earlier one"
+        );
+        Dimensions {
+            reuse: Some((from, to)),
+            ..Dimensions::new(seed, pixel)
         }
     }
 
@@ -74,7 +97,8 @@ impl Dimensions {
         Rng::new(u128::from(a) << 64 | u128::from(b), u128::from(c))
     }
 
-    /// The next number of the sample: its dimension `self.next`.
+    /// The next number of the sample: its dimension `self.next` (or, for the twin's `to`,
+    /// the number its `from` drew).
     fn draw(&mut self) -> u64 {
         let k = self.next;
         while self.streams.len() <= k {
@@ -82,15 +106,15 @@ impl Dimensions {
             self.streams.push(Self::stream(self.seed, self.pixel, n));
         }
         self.next += 1;
-        rand::Rng::next_u64(&mut self.streams[k])
-    }
-}
-
-/// `u32`s and bytes from the `u64`s of `draw` (as PCG-64 does).
-fn try_fill(draw: &mut impl FnMut() -> u64, dst: &mut [u8]) {
-    for chunk in dst.chunks_mut(8) {
-        let bytes = draw().to_le_bytes();
-        chunk.copy_from_slice(&bytes[..chunk.len()]);
+        let v = rand::Rng::next_u64(&mut self.streams[k]);
+        match self.reuse {
+            Some((from, _)) if k == from => {
+                self.kept = v;
+                v
+            }
+            Some((_, to)) if k == to => self.kept,
+            _ => v,
+        }
     }
 }
 
@@ -106,8 +130,7 @@ impl TryRng for Dimensions {
     }
 
     fn try_fill_bytes(&mut self, dst: &mut [u8]) -> Result<(), Infallible> {
-        try_fill(&mut || self.draw(), dst);
-        Ok(())
+        fill_bytes_via_next_word(dst, || Ok(self.draw()))
     }
 }
 
@@ -117,75 +140,17 @@ impl PixelNumbers for Dimensions {
     }
 }
 
-/// The planted twin: [`Dimensions`] except that dimension `to` gets the number of dimension
-/// `from` (`from < to`) of the same sample, the mistake of a sampler whose dimension
-/// counter does not advance between two uses.
-#[derive(Clone, Debug)]
-pub struct Reused {
-    inner: Dimensions,
-    from: usize,
-    to: usize,
-    kept: u64,
-}
-
-impl Reused {
-    /// The source of pixel `pixel` for `seed`, dimension `to` reusing dimension `from`.
-    pub fn new(seed: u64, pixel: u64, from: usize, to: usize) -> Self {
-        assert!(
-            from < to,
-            "Reused: dimension {to} can reuse only an earlier one"
-        );
-        Reused {
-            inner: Dimensions::new(seed, pixel),
-            from,
-            to,
-            kept: 0,
-        }
-    }
-
-    fn draw(&mut self) -> u64 {
-        let k = self.inner.next;
-        let v = self.inner.draw();
-        if k == self.from {
-            self.kept = v;
-        }
-        if k == self.to { self.kept } else { v }
-    }
-}
-
-impl TryRng for Reused {
-    type Error = Infallible;
-
-    fn try_next_u32(&mut self) -> Result<u32, Infallible> {
-        Ok((self.draw() >> 32) as u32)
-    }
-
-    fn try_next_u64(&mut self) -> Result<u64, Infallible> {
-        Ok(self.draw())
-    }
-
-    fn try_fill_bytes(&mut self, dst: &mut [u8]) -> Result<(), Infallible> {
-        try_fill(&mut || self.draw(), dst);
-        Ok(())
-    }
-}
-
-impl PixelNumbers for Reused {
-    fn start_sample(&mut self) {
-        self.inner.start_sample();
-    }
-}
-
 /// The renderer's code with independent dimensions ([`Dimensions`]).
 pub fn independent(scene: &Scene) -> Image {
     render_from(scene, scene.settings.spp, &Dimensions::new)
 }
 
-/// The renderer's code with dimension `to` reusing dimension `from` ([`Reused`]).
+/// The renderer's code with dimension `to` reusing dimension `from`
+/// ([`Dimensions::reusing`]).
 pub fn reused(from: usize, to: usize) -> impl Fn(&Scene) -> Image + Sync {
     move |scene| {
         render_from(scene, scene.settings.spp, &|seed, pixel| {
-            Reused::new(seed, pixel, from, to)
+            Dimensions::reusing(seed, pixel, from, to)
         })
     }
 }
@@ -202,10 +167,9 @@ pub const TWINS: [(&str, usize, usize); 2] = [
 /// edges ([`edge_scenes`]) and the floor under two lights.
 pub fn independence_scenes(scale: f64) -> Vec<ExactScene> {
     let mut list = edge_scenes(scale);
-    let spp = ((512.0 * scale).round() as u32).max(2);
     list.push(ExactScene {
         name: "floor under two lights".into(),
-        scene: scenes::floor_under_two_lights(32, spp),
+        scene: scenes::floor_under_two_lights(32, scaled_spp(512, scale)),
         expected: super::exact::direct,
         block: pool::BLOCK,
     });

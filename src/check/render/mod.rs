@@ -138,9 +138,9 @@ pub const DIRECT_VARIANTS: [(&str, DirectLight); 4] = [
     ("BSDF sampling only", DirectLight::Bsdf),
 ];
 
-/// The exact scenes at the tests' sizes, seed `seed`, each at its own samples per pixel
-/// (chosen so that a global bias of about half a percent is detected where the noise
-/// allows it) times `scale`:
+/// The exact scenes at the tests' sizes, each at its own samples per pixel (chosen so
+/// that a global bias of about half a percent is detected where the noise allows it)
+/// times `scale` ([`scaled_spp`]); [`render_exact_of`] sets their seed:
 ///
 /// * the floor under the quad light, under the sphere light, under the sphere light and
 ///   a quad light that emits away from it, and under both lights with every
@@ -150,8 +150,8 @@ pub const DIRECT_VARIANTS: [(&str, DirectLight); 4] = [
 /// * the glass sphere, the mirror sphere and the thin film in the sky;
 /// * the scenes of edges ([`edge_scenes`]), and some of them with other strategies
 ///   ([`edge_strategy_scenes`]).
-pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
-    let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
+pub fn exact_scenes(scale: f64) -> Vec<ExactScene> {
+    let spp = |own| scaled_spp(own, scale);
     let mut list = vec![
         ExactScene {
             name: "floor under a quad light".into(),
@@ -212,17 +212,20 @@ pub fn exact_scenes(scale: f64, seed: u64) -> Vec<ExactScene> {
     ]);
     list.extend(edge_scenes(scale));
     list.extend(edge_strategy_scenes(scale));
-    for s in &mut list {
-        s.scene.settings.seed = seed;
-    }
     list
+}
+
+/// A scene's own samples per pixel `own` times `scale` (the checks' `options.cases`
+/// percentage), rounded, and at least 2 (a variance needs two samples).
+pub fn scaled_spp(own: u32, scale: f64) -> u32 {
+    ((f64::from(own) * scale).round() as u32).max(2)
 }
 
 /// The scenes of edges ([`mod@edges`]) at the tests' sizes, each at its own samples per
 /// pixel times `scale`: two lights seen directly, a red quad in a sky, the shadows of two
 /// lights.
 pub fn edge_scenes(scale: f64) -> Vec<ExactScene> {
-    let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
+    let spp = |own| scaled_spp(own, scale);
     vec![
         ExactScene {
             name: "edges of two lights seen directly".into(),
@@ -253,7 +256,7 @@ pub fn edge_scenes(scale: f64) -> Vec<ExactScene> {
 /// red quad with the hero's four wavelengths (the scene's own is one wavelength), each at
 /// its own samples per pixel times `scale`.
 pub fn edge_strategy_scenes(scale: f64) -> Vec<ExactScene> {
-    let spp = |own: u32| ((f64::from(own) * scale).round() as u32).max(2);
+    let spp = |own| scaled_spp(own, scale);
     let mut list = Vec::new();
     for (name, direct, own) in [
         ("light sampling only", DirectLight::Light, 256),
@@ -314,7 +317,7 @@ pub fn judge(subject: &str, rendered: &[Rendered], level: f64) -> Verdict {
 /// The exact scenes ([`exact_scenes`], `options.cases` percent of their samples, default
 /// 100) rendered by `renderer`, each with its expected image.
 pub fn render_exact(renderer: Renderer, options: &Options) -> Vec<Rendered> {
-    let list = exact_scenes(options.cases_or(100) as f64 / 100.0, options.seed_or(SEED));
+    let list = exact_scenes(options.cases_or(100) as f64 / 100.0);
     render_exact_of(renderer, list, options)
 }
 

@@ -469,14 +469,11 @@ fn the_shadow_s_quadrature_is_far_below_the_noise() {
     );
 }
 
-#[test]
-fn edges_reject_a_footprint_half_a_pixel_off() {
-    let planted = planted::shifted_half_a_pixel(&ours);
-    let v = judge(
-        "planted: footprint half a pixel off",
-        &render::render_exact_of(&planted, render::edge_scenes(1.0), &Options::default()),
-        test_alpha(),
-    );
+/// The scenes of edges rendered by `planted` must each fail their block test.
+fn assert_edges_reject(planted: render::Renderer, what: &str) {
+    let list = render::edge_scenes(1.0);
+    let images = render::render_exact_of(planted, list, &Options::default());
+    let v = judge(&format!("planted: {what}"), &images, test_alpha());
     for name in EDGES {
         assert!(
             v.failed(&format!("{name}: blocks")),
@@ -486,19 +483,16 @@ fn edges_reject_a_footprint_half_a_pixel_off() {
 }
 
 #[test]
-fn edges_reject_a_footprint_twice_as_wide() {
-    let planted = planted::twice_as_wide(&ours);
-    let v = judge(
-        "planted: footprint twice as wide",
-        &render::render_exact_of(&planted, render::edge_scenes(1.0), &Options::default()),
-        test_alpha(),
+fn edges_reject_a_footprint_half_a_pixel_off() {
+    assert_edges_reject(
+        &planted::shifted_half_a_pixel(&ours),
+        "footprint half a pixel off",
     );
-    for name in EDGES {
-        assert!(
-            v.failed(&format!("{name}: blocks")),
-            "{name} missed it:\n{v}"
-        );
-    }
+}
+
+#[test]
+fn edges_reject_a_footprint_twice_as_wide() {
+    assert_edges_reject(&planted::twice_as_wide(&ours), "footprint twice as wide");
 }
 
 // ---- Independent dimensions (`src/check/render/independence.rs`) ----
