@@ -49,7 +49,7 @@ fn check_finite(samples: &[f64], what: &'static str) -> Result<(), StatsError> {
 
 fn sorted(samples: &[f64]) -> Vec<f64> {
     let mut v = samples.to_vec();
-    v.sort_by(f64::total_cmp);
+    v.sort_unstable_by(f64::total_cmp);
     v
 }
 
