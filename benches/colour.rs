@@ -3,7 +3,7 @@
 //! over 4096 uniform wavelengths, and µs per XYZ of a spectrum (D65, a blackbody) with
 //! each.
 //!
-//! Run with `cargo bench --bench colour`.
+//! Run with `cargo bench -p raylemma-bench --bench colour`.
 
 use std::hint::black_box;
 

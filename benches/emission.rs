@@ -3,7 +3,7 @@
 //! proposal, on the same random numbers that `cargo run --release` times for the book
 //! (`figures/emission_speed.md`).
 //!
-//! Run with `cargo bench --bench emission`.
+//! Run with `cargo bench -p raylemma-bench --bench emission`.
 
 use std::hint::black_box;
 

@@ -4,7 +4,7 @@
 //! glass, over the same 4096 cosines that `cargo run --release` times for the book
 //! (`raylemma::workload::timing_cosines`).
 //!
-//! Run with `cargo bench --bench optics`.
+//! Run with `cargo bench -p raylemma-bench --bench optics`.
 
 use raylemma::sampling::sphere::sphere_uniform;
 use std::hint::black_box;

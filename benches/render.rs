@@ -9,7 +9,7 @@
 //! instructions, `figures/render_profile.md`) and `tracer/radiance` (whole paths through
 //! those pixels, one per pixel, at the scene's hero wavelengths).
 //!
-//! Run with `cargo bench --bench render`.
+//! Run with `cargo bench -p raylemma-bench --bench render`.
 
 use std::path::Path;
 

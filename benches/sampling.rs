@@ -1,5 +1,5 @@
 //! Criterion benchmark of the sampling chapters: ns per sample for every sphere,
-//! hemisphere, disc and cosine method (`cargo bench --bench sampling`). The book's table
+//! hemisphere, disc and cosine method (`cargo bench -p raylemma-bench --bench sampling`). The book's table
 //! (`figures/sampling_methods.md`) times the same functions with the quick harness.
 
 use std::hint::black_box;

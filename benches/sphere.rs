@@ -2,7 +2,7 @@
 //! the textbook and the stable form, in f32 and f64, over the same 4096 rays that
 //! `cargo run --release` times for the book (`raylemma::workload::timing_rays`).
 //!
-//! Run with `cargo bench --bench sphere`.
+//! Run with `cargo bench -p raylemma-bench --bench sphere`.
 
 use std::hint::black_box;
 

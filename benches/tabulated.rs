@@ -4,7 +4,7 @@
 //! same inputs that `cargo run --release` times for the book
 //! (`figures/tabulated_speed.md`, `figures/frame_speed.md`).
 //!
-//! Run with `cargo bench --bench tabulated`.
+//! Run with `cargo bench -p raylemma-bench --bench tabulated`.
 
 use std::hint::black_box;
 

@@ -2,7 +2,7 @@
 //! generate the lanes of one path per strategy, on the same uniform numbers that
 //! `cargo run --release -- figures` times for the book (`figures/wavelength_speed.md`).
 //!
-//! Run with `cargo bench --bench wavelength`.
+//! Run with `cargo bench -p raylemma-bench --bench wavelength`.
 
 use std::hint::black_box;
 

@@ -1,5 +1,5 @@
 //! The fixed inputs that the book's speed tables (`cargo run --release`, the figures job)
-//! and the criterion benches (`cargo bench`) both time, so that the two measure the same
+//! and the criterion benches (`cargo bench -p raylemma-bench`) both time, so that the two measure the same
 //! work. Each is drawn from its own fixed seed.
 
 use crate::sampling::sphere::sphere_uniform;

@@ -314,7 +314,8 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
 }
 
 /// The edition's `Cargo.toml`, from this crate's (`original`): the same library,
-/// binary, dependencies and profiles, without the benches and criterion, with a workspace
+/// binary, dependencies and profiles (the benches are a workspace member of their own,
+/// which the edition does not ship), with a workspace
 /// of the crate and (if shipped, `with_book`) the book builder, and a package name of its
 /// own, `raylemma-hand-out` or `raylemma-solutions` (the library and the binary keep the
 /// name `raylemma`).
@@ -338,24 +339,20 @@ pub fn manifest(original: &str, with_book: bool, kind: Kind) -> String {
         let t = line.trim();
         if t.starts_with('[') {
             section = t.to_string();
-            skipping = section == "[[bench]]";
+            skipping = false;
             if section == "[workspace]" {
                 skipping = true;
                 out.push_str(&format!(
                     "[workspace]\n# `cargo test` tests this crate only; the book builder (tools/book: mdBook and\n# KaTeX) is built on demand, by `cargo run --release -p raylemma-book -- --root .`.\nmembers = {members}\ndefault-members = [\".\"]\n\n"
                 ));
             }
-        } else if t.is_empty() && section == "[[bench]]" {
-            skipping = false;
-            continue;
         }
-        let criterion = section == "[dev-dependencies]" && t.starts_with("criterion");
         if section == "[package]" && t.starts_with("name =") {
             out.push_str(&format!(
                 "name = \"raylemma-{}\" # its own name; the library and the binary are `raylemma`\n",
                 kind.name()
             ));
-        } else if !skipping && !criterion {
+        } else if !skipping {
             out.push_str(line);
             out.push('\n');
         }

@@ -82,6 +82,9 @@ pub enum ImageError {
     Pixels(String),
     /// The OpenEXR or PNG encoder failed, or there is nothing to draw.
     Encode(String),
+    /// A PNG that cannot be decoded, or would take more memory than allowed (the
+    /// decoder's message).
+    Decode(String),
     /// Images that do not go together (a window outside its image, a reference of another
     /// size than its scene), renders that cannot be merged (different scenes, sizes,
     /// builds or seeds in common, or too few of them), or images that cannot be compared
@@ -102,6 +105,7 @@ impl ImageError {
             ImageError::Header(m) => ImageError::Header(prefix(m)),
             ImageError::Pixels(m) => ImageError::Pixels(prefix(m)),
             ImageError::Encode(m) => ImageError::Encode(prefix(m)),
+            ImageError::Decode(m) => ImageError::Decode(prefix(m)),
             ImageError::Mismatch(m) => ImageError::Mismatch(prefix(m)),
             ImageError::Parameter(m) => ImageError::Parameter(prefix(m)),
             e @ (ImageError::File(_) | ImageError::Sidecar(_)) => e,
@@ -120,6 +124,7 @@ impl std::fmt::Display for ImageError {
             ImageError::Header(m)
             | ImageError::Pixels(m)
             | ImageError::Encode(m)
+            | ImageError::Decode(m)
             | ImageError::Mismatch(m)
             | ImageError::Parameter(m) => f.write_str(m),
         }

@@ -15,7 +15,6 @@
 //! pixel column per whole nanometre from 380 to 830 nm (451 columns), the column's value
 //! being the share of its pixels that are dark.
 
-use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
@@ -228,9 +227,11 @@ pub const IMAGE_WIDTH: u32 = 451;
 pub const IMAGE_HEIGHT: u32 = 256;
 /// The tallest spectrum image [`parse_image`] reads (16x the source's drawings).
 pub const IMAGE_MAX_HEIGHT: u32 = 4096;
-/// What decoding one image may allocate: a 451 x 4096 image of 16-bit RGBA is 14.8 MB.
-const IMAGE_MAX_BYTES: u64 = 32 << 20;
-/// A pixel is dark when its luma (Rec. 601 weights, 0-255) is below this.
+/// What decoding one image may allocate: a 451 x 4096 image decodes to at most 7.4 MB
+/// (RGBA, 8 bits a channel: 16-bit channels are cut to 8).
+const IMAGE_MAX_BYTES: usize = 32 << 20;
+/// A pixel is dark when its luma (0-255, the sRGB weights of
+/// [`display::decode_png_luma`]) is below this.
 pub const DARK_BELOW: u8 = 128;
 
 /// The wavelengths of the image columns: 380, 381, ..., 830 nm.
@@ -254,15 +255,10 @@ pub fn image_wavelengths() -> Vec<f64> {
 /// dark pixel (an empty curve has no distribution).
 pub fn parse_image(bytes: &[u8], file: &str) -> Result<Table, DataError> {
     let err = |problem: String| DataError::new(file, 0, problem);
-    let undecodable = |e: image::ImageError| err(format!("cannot decode the image: {e}"));
-    let reader = || {
-        image::ImageReader::new(std::io::Cursor::new(bytes))
-            .with_guessed_format()
-            .map_err(|e| err(format!("cannot read the image: {e}")))
-    };
+    let undecodable = |e: ImageError| err(format!("cannot decode the image: {e}"));
     // The header's size is judged before a pixel is decoded: a few hundred bytes can
     // declare an image of gigabytes.
-    let (width, height) = reader()?.into_dimensions().map_err(undecodable)?;
+    let (width, height) = display::png_size(bytes).map_err(undecodable)?;
     if width != IMAGE_WIDTH {
         return Err(err(format!(
             "the image is {width} pixels wide; it must be {IMAGE_WIDTH}, one column per \
@@ -282,17 +278,11 @@ pub fn parse_image(bytes: &[u8], file: &str) -> Result<Table, DataError> {
             1.0 / f64::from(IMAGE_MAX_HEIGHT)
         )));
     }
-    let mut reader = reader()?;
-    let mut limits = image::Limits::default();
-    limits.max_image_width = Some(IMAGE_WIDTH);
-    limits.max_image_height = Some(IMAGE_MAX_HEIGHT);
-    limits.max_alloc = Some(IMAGE_MAX_BYTES);
-    reader.limits(limits);
-    let img = reader.decode().map_err(undecodable)?.to_luma8();
+    let img = display::decode_png_luma(bytes, IMAGE_MAX_BYTES).map_err(undecodable)?;
     let values: Vec<f64> = (0..width)
         .map(|x| {
             let dark = (0..height)
-                .filter(|&y| img.get_pixel(x, y).0[0] < DARK_BELOW)
+                .filter(|&y| img.luma[(y * width + x) as usize] < DARK_BELOW)
                 .count();
             dark as f64 / f64::from(height)
         })
@@ -340,18 +330,15 @@ pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, ImageError> {
         ));
     }
     let h = f64::from(height);
-    let mut img = image::GrayImage::from_pixel(IMAGE_WIDTH, height, image::Luma([255]));
+    let mut grey = vec![255u8; (IMAGE_WIDTH * height) as usize];
     for (x, v) in (0..IMAGE_WIDTH).zip(&values) {
         // v / max is in [0, 1], so the count is in 0..=height.
         let dark = (h * v / max).round() as u32;
         for y in height - dark..height {
-            img.put_pixel(x, y, image::Luma([0]));
+            grey[(y * IMAGE_WIDTH + x) as usize] = 0;
         }
     }
-    let mut out = Cursor::new(Vec::new());
-    img.write_to(&mut out, image::ImageFormat::Png)
-        .map_err(|e| ImageError::Encode(format!("cannot encode the PNG: {e}")))?;
-    Ok(out.into_inner())
+    display::encode_grey_png(IMAGE_WIDTH, height, &grey)
 }
 // ANCHOR_END: write_image
 

@@ -68,3 +68,52 @@ pub fn scratch_file(name: &str) -> PathBuf {
         .unwrap_or_else(|e| panic!("cannot make the scratch folder {}: {e}", dir.display()));
     dir.join(name)
 }
+
+/// A PNG read back as 8-bit RGB, for tests that look at the pixels the project wrote.
+pub struct Rgb8 {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `3 width height` bytes, row-major from the top.
+    pub bytes: Vec<u8>,
+}
+
+impl Rgb8 {
+    /// The pixel at column `x`, row `y` (from the top).
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
+        let i = 3 * (y * self.width + x) as usize;
+        [self.bytes[i], self.bytes[i + 1], self.bytes[i + 2]]
+    }
+
+    /// Every pixel, row-major.
+    pub fn pixels(&self) -> impl Iterator<Item = [u8; 3]> + '_ {
+        self.bytes.chunks_exact(3).map(|p| [p[0], p[1], p[2]])
+    }
+}
+
+/// Reads the PNG at `path` with the `png` crate (palette and grey expanded, 16 bits cut to
+/// 8); panics, naming the file, if it is not an RGB or grey PNG.
+pub fn read_png(path: &Path) -> Rgb8 {
+    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::normalize_to_color8());
+    let mut reader = decoder
+        .read_info()
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut buf = vec![0; reader.output_buffer_size().expect("a PNG of a sane size")];
+    let frame = reader
+        .next_frame(&mut buf)
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let data = &buf[..frame.buffer_size()];
+    let bytes = match frame.color_type {
+        png::ColorType::Rgb => data.to_vec(),
+        png::ColorType::Grayscale => data.iter().flat_map(|&g| [g, g, g]).collect(),
+        other => panic!("{}: a {other:?} PNG", path.display()),
+    };
+    Rgb8 {
+        width: frame.width,
+        height: frame.height,
+        bytes,
+    }
+}

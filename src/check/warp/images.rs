@@ -61,11 +61,14 @@ pub(super) fn write_failure_images(
         256usize.div_ceil(cols.max(1)),
         256usize.div_ceil(rows.max(1)),
     );
-    let image = |value: &dyn Fn(usize) -> [u8; 3]| {
-        image::RgbImage::from_fn((cols * sx) as u32, (rows * sy) as u32, |x, y| {
-            let (i, j) = (rows - 1 - y as usize / sy, x as usize / sx);
-            image::Rgb(value(i * cols + j))
-        })
+    let (width, height) = (cols * sx, rows * sy);
+    // RGB bytes, row-major from the top: the image's row `y` is the cells' row
+    // `rows - 1 - y / sy`, so that the first coordinate increases upwards.
+    let image = |value: &dyn Fn(usize) -> [u8; 3]| -> Vec<u8> {
+        (0..height)
+            .flat_map(|y| (0..width).map(move |x| (rows - 1 - y / sy, x / sx)))
+            .flat_map(|(i, j)| value(i * cols + j))
+            .collect()
     };
     let grey = |v: f64| {
         let g = (255.0 * (v / max).clamp(0.0, 1.0)) as u8;
@@ -73,8 +76,8 @@ pub(super) fn write_failure_images(
     };
     // The three images land together (the project's one writer), never half of them.
     let mut files = crate::output::FileSet::new();
-    let mut stage = |name: &str, img: image::RgbImage| {
-        let png = crate::spectral::display::encode_png(img.width(), img.height(), img.as_raw());
+    let mut stage = |name: &str, rgb8: Vec<u8>| {
+        let png = crate::spectral::display::encode_png(width as u32, height as u32, &rgb8);
         png.ok()
             .and_then(|bytes| files.write(&dir.join(name), &bytes).ok())
     };

@@ -54,7 +54,7 @@ mod writing;
 
 /// A whole crate in memory: the fixture's source, a summary, a manifest and `test`.
 fn crate_with(test: &str) -> Vec<File> {
-    let manifest = "[package]\nname = \"raylemma\"\n\n[lib]\ntest = false\n\n[workspace]\nmembers = [\".\", \"tools/book\", \"tools/figures\"]\nexclude = [\"fuzz\"]\n\n[dev-dependencies]\napprox = \"0.5\"\ncriterion = \"0.8\"\n\n[[bench]]\nname = \"sphere\"\nharness = false\n\n[profile.test]\nopt-level = 2\n";
+    let manifest = "[package]\nname = \"raylemma\"\nautobenches = false\n\n[lib]\ntest = false\n\n[workspace]\nmembers = [\".\", \"benches\", \"tools/book\", \"tools/figures\"]\nexclude = [\"fuzz\"]\n\n[dev-dependencies]\napprox = \"0.5\"\n\n[profile.test]\nopt-level = 2\n";
     vec![
         File {
             path: "Cargo.toml".into(),

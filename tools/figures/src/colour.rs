@@ -513,7 +513,7 @@ fn speed_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     writeln!(
         md,
         "\n*Median of {reps} batches of 4096 uniform wavelengths; {}. Measured by \
-         `cargo run --release -- figures`; `cargo bench --bench colour` measures the same with \
+         `cargo run --release -- figures`; `cargo bench -p raylemma-bench --bench colour` measures the same with \
          criterion.*",
         timing::machine()
     )?;

@@ -1,6 +1,6 @@
 //! A small timing harness for the speed tables the book prints.
 //!
-//! `cargo bench` (criterion, `benches/`) gives the careful measurement; this harness
+//! `cargo bench -p raylemma-bench` (criterion, `benches/`) gives the careful measurement; this harness
 //! gives the same quantity quickly so that `cargo run --release` can regenerate the book's
 //! tables on the reader's own machine. It reports the median over repeated batches,
 //! which is robust to the occasional interrupted batch.

@@ -1,6 +1,7 @@
 //! The image format.
 
 use super::*;
+use raylemma::spectral::display::{encode_grey_png, encode_png};
 
 /// `decoded` is `t / max t` at every whole nanometre of 380-830 within half a pixel.
 fn quantisation_problem(t: &Table, decoded: &Table, height: u32) -> Option<String> {
@@ -46,10 +47,33 @@ fn shipped_images_match_their_tables() {
 }
 
 fn png_gray(width: u32, height: u32, pixel: impl Fn(u32, u32) -> u8) -> Vec<u8> {
-    let img = image::GrayImage::from_fn(width, height, |x, y| image::Luma([pixel(x, y)]));
-    let mut out = std::io::Cursor::new(Vec::new());
-    img.write_to(&mut out, image::ImageFormat::Png).unwrap();
-    out.into_inner()
+    let grey: Vec<u8> = (0..height)
+        .flat_map(|y| (0..width).map(move |x| (x, y)))
+        .map(|(x, y)| pixel(x, y))
+        .collect();
+    encode_grey_png(width, height, &grey).unwrap()
+}
+
+/// A PNG of any colour type and bit depth, written by the `png` crate itself.
+fn png_of(
+    width: u32,
+    height: u32,
+    color: png::ColorType,
+    depth: png::BitDepth,
+    palette: Option<Vec<u8>>,
+    data: &[u8],
+) -> Vec<u8> {
+    let mut out = Vec::new();
+    let mut encoder = png::Encoder::new(&mut out, width, height);
+    encoder.set_color(color);
+    encoder.set_depth(depth);
+    if let Some(p) = palette {
+        encoder.set_palette(p);
+    }
+    let mut writer = encoder.write_header().unwrap();
+    writer.write_image_data(data).unwrap();
+    writer.finish().unwrap();
+    out
 }
 
 /// The value of a column is the share of dark pixels wherever they are; 127 is dark,
@@ -68,18 +92,59 @@ fn image_columns_are_shares_of_dark_pixels() {
     assert_eq!(&t.values()[..5], &[1.0, 0.5, 0.0, 0.1, 0.0]);
     assert_eq!(t.eval(380.5), 0.75);
 
-    let rgb = image::RgbImage::from_fn(IMAGE_WIDTH, 4, |x, y| {
+    // Dark red, luma (2126 * 200 + 7152 * 10 + 722 * 10) / 10000 = 50, in one column below
+    // the first row; elsewhere pale yellow, luma (2126 * 250 + 7152 * 250 + 722 * 120) /
+    // 10000 = 240.
+    let pixel = |x: u32, y: u32| {
         if x == 200 && y > 0 {
-            image::Rgb([200, 10, 10]) // dark red: luma about 66
+            [200u8, 10, 10]
         } else {
-            image::Rgb([250, 250, 120]) // pale yellow: luma about 236
+            [250, 250, 120]
         }
-    });
-    let mut out = std::io::Cursor::new(Vec::new());
-    rgb.write_to(&mut out, image::ImageFormat::Png).unwrap();
-    let t = parse_image(&out.into_inner(), "rgb.png").unwrap();
+    };
+    let rgb: Vec<u8> = (0..4)
+        .flat_map(|y| (0..IMAGE_WIDTH).flat_map(move |x| pixel(x, y)))
+        .collect();
+    let t = parse_image(&encode_png(IMAGE_WIDTH, 4, &rgb).unwrap(), "rgb.png").unwrap();
     assert_eq!(t.eval(580.0), 0.75);
     assert_eq!(t.values().iter().filter(|&&v| v > 0.0).count(), 1);
+
+    // The same picture as 16-bit RGBA (alpha ignored; a channel's high byte is its 8-bit
+    // value) and as a palette of two colours: the same curve.
+    let rgba16: Vec<u8> = (0..4)
+        .flat_map(|y| (0..IMAGE_WIDTH).flat_map(move |x| pixel(x, y)))
+        .collect::<Vec<u8>>()
+        .chunks_exact(3)
+        .flat_map(|p| [p[0], 7, p[1], 7, p[2], 7, 0, 0])
+        .collect();
+    let png16 = png_of(
+        IMAGE_WIDTH,
+        4,
+        png::ColorType::Rgba,
+        png::BitDepth::Sixteen,
+        None,
+        &rgba16,
+    );
+    assert_eq!(
+        parse_image(&png16, "rgba16.png").unwrap().values(),
+        t.values()
+    );
+    let indices: Vec<u8> = (0..4)
+        .flat_map(|y| (0..IMAGE_WIDTH).map(move |x| u8::from(x == 200 && y > 0)))
+        .collect();
+    let palette = Some(vec![250, 250, 120, 200, 10, 10]);
+    let indexed = png_of(
+        IMAGE_WIDTH,
+        4,
+        png::ColorType::Indexed,
+        png::BitDepth::Eight,
+        palette,
+        &indices,
+    );
+    assert_eq!(
+        parse_image(&indexed, "palette.png").unwrap().values(),
+        t.values()
+    );
 }
 
 #[test]
