@@ -152,7 +152,8 @@ fn lattice_gap(na: usize, nb: usize, i: usize, j: usize) -> u128 {
 }
 
 /// Largest `n_a n_b` for which [`two_sample`] computes the exact p-value (the path count
-/// costs `n_a n_b` steps: 60 200 for 200 and 301 samples).
+/// costs at most `n_a n_b` steps: 60 200 for 200 and 301 samples, of which it visits only
+/// the band of points within the gap).
 pub const TWO_SAMPLE_EXACT_MAX: usize = 10_000_000;
 
 // ANCHOR: two_sample_exact
@@ -173,11 +174,23 @@ pub fn two_sample_exact_p(na: usize, nb: usize, gap: u128) -> f64 {
         return 1.0;
     }
     let n = na + nb;
+    // The points of row i within the gap, |i n_b - j n_a| < gap: the j from `lo` to `hi`.
+    // Only they carry probability; the walk of a row visits them and the one past `hi`
+    // (a step in b can reach it), starting from the previous row's `lo`.
+    let (wa, wb) = (na as u128, nb as u128);
+    let band = |i: usize| {
+        let left = i as u128 * wb;
+        let lo = if left < gap { 0 } else { (left - gap) / wa + 1 };
+        let hi = ((left + gap - 1) / wa).min(wb);
+        (lo as usize, hi as usize)
+    };
     let mut row = vec![0.0f64; nb + 1];
     row[0] = 1.0;
     let mut reached = 0.0;
+    let mut from = 0;
     for i in 0..=na {
-        for j in 0..=nb {
+        let (lo, hi) = band(i);
+        for j in from..=(hi + 1).min(nb) {
             if j > 0 {
                 // A step in b from (i, j - 1).
                 row[j] += row[j - 1] * (nb - (j - 1)) as f64 / (n - i - (j - 1)) as f64;
@@ -188,11 +201,12 @@ pub fn two_sample_exact_p(na: usize, nb: usize, gap: u128) -> f64 {
             }
         }
         if i < na {
-            // A step in a from each (i, j) to (i + 1, j).
-            for (j, mass) in row.iter_mut().enumerate() {
-                *mass *= (na - i) as f64 / (n - i - j) as f64;
+            // A step in a from each (i, j) within the gap to (i + 1, j).
+            for j in lo..=hi {
+                row[j] *= (na - i) as f64 / (n - i - j) as f64;
             }
         }
+        from = lo;
     }
     reached.min(1.0)
 }
