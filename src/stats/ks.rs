@@ -202,8 +202,8 @@ pub fn two_sample_exact_p(na: usize, nb: usize, gap: u128) -> f64 {
         }
         if i < na {
             // A step in a from each (i, j) within the gap to (i + 1, j).
-            for j in lo..=hi {
-                row[j] *= (na - i) as f64 / (n - i - j) as f64;
+            for (j, mass) in row.iter_mut().enumerate().take(hi + 1).skip(lo) {
+                *mass *= (na - i) as f64 / (n - i - j) as f64;
             }
         }
         from = lo;
