@@ -181,6 +181,12 @@ pub struct Finding {
     pub worst_example: Option<String>,
     /// The error of `worst_example`.
     worst_failure: f64,
+    /// What `worst` and its bound measure, in words (`"relative error"`, `"multiples of
+    /// machine epsilon"`); empty when the claim is not quantitative or its words say it.
+    pub unit: &'static str,
+    /// A picture of the failure that the checker wrote (the warp checker's folder of
+    /// images), for the report card to name.
+    pub picture: Option<String>,
 }
 
 impl Finding {
@@ -195,7 +201,15 @@ impl Finding {
             example: None,
             worst_example: None,
             worst_failure: f64::NEG_INFINITY,
+            unit: "",
+            picture: None,
         }
+    }
+
+    /// The same finding, its errors measured in `unit` (words: `"relative error"`).
+    pub fn in_unit(mut self, unit: &'static str) -> Self {
+        self.unit = unit;
+        self
     }
 
     /// Records one case; `describe` is called only for the first failure.
@@ -306,6 +320,9 @@ impl fmt::Display for Verdict {
             )?;
             if let Some((worst, bound)) = f.worst {
                 write!(out, "; worst error {worst:.3e} (bound {bound:.3e})")?;
+                if !f.unit.is_empty() {
+                    write!(out, ", as {}", f.unit)?;
+                }
             }
             writeln!(out)?;
             writeln!(out, "         claim: {}", f.claim)?;

@@ -27,7 +27,8 @@ pub struct CardArgs {
 /// Runs `raylemma card`: 0 if every exercise judged passes, 1 if one does not, 2 for an
 /// unknown exercise, markers that cannot be read or JSON that cannot be written.
 pub fn run(args: &CardArgs) -> CmdResult {
-    let mut markers = edition::markers_under(&root())?;
+    let root = root();
+    let mut markers = edition::markers_under(&root)?;
     if let Some(unknown) = args
         .only
         .iter()
@@ -44,15 +45,19 @@ pub fn run(args: &CardArgs) -> CmdResult {
     } else {
         markers.retain(|m| args.only.contains(&m.name));
         card::run_some(&markers)
-    };
+    }
+    .with_sections(&root, &markers);
     println!("{card}");
     for row in card.rows.iter().filter(|_| !args.only.is_empty()) {
         let verdicts = card::failed_verdicts(&row.name);
         if verdicts.is_empty() {
             continue;
         }
+        let section = row.section.as_ref().map_or_else(String::new, |s| {
+            format!(", section {} ({})", s.title, s.link)
+        });
         println!(
-            "\n--- {} is {}: reread chapter {} (chapters/{}.md; in the built book, book/{}.html)",
+            "\n--- {} is {}: reread chapter {}{section} (chapters/{}.md; in the built book, book/{}.html)",
             row.name,
             row.status.label(),
             row.chapter,

@@ -19,6 +19,7 @@ use serde::{Deserialize, Serialize};
 
 use super::marker::Marker;
 use super::registry::{self, LATER};
+use super::section::{self, Section};
 use crate::check::Verdict;
 
 /// Where an exercise stands.
@@ -73,6 +74,8 @@ pub struct Row {
     pub status: Status,
     /// What finishing it unlocks (exercises, then later checks).
     pub unlocks: Vec<&'static str>,
+    /// The section of its chapter that teaches it ([`Card::with_sections`]).
+    pub section: Option<Section>,
 }
 
 /// The report card.
@@ -189,27 +192,55 @@ fn first_line(text: &str) -> &str {
     text.lines().next().unwrap_or("")
 }
 
-/// One line per failed claim of `verdict`: which claim, in how many cases, and by how
-/// much (the worst error against its bound).
+/// The lines the card gives for each failed claim of `verdict`: the claim in words, in how
+/// many cases it is wrong and by how much (the worst error, in its unit, against what the
+/// claim allows), the input that shows it best (its first two lines, the worst failure if
+/// there is one, else the first), and the picture the checker drew, if any.
 pub fn failed_claims(verdict: &Verdict) -> Vec<String> {
     if verdict.findings.is_empty() {
         return vec![format!("{}: no claim was checked", verdict.subject)];
     }
-    verdict
-        .findings
-        .iter()
-        .filter(|f| !f.passed())
-        .map(|f| {
-            let mut line = format!(
-                "{}: claim `{}` failed in {}/{} cases",
-                verdict.subject, f.name, f.failures, f.cases
-            );
-            if let Some((worst, bound)) = f.worst {
-                line.push_str(&format!(", worst error {worst:.3e} (bound {bound:.3e})"));
+    let mut lines = Vec::new();
+    for f in verdict.findings.iter().filter(|f| !f.passed()) {
+        lines.push(format!("{}: `{}`: {}", verdict.subject, f.name, f.claim));
+        let mut wrong = format!("  wrong in {} of {} cases", f.failures, f.cases);
+        if let Some((worst, bound)) = f.worst {
+            let unit = if f.unit.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", f.unit)
+            };
+            wrong.push_str(&format!(
+                "; worst error {worst:.3e}{unit}, where the claim allows {bound:.3e}"
+            ));
+        }
+        lines.push(wrong);
+        if let Some(example) = f.worst_example.as_ref().or(f.example.as_ref()) {
+            let what = if f.worst_example.is_some() {
+                "worst input"
+            } else {
+                "first input"
+            };
+            for (k, line) in example.lines().take(2).enumerate() {
+                let head = if k == 0 { what } else { "" };
+                lines.push(format!("  {head:<11} {}", clip(line.trim(), 160)));
             }
-            line
-        })
-        .collect()
+        }
+        if let Some(picture) = &f.picture {
+            lines.push(format!("  picture     {picture}"));
+        }
+    }
+    lines
+}
+
+/// `text` cut to at most `max` characters, with an ellipsis when cut.
+fn clip(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        text.to_string()
+    } else {
+        let cut: String = text.chars().take(max).collect();
+        format!("{cut} ...")
+    }
 }
 
 /// The card of the exercises `markers` (in their order), each with the status `status`
@@ -223,6 +254,7 @@ pub fn run_with(markers: &[Marker], status: impl Fn(&Marker) -> Status) -> Card 
             file: m.file.clone(),
             status: status(m),
             unlocks: registry::unlocks(&m.name),
+            section: None,
         })
         .collect();
     Card {
@@ -259,6 +291,19 @@ pub fn run_some(markers: &[Marker]) -> Card {
 }
 
 impl Card {
+    /// The card with each row's section ([`section::of`]) found in the crate's files under
+    /// `root`, `markers` being the rows' exercises: the card names it under a row that
+    /// is failing or waiting.
+    pub fn with_sections(mut self, root: &std::path::Path, markers: &[Marker]) -> Self {
+        for row in &mut self.rows {
+            row.section = markers
+                .iter()
+                .find(|m| m.name == row.name)
+                .and_then(|m| section::of(root, m));
+        }
+        self
+    }
+
     /// How many rows have the status `label`.
     pub fn count(&self, label: &str) -> usize {
         self.rows
@@ -301,6 +346,10 @@ pub struct Entry {
     /// What is wrong (the failed claims, a panic, what it waits for); empty if passing or
     /// not started.
     pub details: Vec<String>,
+    /// The section of the chapter to reread, `The polar map
+    /// (chapters/sampling/disc.md#the-polar-map)`, if the card found it.
+    #[serde(default)]
+    pub section: Option<String>,
 }
 
 impl Entry {
@@ -331,6 +380,10 @@ impl Card {
                 file: r.file.clone(),
                 status: r.status.label().to_string(),
                 details: r.status.details(),
+                section: r
+                    .section
+                    .as_ref()
+                    .map(|s| format!("{} ({})", s.title, s.link)),
             })
             .collect();
         Report {
@@ -382,6 +435,9 @@ impl fmt::Display for Card {
             )?;
             for line in r.status.details() {
                 writeln!(out, "      {line}")?;
+            }
+            if let (Some(s), Status::Failing(_) | Status::Waiting(_)) = (&r.section, &r.status) {
+                writeln!(out, "      reread      {} ({})", s.title, s.link)?;
             }
         }
         for p in &self.problems {

@@ -257,6 +257,7 @@ pub fn unbuilt(exercises: &[Marker], weights: &Weights, why: &str, notes: Vec<St
                 file: m.file.clone(),
                 status: "failing".into(),
                 details: vec!["the submission does not compile (see the grade's notes)".into()],
+                section: None,
             })
             .collect(),
         problems: Vec::new(),

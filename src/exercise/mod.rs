@@ -18,6 +18,7 @@ pub mod grade;
 pub mod marker;
 pub mod registry;
 pub mod scrub;
+pub mod section;
 pub mod stub;
 
 /// The start of the panic message of a stub.

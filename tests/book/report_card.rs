@@ -59,7 +59,7 @@ fn seconds(var: &str, default: u64) -> Duration {
 fn make_card() -> card::Card {
     let root = crate::support::root();
     let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
-    card::run(&markers)
+    card::run(&markers).with_sections(root, &markers)
 }
 
 /// Starts the watchdog thread (see the module's documentation); it ends the process only

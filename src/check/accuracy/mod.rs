@@ -339,7 +339,8 @@ fn finding(
              condition number (at least 1), against the exact answer",
             corpus.file
         ),
-    );
+    )
+    .in_unit("ulps per unit of condition number");
     for m in measure(corpus, verb, precision, &answer) {
         let case = &corpus.cases[m.case];
         f.measure(m.ratio, BOUND, || {

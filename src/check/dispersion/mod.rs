@@ -65,7 +65,8 @@ pub fn sellmeier(f: &dyn Fn(&Sellmeier, f64) -> f64, options: &Options) -> Verdi
     let mut datasheet = Finding::new(
         "datasheet",
         "N-BK7 and fused silica at the Fraunhofer lines, as published",
-    );
+    )
+    .in_unit("absolute error in n");
     let (bk7, silica) = (n_bk7(), fused_silica());
     for (glass, line, nm, want) in [
         (&bk7, "d", LINE_D_NM, 1.516_80),
@@ -81,9 +82,10 @@ pub fn sellmeier(f: &dyn Fn(&Sellmeier, f64) -> f64, options: &Options) -> Verdi
             )
         });
     }
-    let mut vacuum = Finding::new("vacuum", "no terms: n = 1");
+    let mut vacuum = Finding::new("vacuum", "no terms: n = 1").in_unit("machine epsilons");
     let empty = material("vacuum", &[]);
-    let mut one_term = Finding::new("one_term", "B = 1, C = 0: n = sqrt(2) at every wavelength");
+    let mut one_term = Finding::new("one_term", "B = 1, C = 0: n = sqrt(2) at every wavelength")
+        .in_unit("machine epsilons");
     let flat = material("flat", &[(1.0, 0.0)]);
     for nm in [360.0, 550.0, 830.0, 1500.0] {
         let got = f(&empty, nm);
@@ -98,7 +100,8 @@ pub fn sellmeier(f: &dyn Fn(&Sellmeier, f64) -> f64, options: &Options) -> Verdi
     let mut micrometres = Finding::new(
         "micrometres",
         "C = 0.25 um^2 (a pole at 500 nm): n(1000 nm)^2 = 1 + 4/3",
-    );
+    )
+    .in_unit("machine epsilons");
     let pole = material("pole at 500 nm", &[(1.0, 0.25)]);
     let got = f(&pole, 1000.0);
     let want = (1.0 + 4.0 / 3.0_f64).sqrt();

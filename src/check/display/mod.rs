@@ -76,14 +76,16 @@ fn curve(
     let mut reference = Finding::new(
         "reference",
         "the IEC 61966-2-1 curve at the reference points",
-    );
+    )
+    .in_unit("absolute error");
     for &(x, want) in table {
         let got = f(x);
         reference.measure((got - want).abs(), REFERENCE_BOUND, || {
             format!("f({x}) = {got}, the standard gives {want}")
         });
     }
-    let mut continuous = Finding::new("continuous", "the two segments meet at the breakpoint");
+    let mut continuous = Finding::new("continuous", "the two segments meet at the breakpoint")
+        .in_unit("absolute jump");
     let (below, above) = (f(breakpoint * (1.0 - 1e-12)), f(breakpoint * (1.0 + 1e-12)));
     continuous.measure((above - below).abs(), STEP_BOUND, || {
         format!("f just below {breakpoint} = {below}, just above = {above}")

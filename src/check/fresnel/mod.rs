@@ -90,18 +90,23 @@ pub fn independent_transmittance(cos_i: f64, n1: f64, n2: f64) -> Option<(f64, f
 pub fn reflectance(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdict {
     let cosines = sweep_cosines(options);
     let mut range = Finding::new("range", "R is finite and in [0, 1] for every input");
-    let mut normal = Finding::new("normal", "R(cos_i = 1) = ((n1 - n2)/(n1 + n2))^2");
-    let mut grazing = Finding::new("grazing", "R(cos_i = 0) = 1 when n1 != n2");
-    let mut matched = Finding::new("matched", "R = 0 at every angle when n1 = n2");
-    let mut tir = Finding::new("tir", "R = 1 past the critical angle");
+    let mut normal =
+        Finding::new("normal", "R(cos_i = 1) = ((n1 - n2)/(n1 + n2))^2").in_unit("absolute error");
+    let mut grazing =
+        Finding::new("grazing", "R(cos_i = 0) = 1 when n1 != n2").in_unit("absolute error");
+    let mut matched =
+        Finding::new("matched", "R = 0 at every angle when n1 = n2").in_unit("absolute error");
+    let mut tir = Finding::new("tir", "R = 1 past the critical angle").in_unit("absolute error");
     let mut energy = Finding::new(
         "energy",
         "R + T = 1, T from the transmission amplitudes, within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
-    );
+    )
+.in_unit("multiples of eps (1 + 1/min(cos_i, cos_t))");
     let mut reciprocity = Finding::new(
         "reciprocity",
         "R(cos_i; n1 -> n2) = R(cos_t; n2 -> n1), within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
-    );
+    )
+.in_unit("multiples of eps (1 + 1/min(cos_i, cos_t))");
     for &(n1, n2) in &PAIRS {
         for &cos_i in &cosines {
             let r = f(cos_i, n1, n2);
@@ -180,23 +185,28 @@ pub fn independent_amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<[f64; 4]> 
 pub fn amplitudes(f: &dyn Fn(f64, f64, f64) -> Option<Amplitudes>, options: &Options) -> Verdict {
     let cosines = sweep_cosines(options);
     let mut range = Finding::new("range", "every amplitude finite, |r| <= 1 and t >= 0");
-    let mut tir = Finding::new("tir", "None exactly past the critical angle");
+    let mut tir =
+        Finding::new("tir", "None exactly past the critical angle").in_unit("absolute error");
     let mut values = Finding::new(
         "values",
         "r_s, r_p, t_s, t_p equal Born & Wolf's formulas, within 64 eps (1 + 1/min(cos_i, cos_t)) (errors in that unit)",
-    );
+    )
+.in_unit("multiples of eps (1 + 1/min(cos_i, cos_t))");
     let mut normal = Finding::new(
         "normal",
         "at cos_i = 1: r_s = (n1 - n2)/(n1 + n2), r_p = -r_s, t_s = t_p = 2 n1/(n1 + n2), within 4 eps",
-    );
+    )
+.in_unit("absolute error");
     let mut grazing = Finding::new(
         "grazing",
         "at cos_i = 0 from the less dense side: r_s = r_p = -1 and t_s = t_p = 0, the limits (no jump)",
-    );
+    )
+.in_unit("absolute error");
     let mut stokes = Finding::new(
         "stokes",
         "t_s = 1 + r_s and t_p = (n1/n2)(1 + r_p), within 8 eps (1 + n1/n2)",
-    );
+    )
+    .in_unit("absolute error");
     let mut brewster = Finding::new(
         "brewster",
         "r_p has the sign of (cos_i - cos theta_B)(n2 - n1): it changes sign at Brewster's angle",

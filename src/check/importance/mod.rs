@@ -68,7 +68,8 @@ pub fn estimator(estimate: &Estimator, options: &Options) -> Verdict {
     let mut matched = Finding::new(
         "zero_variance",
         "q proportional to f (q = 3x^2 for f = x^2): every term is I = 1/3",
-    );
+    )
+    .in_unit("multiples of eps / 3");
     let s = estimate(&square, &MATCHED, n.min(20_000), &mut rng);
     let unit = f64::EPSILON / 3.0;
     let error = (s.mean - 1.0 / 3.0).abs().max(s.variance().max(0.0).sqrt()) / unit;

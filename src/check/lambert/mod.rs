@@ -37,7 +37,8 @@ pub fn brdf(f: &dyn Fn(f64, DVec3, DVec3) -> f64, options: &Options) -> Verdict 
     let mut albedo_ = Finding::new(
         "albedo",
         "int f cos(theta_i) dw_i = rho for every w_o above",
-    );
+    )
+    .in_unit("relative error");
     for rho in [0.1, 0.5, 1.0] {
         for z in [1.0_f64, 0.7, 0.3, 0.05] {
             let wo = DVec3::new((1.0 - z * z).sqrt(), 0.0, z);

@@ -115,14 +115,18 @@ fn sine(v: DVec3, m: DVec3) -> f64 {
 pub fn reflection(f: &dyn Fn(DVec3, DVec3) -> DVec3, options: &Options) -> Verdict {
     let cases = options.cases_or(CASES);
     let mut finite_ = Finding::new("finite", "w_o has finite components");
-    let mut unit = Finding::new("unit_length", "| |w_o| - 1 | <= 8 eps");
+    let mut unit =
+        Finding::new("unit_length", "| |w_o| - 1 | <= 8 eps").in_unit("machine epsilons");
     let mut angles = Finding::new(
         "equal_angles",
         "w_o leaves on the incident side at the angle of incidence: |w_o.m - cos_i| <= 8 eps",
-    );
-    let mut plane = Finding::new("coplanar", "w_o lies in the plane of w_i and n");
-    let mut side = Finding::new("normal_side", "f(w_i, n) = f(w_i, -n)");
-    let mut reverse = Finding::new("reversible", "f(-w_o, n) = -w_i");
+    )
+    .in_unit("machine epsilons");
+    let mut plane =
+        Finding::new("coplanar", "w_o lies in the plane of w_i and n").in_unit("machine epsilons");
+    let mut side =
+        Finding::new("normal_side", "f(w_i, n) = f(w_i, -n)").in_unit("machine epsilons");
+    let mut reverse = Finding::new("reversible", "f(-w_o, n) = -w_i").in_unit("machine epsilons");
     let mut rng = rng::seeded(options.seed_or(REFLECTION_SEED));
     for k in 0..cases {
         let c = random_case(&mut rng, k);
@@ -164,19 +168,25 @@ pub fn refraction(f: &dyn Fn(DVec3, DVec3, f64, f64) -> Refraction, options: &Op
         "tir_iff",
         "total internal reflection exactly when (n1/n2) sin_i > 1",
     );
-    let mut unit = Finding::new("unit_length", "| |w_t| - 1 | <= 8 eps");
+    let mut unit =
+        Finding::new("unit_length", "| |w_t| - 1 | <= 8 eps").in_unit("machine epsilons");
     let mut snell = Finding::new(
         "snell",
         "|n1 sin_i - n2 sin_t| <= 8 eps max(n1, n2), sines from |w x n| / |w|",
-    );
+    )
+    .in_unit("machine epsilons");
     let mut far = Finding::new("far_side", "w_t points into the far medium: w_t.m <= 8 eps");
-    let mut plane = Finding::new("coplanar", "w_t lies in the plane of w_i and n");
-    let mut side = Finding::new("normal_side", "f(w_i, n) = f(w_i, -n)");
+    let mut plane =
+        Finding::new("coplanar", "w_t lies in the plane of w_i and n").in_unit("machine epsilons");
+    let mut side =
+        Finding::new("normal_side", "f(w_i, n) = f(w_i, -n)").in_unit("machine epsilons");
     let mut reverse = Finding::new(
         "reversible",
         "f(-w_t, n, n2, n1) = -w_i within 16 eps / cos_i",
-    );
-    let mut matched = Finding::new("matched", "n1 = n2 leaves the direction unchanged");
+    )
+    .in_unit("machine epsilons, times cos_i");
+    let mut matched = Finding::new("matched", "n1 = n2 leaves the direction unchanged")
+        .in_unit("machine epsilons");
     let mut rng = rng::seeded(options.seed_or(REFRACTION_SEED));
     for k in 0..cases {
         let c = random_case(&mut rng, k);

@@ -58,7 +58,8 @@ fn findings(what: &str, p: &Pooled) -> [Finding; 2] {
             p.critical,
             100.0 * p.detectable_bias()
         ),
-    );
+    )
+    .in_unit("|z|, the standardised difference");
     global.measure(p.global_z, p.critical, || {
         format!(
             "|z| = {:.2}: the image is {:+.3} % off in luminance",
@@ -74,7 +75,8 @@ fn findings(what: &str, p: &Pooled) -> [Finding; 2] {
             p.critical,
             b = p.block
         ),
-    );
+    )
+    .in_unit("|z|, the standardised difference");
     blocks.measure(p.block_z, p.critical, || {
         format!(
             "the block at pixel ({}, {}) has |z| = {:.2}",

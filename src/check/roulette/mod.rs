@@ -32,7 +32,8 @@ pub fn roulette(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdict 
     let m = options.cases_or(CASES).max(10);
     let mut rng = rng::seeded(options.seed_or(SEED));
     let eps = f64::EPSILON;
-    let mut unbiased = Finding::new("unbiased", "int_0^1 F'(f, p, u) du = f (midpoint rule)");
+    let mut unbiased = Finding::new("unbiased", "int_0^1 F'(f, p, u) du = f (midpoint rule)")
+        .in_unit("relative error in machine epsilons");
     for value in VALUES {
         for p in PROBABILITIES {
             // p m is a whole number for every p above and m a multiple of 20: the midpoints
@@ -45,7 +46,8 @@ pub fn roulette(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdict 
             });
         }
     }
-    let mut survivors = Finding::new("survivors", "u < p gives f / p");
+    let mut survivors = Finding::new("survivors", "u < p gives f / p")
+        .in_unit("relative error in machine epsilons");
     let mut killed = Finding::new("killed", "u >= p gives 0");
     for _ in 0..m {
         let value = rng::log_uniform(&mut rng, 1e-3, 1e3);

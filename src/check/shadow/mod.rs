@@ -40,7 +40,8 @@ pub fn area_to_solid_angle(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) 
     let mut solid = Finding::new(
         "solid_angle",
         "E[1 / p_w] over the light's area = its solid angle",
-    );
+    )
+    .in_unit("relative error");
     let lights = [
         (DVec3::new(-0.5, -0.5, 2.0), DVec3::X, DVec3::Y),
         (DVec3::new(-0.5, -0.5, 2.0), DVec3::Y, DVec3::X),
@@ -78,8 +79,10 @@ pub fn area_to_solid_angle(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) 
             )
         });
     }
-    let mut area_scale = Finding::new("area_scale", "f(2 p_A, d, c) = 2 f(p_A, d, c)");
-    let mut distance_scale = Finding::new("distance_scale", "f(p_A, 2 d, c) = 4 f(p_A, d, c)");
+    let mut area_scale = Finding::new("area_scale", "f(2 p_A, d, c) = 2 f(p_A, d, c)")
+        .in_unit("relative error in machine epsilons");
+    let mut distance_scale = Finding::new("distance_scale", "f(p_A, 2 d, c) = 4 f(p_A, d, c)")
+        .in_unit("relative error in machine epsilons");
     let mut positive = Finding::new(
         "positive",
         "f is finite and > 0 for cos_light != 0, either sign",

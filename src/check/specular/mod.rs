@@ -37,7 +37,8 @@ pub fn delta(f: &dyn Fn(f64, f64, DVec3) -> f64, options: &Options) -> Verdict {
     let mut radiance = Finding::new(
         "reflected_radiance",
         "every sample f |cos theta_i| / pdf of a unit environment's reflection is rho",
-    );
+    )
+    .in_unit("relative error in machine epsilons");
     let mut below = Finding::new("below", "f = 0 for w_i below the surface");
     let mut finite = Finding::new("finite", "f is finite and >= 0 above the surface");
     for kappa in KAPPAS {

@@ -128,7 +128,8 @@ fn hits<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize) -> Find
         "hits",
         "a ray aimed at a point of the sphere from outside hits it: \
          |t - t*||D| <= 16 eps (|O|+|C|+r) and | |P-C| - r | <= 16 eps (|O|+|C|+r)",
-    );
+    )
+    .in_unit("multiples of eps (|O| + |C| + r)");
     for _ in 0..n {
         let (center, radius, dir) = random_frame(rng);
         let u = sphere_uniform(rng);
@@ -162,7 +163,8 @@ fn misses<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize) -> Fi
     let mut finding = Finding::new(
         "misses",
         "a line passing farther than r from the centre (by 0.1% of r or more) never hits",
-    );
+    )
+    .in_unit("multiples of eps (|O| + |C| + r)");
     for _ in 0..n {
         let (center, radius, dir) = random_frame(rng);
         let h = radius * (1.0 + log_uniform(rng, 1e-3, 10.0));
@@ -189,7 +191,8 @@ fn tangents<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize) -> 
         "tangents",
         "a tangent ray gives no NaN, and a hit (if any) at the tangent point: \
          |t - t*||D| <= 4 sqrt(eps) (|O|+|C|+r)",
-    );
+    )
+    .in_unit("multiples of eps (|O| + |C| + r)");
     for _ in 0..n {
         let (center, radius, dir) = random_frame(rng);
         let u = dir.normalize().any_orthonormal_vector();
@@ -217,7 +220,8 @@ fn nearest_root<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usize)
         "nearest_root",
         "the smallest root above t_min is returned: the entry from outside, the exit from \
          inside or when t_min lies between the roots, nothing when both are below t_min",
-    );
+    )
+    .in_unit("multiples of eps (|O| + |C| + r)");
     for i in 0..n {
         let (center, radius, dir) = random_frame(rng);
         let d_len = dir.length();
@@ -269,7 +273,8 @@ fn surface_origin<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usiz
         "surface_origin",
         "from a point on the surface, with t_min = 1e-3 r/|D|: outward rays miss, \
          inward rays hit the far side at t = 2 r cos(theta) / |D|",
-    );
+    )
+    .in_unit("multiples of eps (|O| + |C| + r)");
     for i in 0..n {
         let (center, radius, dir) = random_frame(rng);
         let u = sphere_uniform(rng);
@@ -308,7 +313,8 @@ fn direction_scale<R: Real>(f: &impl SphereIntersector<R>, rng: &mut Rng, n: usi
         "direction_scale",
         "unnormalised directions: D -> sD gives t -> t/s (s from 1e-3 to 1e3, powers of two \
          and not), the same point within the t-error bound",
-    );
+    )
+    .in_unit("multiples of eps (|O| + |C| + r)");
     let scales = [1e-3, 0.5, 3.0, 1e3];
     for i in 0..n {
         let (center, radius, dir) = random_frame(rng);

@@ -59,13 +59,17 @@ pub fn airy(
 ) -> Verdict {
     let cases = options.cases_or(CASES);
     let mut rng = rng::seeded(options.seed_or(SEED));
-    let mut sum = Finding::new("series", "r = the sum of the multiply reflected waves");
-    let mut bare = Finding::new("bare", "r23 = 0 gives r12; r12 = 0 gives r23 e^(2 i delta)");
-    let mut period = Finding::new("period", "r(delta + pi) = r(delta) for real delta");
+    let mut sum = Finding::new("series", "r = the sum of the multiply reflected waves")
+        .in_unit("absolute error of the amplitude");
+    let mut bare = Finding::new("bare", "r23 = 0 gives r12; r12 = 0 gives r23 e^(2 i delta)")
+        .in_unit("absolute error of the amplitude");
+    let mut period = Finding::new("period", "r(delta + pi) = r(delta) for real delta")
+        .in_unit("absolute error of the amplitude");
     let mut energy = Finding::new(
         "energy",
         "|r| <= 1 for real r12, r23 in [-1, 1], real delta",
-    );
+    )
+    .in_unit("excess of |r|^2 over 1");
     let zero = Complex64::new(0.0, 0.0);
     for k in 0..cases {
         let complex = k % 2 == 1;
@@ -106,7 +110,8 @@ pub fn airy(
             });
         }
     }
-    let mut quarter = Finding::new("quarter_wave", "r12 = r23 and delta = pi/2 give r = 0");
+    let mut quarter = Finding::new("quarter_wave", "r12 = r23 and delta = pi/2 give r = 0")
+        .in_unit("absolute error of the amplitude");
     for rho in [0.02, 0.2, 0.5, -0.3] {
         let c = Complex64::new(rho, 0.0);
         let got = f(c, c, Complex64::new(std::f64::consts::FRAC_PI_2, 0.0));

@@ -361,8 +361,14 @@ fn chi_squared_finding(warp: &dyn Warp, options: &WarpOptions) -> Finding {
             if ok {
                 remove_stale_images(warp);
             }
+            let dir = (!ok)
+                .then(|| write_failure_images(warp, options, &observed, &expected))
+                .flatten();
+            finding.picture = dir
+                .as_ref()
+                .map(|d| format!("{}", d.join("difference.png").display()));
             finding.record(ok, || {
-                let images = write_failure_images(warp, options, &observed, &expected)
+                let images = dir
                     .map(|dir| format!("; images in {}", dir.display()))
                     .unwrap_or_default();
                 let (_, cols) = grid(warp.domain(), options.resolution);
@@ -404,7 +410,8 @@ pub fn jacobian(warp: &dyn Warp, options: &impl ToWarpOptions) -> Option<Finding
     let mut finding = Finding::new(
         "jacobian",
         "p(T(u)) |det dT/du| = 1 to a relative error of 1e-4",
-    );
+    )
+    .in_unit("relative error");
     let mut rng = rng::seeded(options.seed ^ 0x1AC0);
     for _ in 0..options.points {
         let u = DVec2::new(
@@ -428,7 +435,8 @@ pub fn jacobian(warp: &dyn Warp, options: &impl ToWarpOptions) -> Option<Finding
 pub fn round_trip(warp: &dyn Warp, options: &impl ToWarpOptions) -> Option<Finding> {
     let options = options.to_warp_options();
     warp.invert(warp.warp(DVec2::splat(0.5))?)?;
-    let mut finding = Finding::new("round_trip", "T^-1(T(u)) = u within 1e-9");
+    let mut finding = Finding::new("round_trip", "T^-1(T(u)) = u within 1e-9")
+        .in_unit("distance in the unit square");
     let mut rng = rng::seeded(options.seed ^ 0x2077);
     for _ in 0..options.points {
         let u = square_point(&mut rng);

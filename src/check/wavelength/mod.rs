@@ -35,12 +35,15 @@ pub fn hero(f: &dyn Fn(f64) -> Wavelengths, options: &Options) -> Verdict {
     let range = LAMBDA_MAX - LAMBDA_MIN;
     let unit = f64::EPSILON * LAMBDA_MAX;
     let mut in_range = Finding::new("range", "every lane lies in [360, 830] nm");
-    let mut hero = Finding::new("hero", "lane 0 = 360 + 470 u nm");
+    let mut hero =
+        Finding::new("hero", "lane 0 = 360 + 470 u nm").in_unit("multiples of eps x 830 nm");
     let mut spacing = Finding::new(
         "spacing",
         "lane j = lane 0 + j/N of the range, modulo the range",
-    );
-    let mut pdf = Finding::new("pdf", "every lane and the hero weighted by 1/470 per nm");
+    )
+    .in_unit("multiples of eps x 830 nm");
+    let mut pdf = Finding::new("pdf", "every lane and the hero weighted by 1/470 per nm")
+        .in_unit("relative error in machine epsilons");
     let mut lanes: Vec<Vec<f64>> = (0..N).map(|_| Vec::with_capacity(cases + 3)).collect();
     let mut us: Vec<f64> = (0..cases)
         .map(|_| rng::uniform(&mut rng, 0.0, 1.0))

@@ -530,7 +530,8 @@ fn card_txt(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
             }
             _ => judge(&|| -> Vec<Verdict> { exercise::todo(name) }),
         }
-    });
+    })
+    .with_sections(&settings.root, &markers);
     debug_assert!(card.rows.iter().any(|r| r.status == Status::NotStarted));
     Ok(portable(settings, card.to_string() + "\n").into_bytes())
 }

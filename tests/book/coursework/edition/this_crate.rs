@@ -73,6 +73,70 @@ fn every_marker_of_this_crate_is_well_formed_and_has_its_checks() {
     assert!(registry::unlocks("hemisphere_flip").contains(&"roulette chapter"));
 }
 
+/// The card names, under a failing exercise, the section of its chapter that shows its
+/// code: every exercise of this crate has one, and each heading is in its chapter.
+#[test]
+fn every_exercise_has_a_section_to_reread() {
+    use raylemma::exercise::section;
+    let root = crate::support::root();
+    let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
+    for m in &markers {
+        let s = section::of(root, m).unwrap_or_else(|| {
+            panic!(
+                "{}:{}: `{}` has no section in chapters/{}.md",
+                m.file, m.line, m.name, m.chapter
+            )
+        });
+        let chapter = std::fs::read_to_string(root.join(format!("chapters/{}.md", m.chapter)))
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            chapter
+                .lines()
+                .any(|l| l.trim_start_matches('#').trim() == s.title && l.starts_with('#')),
+            "{}: no heading {:?}",
+            m.name,
+            s.title
+        );
+        assert!(
+            s.link.starts_with(&format!("chapters/{}.md#", m.chapter)),
+            "{s:?}"
+        );
+    }
+    let disc = markers
+        .iter()
+        .find(|m| m.name == "disc_polar")
+        .map(|m| section::of(root, m));
+    assert_eq!(
+        disc.flatten().map(|s| s.link),
+        Some("chapters/sampling/disc.md#the-polar-map".to_string())
+    );
+}
+
+/// The pieces of a section: the anchor that holds a line, the heading above an include
+/// (outside code blocks), and mdBook's id of a heading.
+#[test]
+fn a_section_is_the_heading_above_the_include_of_the_exercise_s_anchor() {
+    use raylemma::exercise::section::{anchor_at, heading_above_include, heading_id};
+    let source = "// ANCHOR: a\nfn a() {}\n// ANCHOR_END: a\n// ANCHOR: b\n// EXERCISE x\n";
+    assert_eq!(anchor_at(source, 2), Some("a"));
+    assert_eq!(anchor_at(source, 5), Some("b"));
+    assert_eq!(anchor_at(source, 1), None);
+    let chapter = "# Title\n\n## First part\n\n```text\n# not a heading\n```\n\n{{#include ../../src/f.rs:b}}\n## Later\n";
+    assert_eq!(
+        heading_above_include(chapter, "src/f.rs", "b"),
+        Some("First part")
+    );
+    assert_eq!(heading_above_include(chapter, "src/f.rs", "a"), None);
+    assert_eq!(
+        heading_id("The polar map: r = √u₁, φ = 2π u₂"),
+        "the-polar-map-r--u₁-φ--2π-u₂"
+    );
+    assert_eq!(
+        heading_id("Snell's law in vector form"),
+        "snells-law-in-vector-form"
+    );
+}
+
 /// Every chapter ends with exercises, and every exercise of the hand-out is checked by a
 /// command its chapter names.
 #[test]
