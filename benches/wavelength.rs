@@ -7,14 +7,14 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::spectral::wavelength::Strategy;
+use raylemma::spectral::wavelength::WavelengthStrategy;
 use raylemma::workload::uniform_inputs;
 
 fn lanes(c: &mut Criterion) {
     let us = uniform_inputs(4096);
     let mut group = c.benchmark_group("wavelength_lanes");
     group.throughput(Throughput::Elements(us.len() as u64));
-    for s in Strategy::ALL {
+    for s in WavelengthStrategy::ALL {
         group.bench_with_input(BenchmarkId::from_parameter(s.name()), &us, |b, us| {
             b.iter(|| {
                 let mut acc = 0.0;

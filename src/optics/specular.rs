@@ -74,7 +74,7 @@ pub fn reflected_radiance_sample(
 
 /// What a furnace sphere is made of.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Material {
+pub enum FurnaceMaterial {
     /// A perfect mirror of reflectance `rho` (1 for energy conservation).
     Mirror {
         /// Reflectance.
@@ -113,7 +113,7 @@ pub struct FurnacePath {
 /// specular BSDF returns radiance exactly 1 for every path that hits the sphere.
 pub fn furnace_path(
     ray: Ray,
-    material: Material,
+    material: FurnaceMaterial,
     cosine: CosineTerm,
     rng: &mut Rng,
 ) -> FurnacePath {
@@ -132,11 +132,11 @@ pub fn furnace_path(
         let w = ray.dir.normalize();
         let cos_i = w.dot(n).abs();
         let next = match material {
-            Material::Mirror { rho } => {
+            FurnaceMaterial::Mirror { rho } => {
                 throughput *= rho;
                 reflect(w, n)
             }
-            Material::Glass { ior } => {
+            FurnaceMaterial::Glass { ior } => {
                 let (n1, n2) = if w.dot(n) < 0.0 {
                     (1.0, ior)
                 } else {

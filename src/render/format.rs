@@ -15,17 +15,17 @@ use toml::Spanned;
 use super::scene::{DirectLight, Scene};
 use super::validate;
 use crate::data::DataError;
-use crate::spectral::wavelength::Strategy;
+use crate::spectral::wavelength::WavelengthStrategy;
 use crate::transport::shadow::Heuristic;
 
 /// The names the `wavelengths` key accepts, with their strategies (and `"emission"`,
 /// [`super::scene::Wavelength::Emission`]).
-pub const WAVELENGTH_STRATEGIES: [(&str, Strategy); 5] = [
-    ("uniform", Strategy::Uniform),
-    ("visible", Strategy::Visible),
-    ("hero-uniform", Strategy::HeroUniform),
-    ("hero-visible", Strategy::HeroVisible),
-    ("hero-balance", Strategy::HeroBalance),
+pub const WAVELENGTH_STRATEGIES: [(&str, WavelengthStrategy); 5] = [
+    ("uniform", WavelengthStrategy::Uniform),
+    ("visible", WavelengthStrategy::Visible),
+    ("hero-uniform", WavelengthStrategy::HeroUniform),
+    ("hero-visible", WavelengthStrategy::HeroVisible),
+    ("hero-balance", WavelengthStrategy::HeroBalance),
 ];
 
 /// The names the `direct` key accepts, with their strategies of direct lighting.

@@ -17,13 +17,13 @@ use crate::geometry::sphere::{Sphere, intersect_stable};
 use crate::optics::dispersion::Sellmeier;
 use crate::spectral::emission::{EmissionSampler, WavelengthSample};
 use crate::spectral::spectrum::Spectrum;
-use crate::spectral::wavelength::{N, Strategy, Wavelengths, rotate01};
+use crate::spectral::wavelength::{N, WavelengthStrategy, Wavelengths, rotate01};
 use crate::transport::shadow::{Light, QuadLight, SphereLight};
 
 /// The strategies of direct lighting: the shadow-ray chapter's
-/// ([`crate::transport::shadow::Strategy`]), used by the path tracer at every diffuse
+/// ([`crate::transport::shadow::IrradianceStrategy`]), used by the path tracer at every diffuse
 /// bounce.
-pub use crate::transport::shadow::Strategy as DirectLight;
+pub use crate::transport::shadow::IrradianceStrategy as DirectLight;
 
 /// A checked scene, ready to render.
 #[derive(Clone, Debug)]
@@ -69,7 +69,7 @@ pub struct CameraSpec {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Wavelength {
     /// One of the wavelength chapter's strategies.
-    Strategy(Strategy),
+    Strategy(WavelengthStrategy),
     /// Hero lanes from the colour proposal of the scene's one light (its spectrum times
     /// `x̄ + ȳ + z̄`, *Importance-sampled emission spectra*), rotated in sample space: lane
     /// `j` is `P⁻¹((u + j/N) mod 1)` and, alone, has the proposal's density, so each lane

@@ -359,7 +359,7 @@ pub fn seed_band_weight(nm: f64, band: &SeedBand) -> f64 {
 
 /// The wavelength-sampling strategies the chapter compares.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Strategy {
+pub enum WavelengthStrategy {
     /// One uniform wavelength.
     Uniform,
     /// One wavelength from the visible pdf.
@@ -375,26 +375,26 @@ pub enum Strategy {
     SeedBand,
 }
 
-impl Strategy {
+impl WavelengthStrategy {
     /// Every strategy, in the chapter's order.
-    pub const ALL: [Strategy; 6] = [
-        Strategy::Uniform,
-        Strategy::Visible,
-        Strategy::HeroUniform,
-        Strategy::HeroVisible,
-        Strategy::HeroBalance,
-        Strategy::SeedBand,
+    pub const ALL: [WavelengthStrategy; 6] = [
+        WavelengthStrategy::Uniform,
+        WavelengthStrategy::Visible,
+        WavelengthStrategy::HeroUniform,
+        WavelengthStrategy::HeroVisible,
+        WavelengthStrategy::HeroBalance,
+        WavelengthStrategy::SeedBand,
     ];
 
     /// A short name for tables and legends.
     pub fn name(self) -> &'static str {
         match self {
-            Strategy::Uniform => "uniform, 1 λ",
-            Strategy::Visible => "visible pdf, 1 λ",
-            Strategy::HeroUniform => "hero, uniform",
-            Strategy::HeroVisible => "hero, visible pdf (sample space)",
-            Strategy::HeroBalance => "hero, visible pdf (wavelength space, balance)",
-            Strategy::SeedBand => "seed's band",
+            WavelengthStrategy::Uniform => "uniform, 1 λ",
+            WavelengthStrategy::Visible => "visible pdf, 1 λ",
+            WavelengthStrategy::HeroUniform => "hero, uniform",
+            WavelengthStrategy::HeroVisible => "hero, visible pdf (sample space)",
+            WavelengthStrategy::HeroBalance => "hero, visible pdf (wavelength space, balance)",
+            WavelengthStrategy::SeedBand => "seed's band",
         }
     }
 
@@ -402,15 +402,15 @@ impl Strategy {
     #[inline]
     pub fn sample(self, u: f64) -> Wavelengths {
         match self {
-            Strategy::Uniform => Wavelengths::single(sample_uniform(u), 1.0 / RANGE),
-            Strategy::Visible => {
+            WavelengthStrategy::Uniform => Wavelengths::single(sample_uniform(u), 1.0 / RANGE),
+            WavelengthStrategy::Visible => {
                 let (l, p) = sample_visible_pdf(u);
                 Wavelengths::single(l, p)
             }
-            Strategy::HeroUniform => hero_uniform(u),
-            Strategy::HeroVisible => hero_visible(u),
-            Strategy::HeroBalance => hero_balance(u),
-            Strategy::SeedBand => seed_band(u, &SEED_BAND),
+            WavelengthStrategy::HeroUniform => hero_uniform(u),
+            WavelengthStrategy::HeroVisible => hero_visible(u),
+            WavelengthStrategy::HeroBalance => hero_balance(u),
+            WavelengthStrategy::SeedBand => seed_band(u, &SEED_BAND),
         }
     }
 }

@@ -106,7 +106,7 @@ impl LightSample {
 
 /// Where a ray from `p` first meets a light.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit {
+pub struct LightHit {
     /// Distance along the unit direction.
     pub dist: f64,
     /// `n . w` at the hit (negative when the light faces `p`).
@@ -137,7 +137,7 @@ pub trait Light: Sync {
     /// or edge-on).
     fn sample(&self, p: DVec3, u: DVec2) -> Option<LightSample>;
     /// The first point where the ray `p + t w` (`w` of unit length, `t > 0`) meets the light.
-    fn hit(&self, p: DVec3, w: DVec3) -> Option<Hit>;
+    fn hit(&self, p: DVec3, w: DVec3) -> Option<LightHit>;
     /// The density per steradian with which [`Light::sample`] draws the unit direction `w`
     /// (0 where it never does).
     fn pdf(&self, p: DVec3, w: DVec3) -> f64;
@@ -240,9 +240,9 @@ impl Light for QuadLight {
 
     // ANCHOR: quad_hit
     /// The parallelogram's intersection ([`Parallelogram::hit`]), with `n . w` at the hit.
-    fn hit(&self, p: DVec3, w: DVec3) -> Option<Hit> {
+    fn hit(&self, p: DVec3, w: DVec3) -> Option<LightHit> {
         let dist = self.shape.hit(p, w)?;
-        Some(Hit {
+        Some(LightHit {
             dist,
             cos_light: self.normal().dot(w),
         })
@@ -321,11 +321,11 @@ impl SphereLight {
             .map_or(0.0, |(_, h)| TAU * self.radius * self.radius * h)
     }
 
-    fn cast(&self, p: DVec3, w: DVec3) -> Option<Hit> {
+    fn cast(&self, p: DVec3, w: DVec3) -> Option<LightHit> {
         let sphere = Sphere::new(self.center, self.radius);
         let t = intersect_stable(&Ray::new(p, w), &sphere, 0.0)?;
         let n = (p + t * w - self.center) / self.radius;
-        Some(Hit {
+        Some(LightHit {
             dist: t,
             cos_light: -n.dot(w).abs(),
         })
@@ -354,7 +354,7 @@ impl Light for SphereLight {
     }
     // ANCHOR_END: sphere_sample
 
-    fn hit(&self, p: DVec3, w: DVec3) -> Option<Hit> {
+    fn hit(&self, p: DVec3, w: DVec3) -> Option<LightHit> {
         self.outside(p)?;
         self.cast(p, w)
     }
@@ -393,7 +393,7 @@ impl Light for SphereCone {
         let hit = light.cast(p, dir).unwrap_or_else(|| {
             let t = dir.dot(to_center);
             let n = (p + t * dir - light.center).normalize_or_zero();
-            Hit {
+            LightHit {
                 dist: t,
                 cos_light: -n.dot(dir).abs(),
             }
@@ -408,7 +408,7 @@ impl Light for SphereCone {
     }
     // ANCHOR_END: cone_sample
 
-    fn hit(&self, p: DVec3, w: DVec3) -> Option<Hit> {
+    fn hit(&self, p: DVec3, w: DVec3) -> Option<LightHit> {
         self.0.hit(p, w)
     }
 
@@ -498,7 +498,7 @@ impl Heuristic {
 
 /// How to estimate the irradiance at a point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Strategy {
+pub enum IrradianceStrategy {
     /// Sample the light (one sample).
     Light,
     /// Sample the cosine-weighted hemisphere and cast the ray (one sample).
@@ -517,24 +517,24 @@ pub fn estimate_irradiance(
     p: DVec3,
     n: DVec3,
     radiance: f64,
-    strategy: Strategy,
+    strategy: IrradianceStrategy,
     u_light: DVec2,
     u_bsdf: DVec2,
 ) -> f64 {
     let mut e = 0.0;
-    if strategy != Strategy::Bsdf
+    if strategy != IrradianceStrategy::Bsdf
         && let Some(s) = light.sample(p, u_light)
     {
         let cos = n.dot(s.dir);
         if cos > 0.0 && s.cos_light < 0.0 {
             let w = match strategy {
-                Strategy::Mis(h) => h.weight(s.pdf, cos * FRAC_1_PI),
+                IrradianceStrategy::Mis(h) => h.weight(s.pdf, cos * FRAC_1_PI),
                 _ => 1.0,
             };
             e += w * radiance * cos / s.pdf;
         }
     }
-    if strategy != Strategy::Light {
+    if strategy != IrradianceStrategy::Light {
         let local = cosine_malley(u_bsdf);
         let dir = Frame::from_normal(n).to_world(local);
         let pdf = local.z * FRAC_1_PI;
@@ -543,7 +543,7 @@ pub fn estimate_irradiance(
             && hit.cos_light < 0.0
         {
             let w = match strategy {
-                Strategy::Mis(h) => h.weight(pdf, light.pdf(p, dir)),
+                IrradianceStrategy::Mis(h) => h.weight(pdf, light.pdf(p, dir)),
                 _ => 1.0,
             };
             e += w * radiance * local.z / pdf;

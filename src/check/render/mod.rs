@@ -34,7 +34,7 @@ use crate::render::scene::{DirectLight, Scene, Wavelength};
 use crate::render::{Progress, render};
 use crate::spectral::emission::{EmissionSampler, colour_proposal};
 use crate::spectral::spectrum::Spectrum;
-use crate::spectral::wavelength::Strategy;
+use crate::spectral::wavelength::WavelengthStrategy;
 use crate::stats::sidak;
 use crate::transport::shadow::Heuristic;
 use pool::{Expected, Pooled};
@@ -109,11 +109,11 @@ pub const EDGE_BLOCK: u32 = 4;
 /// wavelength chapter, and the emission strategy (the light's colour proposal).
 pub fn wavelength_variants() -> Vec<(&'static str, Wavelength)> {
     let mut v: Vec<(&str, Wavelength)> = [
-        ("hero, visible pdf", Strategy::HeroVisible),
-        ("hero, uniform", Strategy::HeroUniform),
-        ("hero, balance heuristic", Strategy::HeroBalance),
-        ("one wavelength, visible pdf", Strategy::Visible),
-        ("one wavelength, uniform", Strategy::Uniform),
+        ("hero, visible pdf", WavelengthStrategy::HeroVisible),
+        ("hero, uniform", WavelengthStrategy::HeroUniform),
+        ("hero, balance heuristic", WavelengthStrategy::HeroBalance),
+        ("one wavelength, visible pdf", WavelengthStrategy::Visible),
+        ("one wavelength, uniform", WavelengthStrategy::Uniform),
     ]
     .into_iter()
     .map(|(n, s)| (n, Wavelength::Strategy(s)))
@@ -278,7 +278,7 @@ pub fn edge_strategy_scenes(scale: f64) -> Vec<ExactScene> {
         });
     }
     let mut scene = scenes::coloured_quad_in_sky(32, spp(512));
-    scene.settings.wavelengths = Wavelength::Strategy(Strategy::HeroVisible);
+    scene.settings.wavelengths = Wavelength::Strategy(WavelengthStrategy::HeroVisible);
     list.push(ExactScene {
         name: "edges of a red quad in a sky, hero".into(),
         scene,
@@ -358,17 +358,17 @@ pub fn exact(renderer: Renderer, options: &Options) -> Verdict {
 /// The variants of [`agreement`]: every direct-lighting strategy but the first, and every
 /// unbiased wavelength strategy but hero-visible.
 pub fn variants() -> Vec<(String, DirectLight, Wavelength)> {
-    let hero = Wavelength::Strategy(Strategy::HeroVisible);
+    let hero = Wavelength::Strategy(WavelengthStrategy::HeroVisible);
     let power = DirectLight::Mis(Heuristic::Power);
     let mut v: Vec<(String, DirectLight, Wavelength)> = DIRECT_VARIANTS[1..]
         .iter()
         .map(|&(name, d)| (name.to_string(), d, hero.clone()))
         .collect();
     for (name, s) in [
-        ("one uniform wavelength", Strategy::Uniform),
-        ("one visible wavelength", Strategy::Visible),
-        ("hero, uniform", Strategy::HeroUniform),
-        ("hero, balance heuristic", Strategy::HeroBalance),
+        ("one uniform wavelength", WavelengthStrategy::Uniform),
+        ("one visible wavelength", WavelengthStrategy::Visible),
+        ("hero, uniform", WavelengthStrategy::HeroUniform),
+        ("hero, balance heuristic", WavelengthStrategy::HeroBalance),
     ] {
         v.push((name.to_string(), power, Wavelength::Strategy(s)));
     }

@@ -39,7 +39,7 @@ use crate::render::scene::{
     RenderSettings, Scene, Shape, Thickness, Wavelength,
 };
 use crate::spectral::spectrum::{Spectrum, Table, builtin};
-use crate::spectral::wavelength::Strategy;
+use crate::spectral::wavelength::WavelengthStrategy;
 use crate::transport::shadow::{Heuristic, QuadLight, SphereLight};
 
 /// The settings of every check scene: `spp` samples, seed `seed`, hero-visible
@@ -48,7 +48,7 @@ pub fn settings(spp: u32, seed: u64) -> RenderSettings {
     RenderSettings {
         spp,
         seed,
-        wavelengths: Wavelength::Strategy(Strategy::HeroVisible),
+        wavelengths: Wavelength::Strategy(WavelengthStrategy::HeroVisible),
         direct: DirectLight::Mis(Heuristic::Power),
         roulette_depth: 3,
         max_depth: 1000,
@@ -377,7 +377,7 @@ pub fn red_reflectance() -> Spectrum {
 /// sees that mistake.
 pub fn coloured_quad_in_sky(side: u32, spp: u32) -> Scene {
     let mut settings = settings(spp, 1);
-    settings.wavelengths = Wavelength::Strategy(Strategy::Visible);
+    settings.wavelengths = Wavelength::Strategy(WavelengthStrategy::Visible);
     Scene {
         camera: sky_camera(side),
         settings,

@@ -30,7 +30,7 @@ pub const SAMPLES: usize = 100_000;
 pub const SEED: u64 = 0x7ab1;
 
 /// What the claims read of a table (not of the sampler under test).
-pub trait Table {
+pub trait TabulatedPdf {
     /// The bin edges (or knots).
     fn grid(&self) -> &[f64];
     /// The normalised density.
@@ -43,7 +43,7 @@ pub trait Table {
     fn levels(&self) -> &[f64];
 }
 
-impl Table for Piecewise1D {
+impl TabulatedPdf for Piecewise1D {
     fn grid(&self) -> &[f64] {
         self.edges()
     }
@@ -61,7 +61,7 @@ impl Table for Piecewise1D {
     }
 }
 
-impl Table for PiecewiseLinear1D {
+impl TabulatedPdf for PiecewiseLinear1D {
     fn grid(&self) -> &[f64] {
         self.knots()
     }
@@ -146,7 +146,7 @@ pub fn linear_sampler(f: &dyn Fn(&PiecewiseLinear1D, f64) -> Sample, options: &O
     )
 }
 
-fn claims<T: Table>(
+fn claims<T: TabulatedPdf>(
     subject: &str,
     all: &[(&'static str, T)],
     f: &dyn Fn(&T, f64) -> Sample,

@@ -13,7 +13,7 @@ use crate::render::format::{
 use crate::render::scene::{CameraSpec, DirectLight, Emitter, RenderSettings, Wavelength};
 use crate::spectral::emission::{EmissionSampler, colour_proposal};
 use crate::spectral::spectrum::Spectrum;
-use crate::spectral::wavelength::Strategy;
+use crate::spectral::wavelength::WavelengthStrategy;
 use crate::transport::shadow::Heuristic;
 
 impl Checker<'_> {
@@ -28,9 +28,11 @@ impl Checker<'_> {
             None => 0,
         };
         let wavelengths = match &r.wavelengths {
-            None => Wavelength::Strategy(Strategy::HeroVisible),
+            None => Wavelength::Strategy(WavelengthStrategy::HeroVisible),
             // Resolved once the lights are known.
-            Some(w) if w.get_ref() == "emission" => Wavelength::Strategy(Strategy::HeroVisible),
+            Some(w) if w.get_ref() == "emission" => {
+                Wavelength::Strategy(WavelengthStrategy::HeroVisible)
+            }
             Some(w) => match WAVELENGTH_STRATEGIES.iter().find(|(n, _)| n == w.get_ref()) {
                 Some((_, s)) => Wavelength::Strategy(*s),
                 None => {

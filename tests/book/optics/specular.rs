@@ -96,7 +96,12 @@ fn lobe_pdf_integrates_to_one() {
     }
 }
 
-fn furnace(material: Material, cosine: CosineTerm, n: usize, seed: u64) -> (ttest::Summary, u64) {
+fn furnace(
+    material: FurnaceMaterial,
+    cosine: CosineTerm,
+    n: usize,
+    seed: u64,
+) -> (ttest::Summary, u64) {
     let mut rng = rng::seeded(seed);
     let mut bounces = 0u64;
     let s = ttest::Summary::of((0..n).map(|_| {
@@ -113,9 +118,9 @@ fn furnace(material: Material, cosine: CosineTerm, n: usize, seed: u64) -> (ttes
 #[test]
 fn furnace_returns_the_background_exactly() {
     for (k, material) in [
-        Material::Mirror { rho: 1.0 },
-        Material::Glass { ior: 1.5 },
-        Material::Glass { ior: 2.4 },
+        FurnaceMaterial::Mirror { rho: 1.0 },
+        FurnaceMaterial::Glass { ior: 1.5 },
+        FurnaceMaterial::Glass { ior: 2.4 },
     ]
     .into_iter()
     .enumerate()
@@ -129,9 +134,12 @@ fn furnace_returns_the_background_exactly() {
 /// The planted bug: keeping the cosine at specular bounces darkens the furnace.
 #[test]
 fn furnace_with_the_cosine_kept_is_rejected() {
-    for (k, material) in [Material::Mirror { rho: 1.0 }, Material::Glass { ior: 1.5 }]
-        .into_iter()
-        .enumerate()
+    for (k, material) in [
+        FurnaceMaterial::Mirror { rho: 1.0 },
+        FurnaceMaterial::Glass { ior: 1.5 },
+    ]
+    .into_iter()
+    .enumerate()
     {
         let (s, _) = furnace(material, CosineTerm::Kept, 20_000, 20 + k as u64);
         let t = ttest::one_sample(&s, 1.0).unwrap();
@@ -276,7 +284,7 @@ fn glass_sphere_paths_average_two_bounces() {
             f64::from(
                 furnace_path(
                     ray,
-                    Material::Glass { ior },
+                    FurnaceMaterial::Glass { ior },
                     CosineTerm::Cancelled,
                     &mut rng,
                 )
@@ -342,7 +350,7 @@ fn exercise_1_coloured_mirror() {
         let ray = furnace_camera_ray(&mut rng);
         let path = furnace_path(
             ray,
-            Material::Mirror { rho: 0.8 },
+            FurnaceMaterial::Mirror { rho: 0.8 },
             CosineTerm::Cancelled,
             &mut rng,
         );
@@ -429,7 +437,7 @@ fn exercise_3_schlick_in_the_furnace() {
         &|ray, rng| {
             furnace_path(
                 ray,
-                Material::Glass { ior: 1.5 },
+                FurnaceMaterial::Glass { ior: 1.5 },
                 CosineTerm::Cancelled,
                 rng,
             )

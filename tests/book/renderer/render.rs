@@ -24,7 +24,7 @@ use raylemma::sampling::cosine::cosine_malley;
 use raylemma::sampling::frame::Frame;
 use raylemma::spectral::cie;
 use raylemma::spectral::spectrum::Spectrum;
-use raylemma::spectral::wavelength::{N, RANGE, Strategy, hero_visible};
+use raylemma::spectral::wavelength::{N, RANGE, WavelengthStrategy, hero_visible};
 use raylemma::stats::{sidak, test_alpha};
 
 fn load(name: &str) -> Scene {
@@ -112,7 +112,7 @@ fn white_furnace(sampler: raylemma::render::WavelengthSampler) -> Fit {
 
 #[test]
 fn white_furnace_is_exact_within_noise() {
-    let f = white_furnace(&|u| Strategy::HeroVisible.sample(u));
+    let f = white_furnace(&|u| WavelengthStrategy::HeroVisible.sample(u));
     assert_eq!(f.pixels, 48 * 48);
     f.assert_exact("white furnace");
 }
@@ -120,7 +120,11 @@ fn white_furnace_is_exact_within_noise() {
 #[test]
 fn white_furnace_accepts_every_unbiased_wavelength_strategy() {
     // The one-wavelength, uniform and balance-heuristic strategies, through the same test.
-    for strategy in [Strategy::Uniform, Strategy::Visible, Strategy::HeroBalance] {
+    for strategy in [
+        WavelengthStrategy::Uniform,
+        WavelengthStrategy::Visible,
+        WavelengthStrategy::HeroBalance,
+    ] {
         white_furnace(&|u| strategy.sample(u)).assert_exact(strategy.name());
     }
 }
@@ -167,7 +171,7 @@ fn exercise_1_a_camera_inside_glass_sees_eta_squared() {
         material: glass,
     }];
     let image = render_with(&s, s.settings.spp, Progress::Silent, &|u| {
-        Strategy::HeroVisible.sample(u)
+        WavelengthStrategy::HeroVisible.sample(u)
     });
     let f = fit(
         &image,

@@ -461,7 +461,7 @@ fn exercise_2_stratified_hero() {
     let d = d65();
     let images = 4000;
     // (variance of a pixel, variance of the image's mean) for independent or stratified u.
-    let measure = |s: Strategy, stratified: bool| {
+    let measure = |s: WavelengthStrategy, stratified: bool| {
         let mut r = rng::seeded(0xF1A7);
         let (mut pixels, mut means) = (Vec::new(), Vec::new());
         for _ in 0..images {
@@ -483,7 +483,7 @@ fn exercise_2_stratified_hero() {
         )
     };
     let mut gains = Vec::new();
-    for s in [Strategy::Uniform, Strategy::HeroUniform] {
+    for s in [WavelengthStrategy::Uniform, WavelengthStrategy::HeroUniform] {
         let (pixel, mean) = measure(s, false);
         let (pixel_s, mean_s) = measure(s, true);
         eprintln!(
@@ -536,7 +536,7 @@ fn your_prism_variance(q: f64, lanes: fn(f64) -> Wavelengths) -> f64 {
 #[ignore = "exercise 3 of Wavelength sampling: fill in your_prism_variance, then run it"]
 fn exercise_3_mixed_terminations() {
     let d = d65();
-    let single = |u: f64| Strategy::Visible.sample(u);
+    let single = |u: f64| WavelengthStrategy::Visible.sample(u);
     for (name, lanes) in [
         ("hero visible", hero_visible as fn(f64) -> Wavelengths),
         ("visible, 1 λ", single),

@@ -63,11 +63,11 @@ fn accepts(s: &Summary, mu: f64) -> bool {
     p_value(s, mu) >= test_alpha()
 }
 
-const STRATEGIES: [Strategy; 4] = [
-    Strategy::Light,
-    Strategy::Bsdf,
-    Strategy::Mis(Heuristic::Balance),
-    Strategy::Mis(Heuristic::Power),
+const STRATEGIES: [IrradianceStrategy; 4] = [
+    IrradianceStrategy::Light,
+    IrradianceStrategy::Bsdf,
+    IrradianceStrategy::Mis(Heuristic::Balance),
+    IrradianceStrategy::Mis(Heuristic::Power),
 ];
 
 /// Integral of `pdf` over the cone of a sphere light seen from `p`, in `s` with

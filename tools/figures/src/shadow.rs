@@ -12,7 +12,7 @@ use raylemma::check::warp::square_point;
 use raylemma::rng;
 use raylemma::stats::ttest::Summary;
 use raylemma::transport::shadow::{
-    Heuristic, Light, QuadLight, SphereCone, SphereLight, Strategy, estimate_irradiance,
+    Heuristic, IrradianceStrategy, Light, QuadLight, SphereCone, SphereLight, estimate_irradiance,
     sphere_irradiance,
 };
 
@@ -37,11 +37,11 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-const STRATEGIES: [(&str, Strategy); 4] = [
-    ("light", Strategy::Light),
-    ("BSDF (cosine)", Strategy::Bsdf),
-    ("MIS (balance)", Strategy::Mis(Heuristic::Balance)),
-    ("MIS (power)", Strategy::Mis(Heuristic::Power)),
+const STRATEGIES: [(&str, IrradianceStrategy); 4] = [
+    ("light", IrradianceStrategy::Light),
+    ("BSDF (cosine)", IrradianceStrategy::Bsdf),
+    ("MIS (balance)", IrradianceStrategy::Mis(Heuristic::Balance)),
+    ("MIS (power)", IrradianceStrategy::Mis(Heuristic::Power)),
 ];
 
 /// A square light of side `side` at height 1 above the origin, facing down; the shading
@@ -323,7 +323,15 @@ fn sphere_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
             let mut s = Summary::default();
             for _ in 0..samples {
                 let (u, v) = (square_point(&mut rng), square_point(&mut rng));
-                s.push(estimate_irradiance(l, p, n, 1.0, Strategy::Light, u, v));
+                s.push(estimate_irradiance(
+                    l,
+                    p,
+                    n,
+                    1.0,
+                    IrradianceStrategy::Light,
+                    u,
+                    v,
+                ));
             }
             s.variance() / (exact * exact)
         };

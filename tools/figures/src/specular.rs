@@ -84,9 +84,9 @@ fn furnace_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     )?;
     writeln!(md, "|---|---|---:|---:|---:|")?;
     for material in [
-        Material::Mirror { rho: 1.0 },
-        Material::Glass { ior: 1.5 },
-        Material::Glass { ior: 2.4 },
+        FurnaceMaterial::Mirror { rho: 1.0 },
+        FurnaceMaterial::Glass { ior: 1.5 },
+        FurnaceMaterial::Glass { ior: 2.4 },
     ] {
         for cosine in [CosineTerm::Cancelled, CosineTerm::Kept] {
             let mut rng = rng::seeded(0xF0);
@@ -98,8 +98,8 @@ fn furnace_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
                 path.radiance
             }));
             let name = match material {
-                Material::Mirror { .. } => "mirror".to_string(),
-                Material::Glass { ior } => format!("glass, n = {ior}"),
+                FurnaceMaterial::Mirror { .. } => "mirror".to_string(),
+                FurnaceMaterial::Glass { ior } => format!("glass, n = {ior}"),
             };
             let weight = if cosine == CosineTerm::Cancelled {
                 "1 (delta, cosine cancelled)"

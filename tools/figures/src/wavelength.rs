@@ -15,7 +15,7 @@ use std::fmt::Write as _;
 
 use super::{Output, Record, Settings, timing};
 use raylemma::spectral::spectrum::{Spectrum, builtin};
-use raylemma::spectral::wavelength::{N, Strategy};
+use raylemma::spectral::wavelength::{N, WavelengthStrategy};
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -88,7 +88,7 @@ fn speed_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::new();
     writeln!(md, "| strategy | ns to generate the {N} lanes |")?;
     writeln!(md, "|---|---:|")?;
-    for s in Strategy::ALL {
+    for s in WavelengthStrategy::ALL {
         let ns = timing::median_ns_per_input(&us, reps, |u| {
             let w = s.sample(u);
             w.lambda[3] + w.pdf[0]

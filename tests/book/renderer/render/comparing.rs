@@ -94,7 +94,7 @@ fn total_variance(i: &Image) -> f64 {
 #[test]
 fn emission_wavelengths_agree_with_hero_visible_and_cut_the_noise() {
     let by_emission = lamp(None);
-    let by_visible = lamp(Some(&|u| Strategy::HeroVisible.sample(u)));
+    let by_visible = lamp(Some(&|u| WavelengthStrategy::HeroVisible.sample(u)));
     let c = compare(&by_emission, &by_visible, test_alpha()).unwrap();
     assert!(
         c.agree(),
@@ -108,8 +108,10 @@ fn emission_wavelengths_agree_with_hero_visible_and_cut_the_noise() {
     );
     // On a line spectrum the gain is the point of the emission chapter.
     let lps = "lamps/low-pressure-sodium.toml";
-    let gain = total_variance(&lamp_named(lps, Some(&|u| Strategy::HeroVisible.sample(u))))
-        / total_variance(&lamp_named(lps, None));
+    let gain = total_variance(&lamp_named(
+        lps,
+        Some(&|u| WavelengthStrategy::HeroVisible.sample(u)),
+    )) / total_variance(&lamp_named(lps, None));
     assert!(
         gain >= 10.0,
         "low-pressure sodium: the emission strategy's variance is only {gain} times lower"

@@ -20,12 +20,12 @@ fn ends_of_the_range_and_nan() {
             assert_eq!(f(nm), 0.0, "pdf at {nm}");
         }
     }
-    for s in Strategy::ALL {
+    for s in WavelengthStrategy::ALL {
         for u in [0.0, 0.25, 0.75, below] {
             let w = s.sample(u);
             for (l, p) in w.lambda.iter().zip(&w.pdf) {
                 assert!(p.is_finite() && *p >= 0.0, "{}: u = {u}: pdf {p}", s.name());
-                if s != Strategy::SeedBand {
+                if s != WavelengthStrategy::SeedBand {
                     assert!(
                         (LAMBDA_MIN..=LAMBDA_MAX).contains(l),
                         "{}: u = {u}: λ = {l}",

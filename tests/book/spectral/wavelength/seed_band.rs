@@ -35,7 +35,7 @@ fn seed_band_is_biased() {
 #[test]
 fn seed_band_barely_reduces_variance() {
     let d = d65();
-    let var = |s: Strategy| {
+    let var = |s: WavelengthStrategy| {
         let mut r = rng::seeded(10);
         Summary::of((0..200_000).map(|_| {
             s.sample(rng::uniform(&mut r, 0.0, 1.0))
@@ -45,9 +45,9 @@ fn seed_band_barely_reduces_variance() {
         .variance()
     };
     let (single, band, hero) = (
-        var(Strategy::Uniform),
-        var(Strategy::SeedBand),
-        var(Strategy::HeroUniform),
+        var(WavelengthStrategy::Uniform),
+        var(WavelengthStrategy::SeedBand),
+        var(WavelengthStrategy::HeroUniform),
     );
     assert!(band >= single / 2.0, "band {band} vs single {single}");
     assert!(hero <= single / 20.0, "hero {hero} vs single {single}");

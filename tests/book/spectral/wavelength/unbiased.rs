@@ -118,7 +118,7 @@ fn hero_balance_is_unbiased() {
 fn single_wavelengths_and_a_line_spectrum_are_unbiased() {
     let d = d65();
     let exact = sum(cie::xyz(|l| d.eval(l)));
-    let single = |s: Strategy| move |u| s.sample(u);
+    let single = |s: WavelengthStrategy| move |u| s.sample(u);
     let reweighted = |s: fn(f64) -> Wavelengths, pdf: f64| {
         move |u| {
             let mut w = s(u);
@@ -131,10 +131,10 @@ fn single_wavelengths_and_a_line_spectrum_are_unbiased() {
     let n = 100_000;
     assert_unbiased(
         "uniform single",
-        &estimates(n, 4, single(Strategy::Uniform), |l| d.eval(l)),
+        &estimates(n, 4, single(WavelengthStrategy::Uniform), |l| d.eval(l)),
         exact,
     );
-    let uniform = |u| Strategy::Uniform.sample(u);
+    let uniform = |u| WavelengthStrategy::Uniform.sample(u);
     assert_rejected(
         "uniform single, density of 380-780 nm",
         &estimates(n, 4, reweighted(uniform, 1.0 / 400.0), |l| d.eval(l)),
@@ -143,10 +143,10 @@ fn single_wavelengths_and_a_line_spectrum_are_unbiased() {
     let exact = sum(cie::xyz(blackbody));
     assert_unbiased(
         "visible single",
-        &estimates(n, 5, single(Strategy::Visible), blackbody),
+        &estimates(n, 5, single(WavelengthStrategy::Visible), blackbody),
         exact,
     );
-    let visible = |u| Strategy::Visible.sample(u);
+    let visible = |u| WavelengthStrategy::Visible.sample(u);
     assert_rejected(
         "visible single, uniform weight",
         &estimates(n, 5, reweighted(visible, 1.0 / RANGE), blackbody),

@@ -159,7 +159,7 @@ fn cone_sampling_beats_cap_area_sampling() {
         let light = SphereLight::new(DVec3::new(0.0, 0.0, d), 1.0).unwrap();
         let n = DVec3::new(0.0, 0.0, 1.0);
         let area = mean_of(60, N, |a, b| {
-            estimate_irradiance(&light, DVec3::ZERO, n, 1.0, Strategy::Light, a, b)
+            estimate_irradiance(&light, DVec3::ZERO, n, 1.0, IrradianceStrategy::Light, a, b)
         });
         let cone = mean_of(60, N, |a, b| {
             estimate_irradiance(
@@ -167,7 +167,7 @@ fn cone_sampling_beats_cap_area_sampling() {
                 DVec3::ZERO,
                 n,
                 1.0,
-                Strategy::Light,
+                IrradianceStrategy::Light,
                 a,
                 b,
             )

@@ -7,26 +7,26 @@ use super::style::{
 };
 use super::svg::Svg;
 use crate::{Record, Settings};
-use raylemma::spectral::wavelength::{self, N, Strategy};
+use raylemma::spectral::wavelength::{self, N, WavelengthStrategy};
 use raylemma::spectral::{LAMBDA_MAX, LAMBDA_MIN, cie};
 
 /// The uniform number every row of the lanes diagram is drawn with.
 const LANES_U: f64 = 0.3;
 
 /// What each lane of a strategy is weighted by, in the chapter's notation.
-fn lane_weights(s: Strategy) -> &'static str {
+fn lane_weights(s: WavelengthStrategy) -> &'static str {
     match s {
-        Strategy::Uniform => "one lane, *p* = 1/470",
-        Strategy::Visible => "one lane, *p*(*λ*₀)",
-        Strategy::HeroUniform => "each *p*_*j* = 1/470",
-        Strategy::HeroVisible => "each *p*_*j* = *p*(*λ*_*j*)",
-        Strategy::HeroBalance => "each *p*_*j* = Σ_*k* *p*(*λ*_*k*) / *N*",
-        Strategy::SeedBand => "each *p*_*j* = 1/400, 5 nm apart",
+        WavelengthStrategy::Uniform => "one lane, *p* = 1/470",
+        WavelengthStrategy::Visible => "one lane, *p*(*λ*₀)",
+        WavelengthStrategy::HeroUniform => "each *p*_*j* = 1/470",
+        WavelengthStrategy::HeroVisible => "each *p*_*j* = *p*(*λ*_*j*)",
+        WavelengthStrategy::HeroBalance => "each *p*_*j* = Σ_*k* *p*(*λ*_*k*) / *N*",
+        WavelengthStrategy::SeedBand => "each *p*_*j* = 1/400, 5 nm apart",
     }
 }
 
 pub(super) fn hero_lanes(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
-    let rows = Strategy::ALL.len();
+    let rows = WavelengthStrategy::ALL.len();
     let row_gap = 44.0;
     let first_row = 262.0;
     let mut d = Svg::new(first_row + row_gap * (rows as f64 - 1.0) + 62.0);
@@ -85,7 +85,7 @@ pub(super) fn hero_lanes(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>
     );
 
     // One row per strategy: the lanes of one sample.
-    for (row, &s) in Strategy::ALL.iter().enumerate() {
+    for (row, &s) in WavelengthStrategy::ALL.iter().enumerate() {
         let yr = first_row + row_gap * row as f64;
         d.text(v(x0, yr - 15.0), s.name(), font(NOTE).start());
         d.text(
@@ -93,7 +93,7 @@ pub(super) fn hero_lanes(_: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>
             lane_weights(s),
             font(NOTE).colour(GREY).end(),
         );
-        let (lo, hi) = if s == Strategy::SeedBand {
+        let (lo, hi) = if s == WavelengthStrategy::SeedBand {
             let band = wavelength::SEED_BAND;
             (band.lo, band.hi + (N as f64 - 1.0) * band.spacing)
         } else {

@@ -12,7 +12,7 @@ use crate::plot::{self, Panel, Series};
 use crate::{Record, Settings, timing};
 use raylemma::rng;
 use raylemma::spectral::cie;
-use raylemma::spectral::wavelength::Strategy;
+use raylemma::spectral::wavelength::WavelengthStrategy;
 
 pub(super) fn error_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let (repeats, max_pow, reps) = if settings.quick {
@@ -25,7 +25,7 @@ pub(super) fn error_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<V
     for (name, spectrum) in spectra().into_iter().filter(|(n, _)| chosen.contains(n)) {
         let exact = cie::xyz(|l| spectrum.eval(l));
         let mut series = Vec::new();
-        for s in Strategy::ALL {
+        for s in WavelengthStrategy::ALL {
             let ns = ns_per_path(s, &spectrum, reps);
             let mut r = rng::seeded(0xE44);
             let points = (2..=max_pow)
@@ -61,14 +61,14 @@ pub(super) fn error_svg(settings: &Settings, _: &mut Record) -> anyhow::Result<V
 }
 
 /// A strategy as a value name (the renderer's names, `hero-visible` as `hero_visible`).
-fn strategy_key(s: Strategy) -> &'static str {
+fn strategy_key(s: WavelengthStrategy) -> &'static str {
     match s {
-        Strategy::Uniform => "uniform",
-        Strategy::Visible => "visible",
-        Strategy::HeroUniform => "hero_uniform",
-        Strategy::HeroVisible => "hero_visible",
-        Strategy::HeroBalance => "hero_balance",
-        Strategy::SeedBand => "seed_band",
+        WavelengthStrategy::Uniform => "uniform",
+        WavelengthStrategy::Visible => "visible",
+        WavelengthStrategy::HeroUniform => "hero_uniform",
+        WavelengthStrategy::HeroVisible => "hero_visible",
+        WavelengthStrategy::HeroBalance => "hero_balance",
+        WavelengthStrategy::SeedBand => "seed_band",
     }
 }
 
@@ -105,7 +105,7 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
     for (_, spectrum) in &spectra {
         let exact = cie::xyz(|l| spectrum.eval(l));
         variance.push(
-            Strategy::ALL
+            WavelengthStrategy::ALL
                 .map(|s| relative_variance(s, spectrum, exact, n))
                 .to_vec(),
         );
@@ -125,7 +125,7 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
         "**Relative variance per path** (mean over X, Y, Z of Var / exact²; smaller is better)\n"
     )?;
     header(&mut md, "strategy")?;
-    for (i, s) in Strategy::ALL.iter().enumerate() {
+    for (i, s) in WavelengthStrategy::ALL.iter().enumerate() {
         write!(md, "| {} |", s.name())?;
         for v in &variance {
             write!(md, " {:.4} |", v[i])?;
@@ -134,7 +134,7 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
     }
     writeln!(md, "\n**ns per path** (lanes and the XYZ estimate)\n")?;
     header(&mut md, "strategy")?;
-    for (i, s) in Strategy::ALL.iter().enumerate() {
+    for (i, s) in WavelengthStrategy::ALL.iter().enumerate() {
         write!(md, "| {} |", s.name())?;
         for t in &times {
             write!(md, " {:.0} |", t[i])?;
@@ -153,7 +153,7 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
         .zip(&times)
         .map(|(v, t)| (0..v.len()).map(|i| v[0] * t[0] / (v[i] * t[i])).collect())
         .collect();
-    for (i, s) in Strategy::ALL.iter().enumerate() {
+    for (i, s) in WavelengthStrategy::ALL.iter().enumerate() {
         write!(md, "| {} |", s.name())?;
         for ((name, _), e) in spectra.iter().zip(&efficiency) {
             let key = format!("{}.{}.efficiency", spectrum_key(name), strategy_key(*s));
@@ -161,13 +161,13 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
         }
         writeln!(md)?;
     }
-    let hero = Strategy::ALL
+    let hero = WavelengthStrategy::ALL
         .iter()
-        .position(|&s| s == Strategy::HeroVisible)
+        .position(|&s| s == WavelengthStrategy::HeroVisible)
         .context("no hero-visible strategy")?;
-    let seed = Strategy::ALL
+    let seed = WavelengthStrategy::ALL
         .iter()
-        .position(|&s| s == Strategy::SeedBand)
+        .position(|&s| s == WavelengthStrategy::SeedBand)
         .context("no seed's band strategy")?;
     // The smallest relative variance of every spectrum: hero-visible's?
     let not_smallest: Vec<&str> = spectra
@@ -199,11 +199,16 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
     let seed_below = efficiency.iter().filter(|e| e[seed] < 1.0).count();
     r.number("seed_band_below_uniform.count", seed_below as f64, "int");
     r.number("spectra.count", spectra.len() as f64, "int");
-    let at = |s: Strategy| Strategy::ALL.iter().position(|&t| t == s).unwrap_or(0);
+    let at = |s: WavelengthStrategy| {
+        WavelengthStrategy::ALL
+            .iter()
+            .position(|&t| t == s)
+            .unwrap_or(0)
+    };
     let (uniform, hero_uniform, balance) = (
-        at(Strategy::Uniform),
-        at(Strategy::HeroUniform),
-        at(Strategy::HeroBalance),
+        at(WavelengthStrategy::Uniform),
+        at(WavelengthStrategy::HeroUniform),
+        at(WavelengthStrategy::HeroBalance),
     );
     let names = |pred: &dyn Fn(usize) -> bool| -> Vec<&str> {
         (0..spectra.len())
@@ -323,7 +328,7 @@ pub(super) fn efficiency_md(settings: &Settings, r: &mut Record) -> anyhow::Resu
         .iter()
         .position(|(name, _)| *name == "low-pr. sodium")
         .context("no low-pressure sodium spectrum")?;
-    let easier: Vec<&str> = Strategy::ALL
+    let easier: Vec<&str> = WavelengthStrategy::ALL
         .iter()
         .enumerate()
         .filter(|&(i, _)| {

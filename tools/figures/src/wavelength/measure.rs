@@ -9,11 +9,11 @@ use glam::DVec3;
 use crate::timing;
 use raylemma::rng;
 use raylemma::spectral::spectrum::Spectrum;
-use raylemma::spectral::wavelength::Strategy;
+use raylemma::spectral::wavelength::WavelengthStrategy;
 use raylemma::stats::ttest::Summary;
 
 /// The XYZ estimate of one path.
-pub(super) fn path_xyz(s: Strategy, u: f64, spectrum: &Spectrum) -> DVec3 {
+pub(super) fn path_xyz(s: WavelengthStrategy, u: f64, spectrum: &Spectrum) -> DVec3 {
     s.sample(u).xyz(|l| spectrum.eval(l))
 }
 
@@ -58,7 +58,7 @@ pub(super) fn ns_per_path_all(spectrum: &Spectrum, reps: usize) -> Vec<f64> {
     let mut r = rng::seeded(0x7173);
     let us: Vec<f64> = (0..batch).map(|_| rng::uniform(&mut r, 0.0, 1.0)).collect();
     let us = &us;
-    let mut batches: Vec<Box<dyn FnMut() -> u64 + '_>> = Strategy::ALL
+    let mut batches: Vec<Box<dyn FnMut() -> u64 + '_>> = WavelengthStrategy::ALL
         .iter()
         .map(|&s| {
             Box::new(move || {
@@ -74,7 +74,7 @@ pub(super) fn ns_per_path_all(spectrum: &Spectrum, reps: usize) -> Vec<f64> {
 }
 
 /// ns per path (lanes and XYZ estimate) of strategy `s` on `spectrum`.
-pub(super) fn ns_per_path(s: Strategy, spectrum: &Spectrum, reps: usize) -> f64 {
+pub(super) fn ns_per_path(s: WavelengthStrategy, spectrum: &Spectrum, reps: usize) -> f64 {
     let batch = 2000;
     let mut r = rng::seeded(0x7173);
     let us: Vec<f64> = (0..batch).map(|_| rng::uniform(&mut r, 0.0, 1.0)).collect();
@@ -88,7 +88,12 @@ pub(super) fn ns_per_path(s: Strategy, spectrum: &Spectrum, reps: usize) -> f64 
 }
 
 /// Relative variance per path: the mean over X, Y, Z of `Var[est] / exact²`.
-pub(super) fn relative_variance(s: Strategy, spectrum: &Spectrum, exact: DVec3, n: usize) -> f64 {
+pub(super) fn relative_variance(
+    s: WavelengthStrategy,
+    spectrum: &Spectrum,
+    exact: DVec3,
+    n: usize,
+) -> f64 {
     let mut r = rng::seeded(0x5EED);
     let mut sums = [Summary::default(), Summary::default(), Summary::default()];
     for _ in 0..n {
