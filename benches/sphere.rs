@@ -7,8 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use raylemma::check::Real;
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
+use raylemma::real::Real;
 use raylemma::single::geometry::sphere as single;
 use raylemma::workload::timing_rays;
 

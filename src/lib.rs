@@ -5,7 +5,8 @@
 //! (`chapters/`), and has one test file (`tests/`).
 //!
 //! * [`precision`]: the two precisions (`f64`, `f32`) the geometry, samplers and frames
-//!   are written for; [`single`] holds their `f32` twins.
+//!   are written for; [`single`] holds their `f32` twins, and [`real`] the trait that lets
+//!   one harness choose between them.
 //! * [`geometry`]: rays and spheres (*Ray-sphere intersection*).
 //! * [`check`]: the checkers a student runs on their own implementation.
 //! * [`data`]: errors of data files (file, line, problem).
@@ -35,6 +36,7 @@ pub mod numeric;
 pub mod optics;
 pub use raylemma_output as output;
 pub mod precision;
+pub mod real;
 pub mod render;
 pub mod rng;
 pub mod sampling;

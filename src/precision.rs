@@ -24,7 +24,7 @@
 //!
 //! A dual file refers to another one relatively (`super::disc::disc_concentric`), so each
 //! twin calls its own twin. The sphere checker compares the two precisions through the
-//! trait [`crate::check::Real`].
+//! trait [`crate::real::Real`].
 
 /// Double precision: `f64`, `DVec2`, `DVec3`. The precision of `crate::geometry` and
 /// `crate::sampling`.

@@ -6,7 +6,7 @@ use crate::sampling::sphere::sphere_uniform;
 use glam::DVec3;
 use rand::RngExt as _;
 
-use crate::check::Real;
+use crate::real::Real;
 use crate::rng;
 use crate::sampling::tabulated::{Piecewise1D, PiecewiseLinear1D};
 

@@ -46,8 +46,9 @@
 //!   another, its canonical scenes against their references, and the conformance ladder
 //!   (*Testing the renderer*, *Reference scenes and interop*).
 //!
-//! [`Real`] (a scalar, `f32` or `f64`, with its vector, ray and sphere, so that one checker
-//! serves both precisions) and [`max_abs`] are shared by all of them.
+//! [`max_abs`] is shared by all of them. The sphere checker's [`crate::real::Real`] (a
+//! scalar, `f32` or `f64`, with its vector, ray and sphere, so that one checker serves both
+//! precisions) lives beside the precisions it chooses between.
 //!
 //! The report card of the student edition ([`crate::exercise::card`]) runs these on the
 //! crate's own functions, one exercise at a time.
@@ -63,7 +64,6 @@ pub mod external;
 pub mod fresnel;
 pub mod importance;
 pub mod lambert;
-mod real;
 pub mod reflect;
 pub mod render;
 pub mod roulette;
@@ -78,7 +78,6 @@ pub mod wavelength;
 
 /// Re-exported from [`crate::numeric`], where the derivations find it too.
 pub use crate::numeric::max_abs;
-pub use real::Real;
 
 use std::fmt;
 

@@ -20,7 +20,8 @@ pub mod planted;
 use crate::sampling::sphere::sphere_uniform;
 use glam::DVec3;
 
-use super::{Finding, Options, Real, Verdict};
+use super::{Finding, Options, Verdict};
+use crate::real::Real;
 use crate::rng::{self, Rng, log_uniform, uniform};
 
 /// Anything that intersects a ray with a sphere: returns the smallest `t > t_min` with

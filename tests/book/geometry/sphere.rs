@@ -6,10 +6,11 @@
 
 use glam::{DVec3, Vec3};
 use quickcheck::{Arbitrary, Gen, QuickCheck, TestResult};
+use raylemma::check::Options;
 use raylemma::check::sphere::{self as check, SILHOUETTE_BAND, T_ERROR_BOUND, planted};
-use raylemma::check::{Options, Real};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook, nearest_root_above};
 use raylemma::geometry::{Ray, Sphere};
+use raylemma::real::Real;
 use raylemma::single::geometry::sphere as single;
 use raylemma::single::geometry::{Ray as Ray32, Sphere as Sphere32};
 

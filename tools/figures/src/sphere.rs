@@ -7,9 +7,10 @@ use glam::DVec3;
 
 use super::{Output, Record, Settings, timing};
 use crate::plot::{self, Panel, Series};
+use raylemma::check::Options;
 use raylemma::check::sphere::{self as check, FAR_DISTANCES, FarRow, SphereIntersector};
-use raylemma::check::{Options, Real};
 use raylemma::geometry::sphere::{intersect_stable, intersect_textbook};
+use raylemma::real::Real;
 use raylemma::single::geometry::sphere::{
     intersect_stable as stable32, intersect_textbook as textbook32,
 };
