@@ -88,7 +88,7 @@ struct Read {
 pub fn build_id() -> Option<String> {
     let exe = std::env::current_exe().ok()?;
     let bytes = std::fs::read(exe).ok()?;
-    Some(format!("{:016x}", super::format::fnv1a(&bytes)))
+    Some(format!("{:016x}", super::raw::fnv1a(&bytes)))
 }
 
 impl Sidecar {

@@ -4,8 +4,10 @@
 //!
 //! A scene file goes through these files, in this order:
 //!
-//! * [`format`](mod@format): the TOML file as written (serde's raw tables, with byte
-//!   spans), and the entry points [`parse`] and [`load`];
+//! * [`format`](mod@format): the TOML file as written, and the entry points [`parse`] and
+//!   [`load`];
+//! * `raw` (private): serde's raw tables of the file, with byte spans, and the helpers that
+//!   read them (the line of a span, the file's hash);
 //! * `validate` (private): the checker that turns the raw tables into the model, or
 //!   refuses the file with its line and the reason;
 //! * [`scene`]: the model, [`Scene`], and its geometric queries (the first surface along a
@@ -38,6 +40,7 @@ pub mod integrator;
 pub mod merge;
 pub mod pixel;
 pub mod provenance;
+mod raw;
 pub mod scene;
 pub mod tracer;
 mod validate;

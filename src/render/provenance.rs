@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
-use super::format::fnv1a;
+use super::raw::fnv1a;
 use super::scene::Scene;
 use crate::output::FileError;
 

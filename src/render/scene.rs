@@ -10,7 +10,6 @@
 
 use glam::DVec3;
 
-use super::format::WAVELENGTH_STRATEGIES;
 use crate::geometry::Ray;
 use crate::geometry::parallelogram::Parallelogram;
 use crate::geometry::sphere::{Sphere, intersect_stable};
@@ -18,12 +17,30 @@ use crate::optics::dispersion::Sellmeier;
 use crate::spectral::emission::{EmissionSampler, WavelengthSample};
 use crate::spectral::spectrum::Spectrum;
 use crate::spectral::wavelength::{N, WavelengthStrategy, Wavelengths, rotate01};
-use crate::transport::shadow::{Light, QuadLight, SphereLight};
+use crate::transport::shadow::{Heuristic, Light, QuadLight, SphereLight};
 
 /// The strategies of direct lighting: the shadow-ray chapter's
 /// ([`crate::transport::shadow::IrradianceStrategy`]), used by the path tracer at every diffuse
 /// bounce.
 pub use crate::transport::shadow::IrradianceStrategy as DirectLight;
+
+/// The names the `wavelengths` key accepts, with their strategies (and `"emission"`,
+/// [`Wavelength::Emission`]).
+pub const WAVELENGTH_STRATEGIES: [(&str, WavelengthStrategy); 5] = [
+    ("uniform", WavelengthStrategy::Uniform),
+    ("visible", WavelengthStrategy::Visible),
+    ("hero-uniform", WavelengthStrategy::HeroUniform),
+    ("hero-visible", WavelengthStrategy::HeroVisible),
+    ("hero-balance", WavelengthStrategy::HeroBalance),
+];
+
+/// The names the `direct` key accepts, with their strategies of direct lighting.
+pub const DIRECT_STRATEGIES: [(&str, DirectLight); 4] = [
+    ("mis-power", DirectLight::Mis(Heuristic::Power)),
+    ("mis-balance", DirectLight::Mis(Heuristic::Balance)),
+    ("light", DirectLight::Light),
+    ("bsdf", DirectLight::Bsdf),
+];
 
 /// A checked scene, ready to render.
 #[derive(Clone, Debug)]

@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
-use super::format::{line_of, raw_tables};
+use super::raw::{line_of, raw_tables};
 use super::scene::Scene;
 use super::validate;
 use crate::data::DataError;
@@ -165,7 +165,7 @@ pub fn extent(scene: &Scene, p: DVec3) -> f64 {
 
 /// The name of a direct-lighting strategy in the scene format.
 pub fn direct_name(d: crate::render::scene::DirectLight) -> &'static str {
-    crate::render::format::DIRECT_STRATEGIES
+    crate::render::scene::DIRECT_STRATEGIES
         .iter()
         .find(|(_, s)| *s == d)
         .map_or("other", |(n, _)| n)

@@ -10,7 +10,7 @@ use toml::Spanned;
 use super::Checker;
 use crate::data::DataError;
 use crate::optics::dispersion;
-use crate::render::format::RawMaterial;
+use crate::render::raw::RawMaterial;
 use crate::render::scene::{Ior, Material, Thickness};
 use crate::spectral::spectrum::Spectrum;
 

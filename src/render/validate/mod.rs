@@ -1,4 +1,4 @@
-//! The checker that turns the raw tables of a scene file ([`super::format`]) into the
+//! The checker that turns the raw tables of a scene file ([`super::raw`]) into the
 //! model ([`super::scene`]): every number, name and combination is checked before a single
 //! ray is traced, and every problem is a [`DataError`] naming the file, the line and what
 //! is wrong (an unknown key or material, a negative radius, an index of refraction `<= 0`,
@@ -23,7 +23,7 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use toml::Spanned;
 
-use super::format::{RawScene, fnv1a, line_of};
+use super::raw::{RawScene, fnv1a, line_of};
 use super::scene::Scene;
 use crate::data::DataError;
 

@@ -7,14 +7,18 @@ use toml::Spanned;
 
 use super::Checker;
 use crate::data::DataError;
-use crate::render::format::{
-    DIRECT_STRATEGIES, MAX_RESOLUTION, RawCamera, RawRender, WAVELENGTH_STRATEGIES,
+use crate::render::raw::{RawCamera, RawRender};
+use crate::render::scene::{
+    CameraSpec, DIRECT_STRATEGIES, DirectLight, Emitter, RenderSettings, WAVELENGTH_STRATEGIES,
+    Wavelength,
 };
-use crate::render::scene::{CameraSpec, DirectLight, Emitter, RenderSettings, Wavelength};
 use crate::spectral::emission::{EmissionSampler, colour_proposal};
 use crate::spectral::spectrum::Spectrum;
 use crate::spectral::wavelength::WavelengthStrategy;
 use crate::transport::shadow::Heuristic;
+
+/// The largest accepted image side, in pixels.
+const MAX_RESOLUTION: i64 = 16_384;
 
 impl Checker<'_> {
     /// `[render]`: samples per pixel, seed, wavelength strategy (`"emission"` is resolved

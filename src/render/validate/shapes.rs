@@ -14,7 +14,7 @@ use super::Checker;
 use crate::data::DataError;
 use crate::geometry::parallelogram::{Degenerate, Parallelogram};
 use crate::geometry::sphere::Sphere;
-use crate::render::format::{RawCamera, RawShape};
+use crate::render::raw::{RawCamera, RawShape};
 use crate::render::scene::{Emitter, Geometry, LightShape, Material, Shape};
 use crate::spectral::spectrum::Spectrum;
 use crate::transport::shadow::{QuadLight, SphereLight};

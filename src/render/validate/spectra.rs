@@ -11,7 +11,7 @@ use toml::Spanned;
 
 use super::Checker;
 use crate::data::DataError;
-use crate::render::format::{RawEnvironment, RawSpectrum};
+use crate::render::raw::{RawEnvironment, RawSpectrum};
 use crate::render::scene::Environment;
 use crate::spectral::spectrum::{self, Spectrum, Table};
 use crate::spectral::{cie, emission};
