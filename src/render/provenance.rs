@@ -203,21 +203,12 @@ pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, FileError> {
             queue.push_back(p);
         }
     };
-    let render = src.join("render");
-    let mut stack = vec![render];
-    while let Some(dir) = stack.pop() {
-        let entries = std::fs::read_dir(&dir)
-            .map_err(|e| FileError::new(&dir, format!("cannot list: {e}")))?;
-        for e in entries.flatten() {
-            let p = e.path();
-            let not_pixels = ["compare.rs", "provenance.rs"]
-                .iter()
-                .any(|n| p.file_name().is_some_and(|f| f == *n));
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "rs") && !not_pixels {
-                push(p, &mut seen, &mut queue);
-            }
+    for p in crate::output::files_under(&src, &["render"])? {
+        let not_pixels = ["compare.rs", "provenance.rs"]
+            .iter()
+            .any(|n| p.file_name().is_some_and(|f| f == *n));
+        if p.extension().is_some_and(|x| x == "rs") && !not_pixels {
+            push(p, &mut seen, &mut queue);
         }
     }
     while let Some(file) = queue.pop_front() {

@@ -65,9 +65,11 @@ impl fmt::Display for Problem {
 /// where figures are copied from. Returns all problems found, sorted by file and line; an
 /// `Err` only for I/O errors while walking `src_dir` itself.
 pub fn check_chapters(root: &Path, src_dir: &Path) -> io::Result<Vec<Problem>> {
-    let mut files = Vec::new();
-    collect_markdown(src_dir, &mut files)?;
-    files.sort();
+    let files: Vec<PathBuf> = raylemma_output::files_under(src_dir, &[""])
+        .map_err(io::Error::other)?
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
     let mut checker = Checker::new(root, src_dir);
     let mut problems = Vec::new();
     for file in &files {
@@ -81,19 +83,6 @@ pub fn check_chapters(root: &Path, src_dir: &Path) -> io::Result<Vec<Problem>> {
         }
     }
     Ok(problems)
-}
-
-fn collect_markdown(dir: &Path, out: &mut Vec<PathBuf>) -> io::Result<()> {
-    for entry in fs::read_dir(dir)? {
-        let entry = entry?;
-        let path = entry.path();
-        if entry.file_type()?.is_dir() {
-            collect_markdown(&path, out)?;
-        } else if path.extension().is_some_and(|e| e == "md") {
-            out.push(path);
-        }
-    }
-    Ok(())
 }
 
 /// Scanner state: the two directories paths resolve against, and a cache of included files.

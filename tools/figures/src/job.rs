@@ -121,24 +121,10 @@ const KEPT_WHILE_CODE_UNCHANGED: [&str; 9] = [
 /// # Errors
 /// If a file cannot be read.
 fn code_version(root: &Path) -> anyhow::Result<String> {
-    let mut files = Vec::new();
-    let mut stack = vec![
-        root.join("src"),
-        root.join("data"),
-        root.join("scenes"),
-        root.join("tools/examples"),
-        root.join("tools/figures/src"),
-    ];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).with_context(|| d.display().to_string())? {
-            let p = e?.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                files.push(p);
-            }
-        }
-    }
+    let mut files = raylemma::output::files_under(
+        root,
+        &["src", "data", "scenes", "tools/examples", "tools/figures/src"],
+    )?;
     files.push(root.join("Cargo.lock"));
     files.sort();
     let mut all = Vec::new();

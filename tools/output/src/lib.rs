@@ -319,9 +319,14 @@ impl StagedDir {
     /// A [`FileError`] naming the file or folder that failed; `target` is then as it was
     /// (folders this call created are removed again), and the staging folder is removed.
     pub fn commit_files(self) -> Result<Vec<PathBuf>, FileError> {
-        let mut relative = Vec::new();
-        files_under(&self.staging, Path::new(""), &mut relative)?;
-        relative.sort();
+        let relative: Vec<PathBuf> = files_under(&self.staging, &[""])?
+            .into_iter()
+            .map(|p| {
+                p.strip_prefix(&self.staging)
+                    .map(Path::to_path_buf)
+                    .unwrap_or(p)
+            })
+            .collect();
         let mut created = Vec::new();
         let result = self.make_folders(&relative, &mut created).and_then(|()| {
             let set = FileSet {
@@ -416,22 +421,82 @@ impl Drop for StagedDir {
     }
 }
 
-/// Every file under `root.join(rel)`, as paths relative to `root`, appended to `out`.
-fn files_under(root: &Path, rel: &Path, out: &mut Vec<PathBuf>) -> Result<(), FileError> {
-    let dir = root.join(rel);
-    let entries =
-        fs::read_dir(&dir).map_err(|e| FileError::new(&dir, format!("cannot list: {e}")))?;
-    for entry in entries {
-        let entry = entry.map_err(|e| FileError::new(&dir, format!("cannot list: {e}")))?;
-        let rel = rel.join(entry.file_name());
-        let kind = entry
-            .file_type()
-            .map_err(|e| FileError::new(root.join(&rel), e.to_string()))?;
-        if kind.is_dir() {
-            files_under(root, &rel, out)?;
-        } else {
-            out.push(rel);
+/// Every file under the folders `dirs` of `root` (each `root.join(dir)`, its subfolders
+/// too; an empty `dir` is `root` itself), as paths that begin with `root`, sorted: the one
+/// walker of the project, for "which files make X" (the renderer's source closure, the
+/// figure job's code version, the book's chapters) and for the files a [`StagedDir`]
+/// holds. A folder is entered; anything else, a link too, is a file. A file under two of
+/// `dirs` is listed twice.
+///
+/// # Errors
+/// A [`FileError`] naming a folder that cannot be listed.
+pub fn files_under<P: AsRef<Path>>(root: &Path, dirs: &[P]) -> Result<Vec<PathBuf>, FileError> {
+    let mut files = Vec::new();
+    let mut stack: Vec<PathBuf> = dirs
+        .iter()
+        .map(|d| {
+            let d = d.as_ref();
+            if d.as_os_str().is_empty() {
+                root.to_path_buf()
+            } else {
+                root.join(d)
+            }
+        })
+        .collect();
+    while let Some(dir) = stack.pop() {
+        let cannot_list = |e: std::io::Error| FileError::new(&dir, format!("cannot list: {e}"));
+        for entry in fs::read_dir(&dir).map_err(cannot_list)? {
+            let entry = entry.map_err(cannot_list)?;
+            let path = entry.path();
+            let kind = entry
+                .file_type()
+                .map_err(|e| FileError::new(&path, e.to_string()))?;
+            if kind.is_dir() {
+                stack.push(path);
+            } else {
+                files.push(path);
+            }
         }
     }
-    Ok(())
+    files.sort();
+    Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn files_under_lists_every_file_of_the_folders_sorted() {
+        let root =
+            std::env::temp_dir().join(format!("raylemma-files-under-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&root);
+        for f in [
+            "a/z.txt",
+            "a/b/y.rs",
+            "a/b/c/x.md",
+            "a/b.txt",
+            "d/w.txt",
+            "top.txt",
+        ] {
+            let p = root.join(f);
+            fs::create_dir_all(p.parent().unwrap()).unwrap();
+            fs::write(&p, f).unwrap();
+        }
+        fs::create_dir_all(root.join("a/empty")).unwrap();
+        let at = |fs: &[&str]| fs.iter().map(|f| root.join(f)).collect::<Vec<_>>();
+        assert_eq!(
+            files_under(&root, &["a"]).unwrap(),
+            at(&["a/b/c/x.md", "a/b/y.rs", "a/b.txt", "a/z.txt"])
+        );
+        assert_eq!(
+            files_under(&root, &["d", "a/b"]).unwrap(),
+            at(&["a/b/c/x.md", "a/b/y.rs", "d/w.txt"])
+        );
+        assert_eq!(files_under(&root, &[""]).unwrap().len(), 6);
+        assert!(files_under::<&str>(&root, &[]).unwrap().is_empty());
+        let missing = files_under(&root, &["nowhere"]).unwrap_err();
+        assert!(missing.to_string().contains("cannot list"), "{missing}");
+        fs::remove_dir_all(&root).unwrap();
+    }
 }
