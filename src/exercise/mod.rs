@@ -9,10 +9,13 @@
 //!   with `--solutions` for the teachers' copy);
 //! * [`registry`]: which checkers judge each exercise, and what each one unlocks;
 //! * [`card`]: the report card that the edition's `cargo test` prints at its end;
+//! * [`disc_rows`]: the chapter's look inside a failed chi-squared test (the counts of three
+//!   rows of the disc's cells), which its tests run and the figure job writes;
 //! * [`grade`]: a submission's exercise bodies put into the edition's own code, and its
 //!   score from the teacher's weights (`raylemma grade`).
 
 pub mod card;
+pub mod disc_rows;
 pub mod edition;
 pub mod grade;
 pub mod marker;

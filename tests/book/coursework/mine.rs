@@ -91,7 +91,8 @@ fn my_optics() {
 /// central row gets more than four times its share, the outer row half.
 #[test]
 fn where_is_my_disc_wrong() {
-    let text = super::rows::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
+    let text =
+        raylemma::exercise::disc_rows::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
     println!("{text}");
     let ratio = |row: &str| -> f64 {
         let line = text.lines().find(|l| l.starts_with(row)).unwrap();

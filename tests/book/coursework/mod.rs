@@ -8,8 +8,6 @@ mod checkers;
 mod edition;
 /// The chapter's test file of one's own, shown by anchor.
 mod mine;
-/// The chapter's look inside a chi-squared test (shared with the figure job).
-mod rows;
 
 use raylemma::check::reflect::{self, REFLECTION_SEED, REFRACTION_SEED};
 use raylemma::check::{Finding, Options, Verdict, max_abs};

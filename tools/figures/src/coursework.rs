@@ -541,7 +541,7 @@ fn card_txt(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
 /// The ratios it prints are recorded from the same counts, drawn again here (with the same
 /// samples: the seed is fixed), and must be the ones printed.
 fn disc_rows_txt(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
-    let text = tests_mine::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
+    let text = exercise::disc_rows::where_is_my_disc_wrong_text(warp::planted::disc_r_equals_u);
     let options = warp::WarpOptions::from(warp_options());
     let disc = SquareWarp::new(
         "disc r = u1",
@@ -588,8 +588,3 @@ fn disc_rows_txt(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     );
     Ok(text.into_bytes())
 }
-
-/// The chapter's example, shared with `tests/book/coursework/mine.rs` by `#[path]`: the
-/// same code prints the rows there and writes them here.
-#[path = "../../../tests/book/coursework/rows.rs"]
-mod tests_mine;

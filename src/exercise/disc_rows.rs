@@ -1,11 +1,13 @@
 //! The chapter *Coursework*'s look inside a failed chi-squared test: the sample counts of
-//! three rows of the disc's cells. Compiled twice: in the book's tests (`mine.rs`) and by
-//! the figure job (`tools/figures/src/coursework.rs`), which writes what it prints.
+//! three rows of the disc's cells. The chapter shows this function; the book's tests
+//! (`tests/book/coursework/mine.rs`) run it, and the figure job
+//! (`tools/figures/src/coursework.rs`) writes what it prints.
 
 use glam::{DVec2, DVec3};
-use raylemma::check::Options;
-use raylemma::check::warp::{self, Domain, SquareWarp};
-use raylemma::sampling::disc::disc_pdf;
+
+use crate::check::Options;
+use crate::check::warp::{self, Domain, SquareWarp};
+use crate::sampling::disc::disc_pdf;
 
 // ANCHOR: rows
 /// The observed and expected counts of rows 0, 10 and 20 of the disc's cells (rows in
