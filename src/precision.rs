@@ -35,7 +35,7 @@ pub mod double {
     pub use std::f64::consts;
 
     /// `v` as a `DVec3`: the identity.
-    pub fn widen(v: V3) -> glam::DVec3 {
+    pub(crate) fn widen(v: V3) -> glam::DVec3 {
         v
     }
 }
@@ -49,7 +49,7 @@ pub mod single {
     pub use std::f32::consts;
 
     /// `v` widened to a `DVec3` (exact: every `f32` is an `f64`).
-    pub fn widen(v: V3) -> glam::DVec3 {
+    pub(crate) fn widen(v: V3) -> glam::DVec3 {
         v.as_dvec3()
     }
 }

@@ -196,7 +196,7 @@ fn first_line(text: &str) -> &str {
 /// many cases it is wrong and by how much (the worst error, in its unit, against what the
 /// claim allows), the input that shows it best (its first two lines, the worst failure if
 /// there is one, else the first), and the picture the checker drew, if any.
-pub fn failed_claims(verdict: &Verdict) -> Vec<String> {
+pub(crate) fn failed_claims(verdict: &Verdict) -> Vec<String> {
     if verdict.findings.is_empty() {
         return vec![format!("{}: no claim was checked", verdict.subject)];
     }

@@ -225,7 +225,7 @@ pub fn markers(files: &[File]) -> Result<Vec<Marker>, DataError> {
 }
 
 /// The markers among `exercises` that are in the file `path`.
-pub fn markers_of(exercises: &[Marker], path: &str) -> Vec<Marker> {
+pub(crate) fn markers_of(exercises: &[Marker], path: &str) -> Vec<Marker> {
     exercises
         .iter()
         .filter(|m| m.file == path)

@@ -280,7 +280,7 @@ fn region(
 ///
 /// # Errors
 /// A [`DataError`] at the second marker of a name, naming the first.
-pub fn check_unique(markers: &[Marker]) -> Result<(), DataError> {
+pub(crate) fn check_unique(markers: &[Marker]) -> Result<(), DataError> {
     for (i, m) in markers.iter().enumerate() {
         if let Some(first) = markers[..i].iter().find(|f| f.name == m.name) {
             return Err(DataError::new(

@@ -25,7 +25,7 @@ pub mod section;
 pub mod stub;
 
 /// The start of the panic message of a stub.
-pub const NOT_STARTED: &str = "exercise `";
+pub(crate) const NOT_STARTED: &str = "exercise `";
 /// What follows the exercise's name in that message.
 const NOT_STARTED_END: &str = "` is not started";
 

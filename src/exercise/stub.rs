@@ -33,7 +33,7 @@ pub struct Removed {
 }
 
 /// The stub's body line for the exercise `name` at the function's indentation `indent`.
-pub fn stub_line(indent: &str, name: &str) -> String {
+pub(crate) fn stub_line(indent: &str, name: &str) -> String {
     format!("{indent}    crate::exercise::todo(\"{name}\")")
 }
 
@@ -79,7 +79,7 @@ pub fn stub_file(text: &str, markers: &[Marker]) -> (String, Vec<Removed>) {
 /// submission's body for the grader, `super::grade`), and the lines removed. Everything
 /// outside the bodies is kept as it was, line endings included; the `fn` line gets
 /// `#[allow(unused_variables)]` (a stub uses none of its parameters).
-pub fn replace_bodies(
+pub(crate) fn replace_bodies(
     text: &str,
     markers: &[Marker],
     body: impl Fn(&Marker) -> Vec<String>,

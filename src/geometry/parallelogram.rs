@@ -127,7 +127,7 @@ impl Parallelogram {
     /// The plane and the vectors [`Parallelogram::hit_before`] tests with: the unit
     /// normal `n`, `n . corner`, and the edges across scaled by the area, `-e2 / A` and
     /// `e1 / A` (for a renderer that keeps them in arrays of its own).
-    pub fn plane_and_across(&self) -> (DVec3, f64, DVec3, DVec3) {
+    pub(crate) fn plane_and_across(&self) -> (DVec3, f64, DVec3, DVec3) {
         (self.normal, self.plane, self.across_a, self.across_b)
     }
 

@@ -125,7 +125,7 @@ impl Estimate {
 /// The variance of the rounding of `v` to a half float: `ulp²/12`, that of an error spread
 /// evenly over one unit in the last place (`ulp = 2^(e - 10)` for `2^e <= |v| < 2^(e+1)`,
 /// `2^-24` among the subnormals below `2^-14`).
-pub fn half_rounding_variance(v: f64) -> f64 {
+pub(crate) fn half_rounding_variance(v: f64) -> f64 {
     let v = v.abs();
     let ulp = if v < 2f64.powi(-14) {
         2f64.powi(-24)
@@ -217,7 +217,7 @@ pub struct Comparison {
 
 impl Comparison {
     /// How many of the three whole-image tests fail.
-    pub fn image_failure_count(&self) -> usize {
+    pub(crate) fn image_failure_count(&self) -> usize {
         self.image
             .iter()
             .filter(|(z, _, _)| fails(*z, self.z_critical))
@@ -322,7 +322,7 @@ pub fn two_sided_critical(level: f64) -> f64 {
 
 /// The two-sided critical `|t|` at `level` for Student's t with `dof` degrees of freedom
 /// (normal above [`NORMAL_DOF`]).
-pub fn t_critical(level: f64, dof: f64) -> f64 {
+pub(crate) fn t_critical(level: f64, dof: f64) -> f64 {
     if dof > NORMAL_DOF {
         return two_sided_critical(level);
     }

@@ -24,7 +24,7 @@ pub const MAX_PIXELS: u64 = 1 << 26;
 /// The most decoded bytes an image may claim per byte of its file.
 pub const MAX_RATIO: u64 = 4096;
 /// The most bytes a header may take (its attributes, before the offset table).
-pub const MAX_HEADER: usize = 1 << 20;
+pub(crate) const MAX_HEADER: usize = 1 << 20;
 
 /// The size of one part as its header states it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,7 +43,7 @@ pub struct Part {
 /// # Errors
 /// The reason ([`ImageError::Header`], or [`ImageError::File`] if the file cannot be
 /// read), for a message that names the file.
-pub fn check_file(path: &Path) -> Result<Vec<Part>, ImageError> {
+pub(crate) fn check_file(path: &Path) -> Result<Vec<Part>, ImageError> {
     let cannot = |e: std::io::Error| {
         ImageError::File(crate::output::FileError::new(
             path,

@@ -93,7 +93,7 @@ pub fn build_id() -> Option<String> {
 
 impl Sidecar {
     /// The seeds of the renders this one pools: `seeds`, or `[seed]` for one render.
-    pub fn all_seeds(&self) -> Vec<u64> {
+    pub(crate) fn all_seeds(&self) -> Vec<u64> {
         if self.seeds.is_empty() {
             vec![self.seed]
         } else {

@@ -42,7 +42,7 @@ use crate::spectral::display;
 pub const CHANNELS: [&str; 6] = ["R", "G", "B", "var.R", "var.G", "var.B"];
 
 /// The name of the header attribute that holds the samples per pixel (an `int`).
-pub const SPP_ATTRIBUTE: &str = "spp";
+pub(crate) const SPP_ATTRIBUTE: &str = "spp";
 
 /// The first bytes of every OpenEXR file (the magic number 20000630, little-endian).
 const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];

@@ -29,7 +29,7 @@ use crate::spectral::wavelength::{N, Wavelengths};
 use crate::transport::roulette::roulette;
 
 /// Radiance (or throughput) at the path's `N` wavelengths.
-pub type Lanes = [f64; N];
+pub(crate) type Lanes = [f64; N];
 
 // ANCHOR: offset
 /// The relative size of the offset that moves a new ray's origin off the surface it
@@ -57,7 +57,7 @@ pub fn offset_origin(p: DVec3, n: DVec3, dir: DVec3) -> DVec3 {
 /// surface nearer than `(1 - SHADOW_MARGIN) r` blocks it. The light's own hit lies at `r`
 /// to within rounding (`1e-16 r`), so the margin leaves it out whatever its orientation,
 /// while anything a pixel could resolve in front of the light still blocks.
-pub const SHADOW_MARGIN: f64 = 1e-9;
+pub(crate) const SHADOW_MARGIN: f64 = 1e-9;
 
 /// Spectra evaluated at the path's wavelengths once per path: a path's wavelengths never
 /// change (a dispersive refraction only ends the secondary lanes), so the reflectance of

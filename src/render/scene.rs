@@ -26,7 +26,7 @@ pub use crate::transport::shadow::IrradianceStrategy as DirectLight;
 
 /// The names the `wavelengths` key accepts, with their strategies (and `"emission"`,
 /// [`Wavelength::Emission`]).
-pub const WAVELENGTH_STRATEGIES: [(&str, WavelengthStrategy); 5] = [
+pub(crate) const WAVELENGTH_STRATEGIES: [(&str, WavelengthStrategy); 5] = [
     ("uniform", WavelengthStrategy::Uniform),
     ("visible", WavelengthStrategy::Visible),
     ("hero-uniform", WavelengthStrategy::HeroUniform),
@@ -35,7 +35,7 @@ pub const WAVELENGTH_STRATEGIES: [(&str, WavelengthStrategy); 5] = [
 ];
 
 /// The names the `direct` key accepts, with their strategies of direct lighting.
-pub const DIRECT_STRATEGIES: [(&str, DirectLight); 4] = [
+pub(crate) const DIRECT_STRATEGIES: [(&str, DirectLight); 4] = [
     ("mis-power", DirectLight::Mis(Heuristic::Power)),
     ("mis-balance", DirectLight::Mis(Heuristic::Balance)),
     ("light", DirectLight::Light),

@@ -12,7 +12,7 @@ use glam::{DVec2, DVec3};
 use super::precision::{Float, V2, V3, consts};
 
 /// Density of a uniform point on the unit disc, per unit area.
-pub const DISC_PDF: Float = 1.0 / consts::PI;
+pub(crate) const DISC_PDF: Float = 1.0 / consts::PI;
 
 // ANCHOR: polar
 // EXERCISE sampling/disc disc_polar: map the unit square to the disc with r = sqrt(u1), phi = 2 pi u2

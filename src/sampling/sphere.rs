@@ -18,7 +18,7 @@ use crate::rng::Rng;
 /// Density of a uniform direction on the sphere, per steradian.
 pub const SPHERE_PDF: Float = 1.0 / (4.0 * consts::PI);
 /// Density of a uniform direction on a hemisphere, per steradian.
-pub const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
+pub(crate) const HEMISPHERE_PDF: Float = 1.0 / (2.0 * consts::PI);
 
 // ANCHOR: inverse_cdf
 /// Inverse-CDF sampling: `z = cos(theta) = 1 - 2 u1`, `phi = 2 pi u2`.

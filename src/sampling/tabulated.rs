@@ -438,7 +438,7 @@ impl Piecewise1D {
 }
 
 /// `points` equally spaced points from `lo` to `hi` inclusive (`hi` exactly).
-pub fn uniform_grid(lo: f64, hi: f64, points: usize) -> Vec<f64> {
+pub(crate) fn uniform_grid(lo: f64, hi: f64, points: usize) -> Vec<f64> {
     let steps = points.saturating_sub(1).max(1) as f64;
     (0..points)
         .map(|k| {
@@ -633,7 +633,7 @@ impl PiecewiseLinear1D {
     }
 
     /// Probability of segment `i`.
-    pub fn segment_probability(&self, i: usize) -> f64 {
+    pub(crate) fn segment_probability(&self, i: usize) -> f64 {
         self.cdf[i + 1] - self.cdf[i]
     }
 }

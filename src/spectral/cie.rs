@@ -14,7 +14,7 @@ use glam::{DMat3, DVec2, DVec3};
 use super::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// The CIE 1931 2° table, embedded (see `data/README.md` for its source).
-pub const CMF_CSV: &str = include_str!("../../data/cie1931_2deg_cmf_1nm.csv");
+pub(crate) const CMF_CSV: &str = include_str!("../../data/cie1931_2deg_cmf_1nm.csv");
 
 /// The number of 1 nm rows of the table, 360..=830.
 pub const CMF_ROWS: usize = 471;

@@ -220,7 +220,7 @@ pub fn uniform_wavelength(u: f64) -> WavelengthSample {
 /// The wavelength of the first pixel column, nm.
 pub const IMAGE_FIRST_NM: f64 = 380.0;
 /// The wavelength of the last pixel column, nm.
-pub const IMAGE_LAST_NM: f64 = 830.0;
+pub(crate) const IMAGE_LAST_NM: f64 = 830.0;
 /// Columns of a spectrum image: one per whole nanometre, 380..=830.
 pub const IMAGE_WIDTH: u32 = 451;
 /// Height of the images [`write_image`] draws (the source's drawings are 256 tall).

@@ -348,7 +348,7 @@ impl Spectrum {
 // CSV tables.
 
 /// The name of the wavelength column every spectrum CSV starts with.
-pub const WAVELENGTH_COLUMN: &str = "wavelength_nm";
+pub(crate) const WAVELENGTH_COLUMN: &str = "wavelength_nm";
 
 /// Parses a spectrum CSV: a header `wavelength_nm,<name>,<name>...`, then one row per
 /// wavelength. Lines that are blank or start with `#` are skipped. Returns one named

@@ -313,9 +313,3 @@ pub fn srgb_under_d65(r: impl Fn(f64) -> f64) -> DVec3 {
     let norm = super::cie::xyz(|nm| d65.eval(nm)).y;
     super::cie::xyz_to_linear_srgb(super::cie::xyz(|nm| r(nm) * d65.eval(nm)) / norm)
 }
-
-/// The linear sRGB of the reflectance `r` lit by D65, as the renderer would see it: the XYZ
-/// of [`Fitter::d65`] through the sRGB matrix.
-pub fn reflectance_to_srgb(r: &Reflectance) -> DVec3 {
-    cie::xyz_to_linear_srgb(Fitter::d65().xyz(r))
-}

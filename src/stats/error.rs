@@ -9,7 +9,7 @@ use std::fmt;
 /// What the chi-squared test's message says when every cell expects too few samples to
 /// test (the remedy is more samples, not another sampler); `raylemma check` reads it as bad
 /// input.
-pub const DRAW_MORE: &str = "draw more samples";
+pub(crate) const DRAW_MORE: &str = "draw more samples";
 
 /// Why a statistical test could not be carried out.
 #[derive(Debug, Clone, PartialEq)]

@@ -76,7 +76,7 @@ pub enum Expect {
 }
 
 /// An answer: the outputs, or `None` for "no answer" (a miss, total internal reflection).
-pub type Answer = Option<Vec<f64>>;
+pub(crate) type Answer = Option<Vec<f64>>;
 
 /// One form of a routine, as an answer to its verb's questions.
 #[derive(Clone, Copy, Debug)]
@@ -239,7 +239,7 @@ pub fn measure_one(
 
 /// True iff every argument of `case` is a single (so that an `f32` form answers the same
 /// question).
-pub fn single_inputs(case: &Case) -> bool {
+pub(crate) fn single_inputs(case: &Case) -> bool {
     case.args.iter().all(|&x| f64::from(x as f32) == x)
 }
 
@@ -302,7 +302,7 @@ pub fn summarize(measured: &[Measured]) -> Option<Summary> {
 }
 
 /// `[1, 2, 3]` as `1 2 3` with every digit; `none` for no answer.
-pub fn answer_text(answer: &Answer) -> String {
+pub(crate) fn answer_text(answer: &Answer) -> String {
     match answer {
         None => "none".to_string(),
         Some(y) => y

@@ -52,9 +52,9 @@ pub const DECODED: [(f64, f64); 11] = [
 /// Default number of grid points of the monotonicity claim.
 pub const CASES: usize = 100_000;
 /// Bound of the reference values' absolute error.
-pub const REFERENCE_BOUND: f64 = 1e-12;
+pub(crate) const REFERENCE_BOUND: f64 = 1e-12;
 /// Bound of the step between the segments at the breakpoint.
-pub const STEP_BOUND: f64 = 1e-7;
+pub(crate) const STEP_BOUND: f64 = 1e-7;
 
 /// The claims on an encoding `f` (linear to encoded).
 pub fn srgb_encode(f: &dyn Fn(f64) -> f64, options: &Options) -> Verdict {

@@ -14,7 +14,7 @@ use crate::data::DataError;
 
 /// The longest answer line read (bytes, without the newline): an answer is at most a few
 /// numbers, which need fewer than 100 characters even with every digit of a double.
-pub const MAX_ANSWER_LINE: usize = 1024;
+pub(crate) const MAX_ANSWER_LINE: usize = 1024;
 
 /// Why an output was not read to its end.
 struct Overflow {

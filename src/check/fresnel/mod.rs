@@ -38,7 +38,7 @@ pub const VALUE_BOUND: f64 = 4.0 * f64::EPSILON;
 /// Bound of the energy and reciprocity claims, in units of
 /// `eps (1 + 1 / min(cos_i, cos_t))`: computing one cosine from the other is
 /// ill-conditioned where either is near 0 (grazing, or near the critical angle).
-pub const BALANCE_BOUND: f64 = 64.0;
+pub(crate) const BALANCE_BOUND: f64 = 64.0;
 
 /// The default number of evenly spaced angles of the sweep: 0 to 90 degrees in steps of
 /// 0.25 degree.
@@ -71,7 +71,7 @@ pub fn sweep_cosines(options: &Options) -> Vec<f64> {
 /// `cos theta_t` and the transmittance `T = (n2 cos_t)/(n1 cos_i) (t_s^2 + t_p^2)/2`,
 /// computed here, from the angles, independently of the code under test. `None`
 /// under total internal reflection.
-pub fn independent_transmittance(cos_i: f64, n1: f64, n2: f64) -> Option<(f64, f64)> {
+pub(crate) fn independent_transmittance(cos_i: f64, n1: f64, n2: f64) -> Option<(f64, f64)> {
     let c = cos_i.abs().min(1.0);
     let sin_i = ((1.0 - c) * (1.0 + c)).sqrt();
     let sin_t = n1 * sin_i / n2;
@@ -161,7 +161,7 @@ pub fn reflectance(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdi
 /// The amplitude coefficients `(r_s, r_p, t_s, t_p)` in Born & Wolf's convention, computed
 /// here from the angles (`sin_t = n1 sin_i / n2`), independently of the code under test.
 /// `None` under total internal reflection.
-pub fn independent_amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<[f64; 4]> {
+pub(crate) fn independent_amplitudes(cos_i: f64, n1: f64, n2: f64) -> Option<[f64; 4]> {
     let c = cos_i.abs().min(1.0);
     let sin_i = ((1.0 - c) * (1.0 + c)).sqrt();
     let sin_t = n1 * sin_i / n2;

@@ -25,7 +25,7 @@ pub const SAMPLES: usize = 200_000;
 /// Default seed.
 pub const SEED: u64 = 0x1a5;
 /// Bound of the matched proposal's spread and error, in units of `eps I`.
-pub const MATCHED_BOUND: f64 = 16.0;
+pub(crate) const MATCHED_BOUND: f64 = 16.0;
 
 /// Runs the chapter's claims on `estimate`; `options` sets the draws per estimate (default
 /// [`SAMPLES`]), the seed (default [`SEED`]) and the t-tests' level.

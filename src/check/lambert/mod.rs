@@ -24,9 +24,9 @@ pub const CASES: usize = 10_000;
 /// Default seed.
 pub const SEED: u64 = 0x1a3b;
 /// Cells of the albedo quadrature (`n` by `2n` in `θ, φ`).
-pub const QUADRATURE: usize = 512;
+pub(crate) const QUADRATURE: usize = 512;
 /// Bound of the albedo's relative error (the quadrature's is about `2e-6`).
-pub const ALBEDO_BOUND: f64 = 1e-5;
+pub(crate) const ALBEDO_BOUND: f64 = 1e-5;
 
 /// Runs the chapter's claims on `f`; `options` sets the number of random pairs (default
 /// [`CASES`]) and their seed (default [`SEED`]).

@@ -38,13 +38,13 @@ pub const INDEX_PAIRS: [(f64, f64); 9] = [
 ];
 
 /// Error bounds, in units of `f64::EPSILON`.
-pub const UNIT_BOUND: f64 = 8.0;
+pub(crate) const UNIT_BOUND: f64 = 8.0;
 /// Bound of the angle, Snell, coplanarity and side checks, in units of `f64::EPSILON`.
-pub const ANGLE_BOUND: f64 = 8.0;
+pub(crate) const ANGLE_BOUND: f64 = 8.0;
 /// Bound of the round trip, in units of `f64::EPSILON / cos(theta_i)`.
-pub const REVERSE_BOUND: f64 = 16.0;
+pub(crate) const REVERSE_BOUND: f64 = 16.0;
 /// `|eta sin(theta_i) - 1|` below which either answer (TIR or a grazing ray) is right.
-pub const CRITICAL_BAND: f64 = 1e-12;
+pub(crate) const CRITICAL_BAND: f64 = 1e-12;
 
 const EPS: f64 = f64::EPSILON;
 

@@ -31,7 +31,7 @@ use crate::render::scene::{Scene, Surface};
 
 /// The fraction of the failing tests, and of the excess of the blocks' `Σ z²`, a
 /// hypothesis must remove to be reported as explaining most of a difference.
-pub const MOST: f64 = 0.8;
+pub(crate) const MOST: f64 = 0.8;
 
 /// What the card is given besides the two images.
 pub struct Context<'a> {
@@ -217,7 +217,7 @@ fn decoded(e: &Estimate) -> Estimate {
 /// The image magnified `m` times about its centre: the value at pixel centre `p` is the
 /// original's at `centre + (p - centre) / m`, bilinear between pixel centres (edge pixels
 /// repeated beyond the border).
-pub fn magnified(image: &Image, m: f64) -> Image {
+pub(crate) fn magnified(image: &Image, m: f64) -> Image {
     let (w, h) = (image.width as usize, image.height as usize);
     let centre = DVec2::new(w as f64 / 2.0, h as f64 / 2.0);
     let at = |v: &[DVec3], x: isize, y: isize| {

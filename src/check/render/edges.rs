@@ -324,7 +324,7 @@ pub fn visible_share(p: DVec3, light: &Rect, occluder: &Rect) -> f64 {
 
 /// The nodes and weights on `[0, 1]` of `parts` equal sub-intervals, each with 4-point
 /// Gauss-Legendre.
-pub fn composite_gauss4(parts: u32) -> Vec<(f64, f64)> {
+pub(crate) fn composite_gauss4(parts: u32) -> Vec<(f64, f64)> {
     let h = 1.0 / f64::from(parts);
     (0..parts)
         .flat_map(|k| {

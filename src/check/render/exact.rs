@@ -107,7 +107,7 @@ pub fn first(scene: &Scene, o: DVec3, d: DVec3) -> First {
 
 impl First {
     /// The same surface (or both the sky), for deciding whether a pixel straddles an edge.
-    pub fn same_surface(self, other: First) -> bool {
+    pub(crate) fn same_surface(self, other: First) -> bool {
         match (self, other) {
             (First::Shape(i, _), First::Shape(j, _)) | (First::Light(i, _), First::Light(j, _)) => {
                 i == j

@@ -105,7 +105,7 @@ impl Pooled {
 
     /// The smallest global bias (relative, in luminance) detected nine times in ten:
     /// `(critical + z_0.9) relative_error`, with `z_0.9 = 1.2816`.
-    pub fn detectable_bias(&self) -> f64 {
+    pub(crate) fn detectable_bias(&self) -> f64 {
         (self.critical + 1.2816) * self.relative_error
     }
 }

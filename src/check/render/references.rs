@@ -118,7 +118,7 @@ pub const CANONICAL: [Canonical; 11] = [
 
 /// A renderer of a window of a scene: the pixels of `window` of the scene's image, at the
 /// scene's settings.
-pub type WindowRenderer<'a> = &'a (dyn Fn(&Scene, Window) -> Image + Sync);
+pub(crate) type WindowRenderer<'a> = &'a (dyn Fn(&Scene, Window) -> Image + Sync);
 
 /// raylemma's own renderer of a window ([`crate::render::render_window`]), silently.
 pub fn ours_window(scene: &Scene, window: Window) -> Image {

@@ -56,7 +56,7 @@ pub fn settings(spp: u32, seed: u64) -> RenderSettings {
 }
 
 /// A reflectance rising linearly from 0.2 at 360 nm to 0.8 at 830 nm (a warm white).
-pub fn floor_reflectance() -> Spectrum {
+pub(crate) fn floor_reflectance() -> Spectrum {
     match Table::new(vec![360.0, 830.0], vec![0.2, 0.8]) {
         Ok(t) => Spectrum::Table(t),
         Err(e) => unreachable!("a valid two-knot table: {e}"),
@@ -65,7 +65,7 @@ pub fn floor_reflectance() -> Spectrum {
 
 /// The quad light's spectrum: a 5000 K blackbody with peak 2 (smooth: the estimate's
 /// noise is that of the light transport, not of the wavelengths).
-pub fn daylight_blackbody() -> Spectrum {
+pub(crate) fn daylight_blackbody() -> Spectrum {
     Spectrum::Blackbody {
         kelvin: 5000.0,
         peak: 2.0,
@@ -79,7 +79,7 @@ pub fn fluorescent() -> Spectrum {
 }
 
 /// The sphere light's spectrum: a 2700 K blackbody with peak 4.
-pub fn warm_blackbody() -> Spectrum {
+pub(crate) fn warm_blackbody() -> Spectrum {
     Spectrum::Blackbody {
         kelvin: 2700.0,
         peak: 4.0,
@@ -167,7 +167,7 @@ pub fn floor_under_quad(side: u32, spp: u32) -> Scene {
 
 /// A Lambertian floor under the quad light with the fluorescent spectrum, its wavelengths
 /// drawn by `wavelengths`.
-pub fn floor_under_fluorescent(side: u32, spp: u32, wavelengths: Wavelength) -> Scene {
+pub(crate) fn floor_under_fluorescent(side: u32, spp: u32, wavelengths: Wavelength) -> Scene {
     let mut light = quad_light();
     light.emission = fluorescent();
     let mut s = floor_scene(side, spp, vec![light]);
@@ -184,7 +184,7 @@ pub fn floor_under_sphere(side: u32, spp: u32) -> Scene {
 /// upwards: the floor sees only the quad's back, which emits nothing, so the image is the
 /// sphere light's alone; a renderer that lets a one-sided light shine from its back lights
 /// the floor twice over.
-pub fn floor_under_a_light_turned_away(side: u32, spp: u32) -> Scene {
+pub(crate) fn floor_under_a_light_turned_away(side: u32, spp: u32) -> Scene {
     // On the far side of the floor from the sphere light, so that it hides the sphere
     // light from no point of the floor.
     match QuadLight::new(

@@ -25,11 +25,11 @@ pub const CASES: usize = 10_000;
 /// Default seed.
 pub const SEED: u64 = 0x5ad0;
 /// Cells per side of the midpoint rule over the quad.
-pub const GRID: usize = 128;
+pub(crate) const GRID: usize = 128;
 /// Bound of the solid angle's relative error (the midpoint rule's is below `1e-4`).
-pub const SOLID_ANGLE_BOUND: f64 = 1e-3;
+pub(crate) const SOLID_ANGLE_BOUND: f64 = 1e-3;
 /// Bound of the scaling claims' relative errors, in units of `f64::EPSILON`.
-pub const SCALE_BOUND: f64 = 8.0;
+pub(crate) const SCALE_BOUND: f64 = 8.0;
 
 /// Runs the chapter's claims on `f`; `options` sets the number of random cases (default
 /// [`CASES`]) and their seed (default [`SEED`]).

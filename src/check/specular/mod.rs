@@ -27,7 +27,7 @@ pub const SEED: u64 = 0x5bec;
 /// Bound of `|sample / ρ - 1|`, in units of `f64::EPSILON`.
 pub const BOUND: f64 = 8.0;
 /// The lobes' concentrations: from broad to nearly a delta.
-pub const KAPPAS: [f64; 3] = [10.0, 1e3, 1e5];
+pub(crate) const KAPPAS: [f64; 3] = [10.0, 1e3, 1e5];
 
 /// Runs the chapter's claims on `f`; `options` sets the number of samples (default
 /// [`CASES`]) and their seed (default [`SEED`]).

@@ -30,7 +30,7 @@ pub const SAMPLES: usize = 100_000;
 pub const SEED: u64 = 0x7ab1;
 
 /// What the claims read of a table (not of the sampler under test).
-pub trait TabulatedPdf {
+pub(crate) trait TabulatedPdf {
     /// The bin edges (or knots).
     fn grid(&self) -> &[f64];
     /// The normalised density.

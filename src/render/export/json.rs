@@ -17,9 +17,9 @@ use crate::spectral::cie;
 use crate::spectral::spectrum::Spectrum;
 
 /// The format's name and version, the first keys of every file.
-pub const FORMAT: &str = "raylemma-scene";
+pub(crate) const FORMAT: &str = "raylemma-scene";
 /// The version of the layout below; it changes whenever a key does.
-pub const VERSION: u32 = 1;
+pub(crate) const VERSION: u32 = 1;
 
 #[derive(Serialize)]
 struct File<'a> {

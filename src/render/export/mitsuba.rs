@@ -87,7 +87,7 @@ fn irregular(name: &str, nm: &[f64], values: &[f64], indent: &str) -> String {
 /// The `to_world` of a `rectangle` ([-1, 1]² in local xy, normal +z) onto the quad
 /// `corner + a e1 + b e2`: the columns `e1/2`, `e2/2`, the unit normal, the centre; the 16
 /// numbers row by row.
-pub fn rectangle_matrix(corner: DVec3, e1: DVec3, e2: DVec3) -> [f64; 16] {
+pub(crate) fn rectangle_matrix(corner: DVec3, e1: DVec3, e2: DVec3) -> [f64; 16] {
     let n = e1.cross(e2).normalize();
     let c = corner + 0.5 * (e1 + e2);
     let cols = [0.5 * e1, 0.5 * e2, n, c];

@@ -136,7 +136,7 @@ fn on_grid(t: &Table) -> bool {
 
 /// The distance from `p` to the farthest point of the scene's geometry (for clipping
 /// planes).
-pub fn extent(scene: &Scene, p: DVec3) -> f64 {
+pub(crate) fn extent(scene: &Scene, p: DVec3) -> f64 {
     use super::scene::{Geometry, LightShape};
     let mut far: f64 = 0.0;
     let mut sphere = |c: DVec3, r: f64| far = far.max((c - p).length() + r);
@@ -164,7 +164,7 @@ pub fn extent(scene: &Scene, p: DVec3) -> f64 {
 }
 
 /// The name of a direct-lighting strategy in the scene format.
-pub fn direct_name(d: crate::render::scene::DirectLight) -> &'static str {
+pub(crate) fn direct_name(d: crate::render::scene::DirectLight) -> &'static str {
     crate::render::scene::DIRECT_STRATEGIES
         .iter()
         .find(|(_, s)| *s == d)

@@ -53,12 +53,12 @@ use crate::spectral::spectrum::Spectrum;
 /// The chromaticity of pbrt-v4's D65 table (`stdillum-D65`, its `CIE_Illum_D6500`) under
 /// the 1 nm CIE 1931 functions, the white of its sRGB colour space (`RGBColorSpace`'s
 /// constructor): computed in `tools/pbrt/NOTES.md`, §6.
-pub const PBRT_D65_WHITE: DVec2 = DVec2::new(0.312_726_932, 0.329_023_222);
+pub(crate) const PBRT_D65_WHITE: DVec2 = DVec2::new(0.312_726_932, 0.329_023_222);
 
 /// The matrix taking pbrt's linear sRGB (what its `rgb` film writes) to raylemma's: pbrt's
 /// RGB → XYZ (sRGB primaries, [`PBRT_D65_WHITE`]), then raylemma's XYZ → linear sRGB. It
 /// is diagonal to rounding (both share the primaries), within 2.5e-4 of the identity.
-pub fn pbrt_to_raylemma_srgb() -> DMat3 {
+pub(crate) fn pbrt_to_raylemma_srgb() -> DMat3 {
     cie::xyz_to_linear_srgb_matrix() * cie::rgb_to_xyz_matrix(cie::SRGB_PRIMARIES, PBRT_D65_WHITE)
 }
 
@@ -258,7 +258,7 @@ fn material(m: &Material, id: &str, name: &str) -> String {
 
 /// The two triangles of the quad `corner + a e1 + b e2`, wound so that pbrt's normal
 /// (`Cross(p1 - p0, p2 - p0)`, `Triangle::Sample`) is along `e1 x e2`.
-pub fn quad_mesh(corner: DVec3, e1: DVec3, e2: DVec3) -> ([DVec3; 4], [usize; 6]) {
+pub(crate) fn quad_mesh(corner: DVec3, e1: DVec3, e2: DVec3) -> ([DVec3; 4], [usize; 6]) {
     (
         [corner, corner + e1, corner + e1 + e2, corner + e2],
         [0, 1, 2, 0, 2, 3],
