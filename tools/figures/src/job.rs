@@ -123,7 +123,13 @@ const KEPT_WHILE_CODE_UNCHANGED: [&str; 9] = [
 fn code_version(root: &Path) -> anyhow::Result<String> {
     let mut files = raylemma::output::files_under(
         root,
-        &["src", "data", "scenes", "tools/examples", "tools/figures/src"],
+        &[
+            "src",
+            "data",
+            "scenes",
+            "tools/examples",
+            "tools/figures/src",
+        ],
     )?;
     files.push(root.join("Cargo.lock"));
     files.sort();
