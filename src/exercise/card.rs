@@ -107,6 +107,13 @@ fn quiet_hook() {
     });
 }
 
+/// The folder of exercise `name`'s own pictures, relative to the crate's root:
+/// `results/NAME/` (`::` written `-`), where its checks draw their failure images when the
+/// card judges it; removed when it passes.
+pub fn results_dir(name: &str) -> std::path::PathBuf {
+    std::path::Path::new("results").join(name.replace("::", "-"))
+}
+
 /// How long one exercise's checks may run before the card judges them stuck: every
 /// exercise's checks on the solutions take a fraction of a second (24 in about 1 s on 2
 /// cores), so 30 s is a loop, not a slow machine.
@@ -117,10 +124,19 @@ pub const LIMIT: Duration = Duration::from_secs(30);
 /// outside; the process ends it when it exits).
 pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) -> Status {
     let owned = name.to_string();
-    match within(name, limit, move || judge(&owned, &check)) {
+    let dir = results_dir(name);
+    let judged = within(name, limit, move || {
+        crate::check::warp::with_failure_dir(dir, || judge(&owned, &check))
+    });
+    let status = match judged {
         Ok(status) => status,
         Err(why) => Status::Failing(vec![why]),
+    };
+    if status == Status::Passing {
+        // Pictures of a failure that the student has since fixed would mislead.
+        let _ = std::fs::remove_dir_all(results_dir(name));
     }
+    status
 }
 
 /// `f` on a thread named for the exercise `name`, given at most `limit`; why not, if the

@@ -279,7 +279,10 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
     let generated = [
         ("Cargo.toml", manifest),
         ("README.md", readme(&exercises, kind)),
-        (".gitignore", "/target\n/warp-failures\n".to_string()),
+        (
+            ".gitignore",
+            "/target\n/warp-failures\n/results\n".to_string(),
+        ),
         (
             STAMP,
             format!("raylemma student edition: {}\n", kind.name()),

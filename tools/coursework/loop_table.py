@@ -1,12 +1,14 @@
 """Writes figures/coursework_loop.md and its values from the times tools/coursework/loop.sh
-measured (ROOT TIMES MACHINE NOT_STARTED_LINES)."""
+measured (ROOT TIMES MACHINE NOT_STARTED_LINES FAILING_TESTS: of the first run, the lines that
+are stubs' messages and the tests that failed)."""
 import statistics
 import sys
 
 sys.path.insert(0, f"{sys.argv[1]}/tools/values")
 from values import Record  # noqa: E402
 
-root, times, machine, not_started = sys.argv[1], sys.argv[2], open(sys.argv[3]).read().strip(), int(sys.argv[4])
+root, times, machine = sys.argv[1], sys.argv[2], open(sys.argv[3]).read().strip()
+not_started, failing = int(sys.argv[4]), int(sys.argv[5])
 rows = {}
 for line in open(times):
     name, seconds, status, lines = line.split()
@@ -34,6 +36,7 @@ for name in ["first", "card", "chapter", "whole"]:
     r.number(f"{name}_lines", lines, "int")
     table.append(f"| {what[name]} | {len(runs)} | {shown} | {status} | {lines} |")
 r.number("first_not_started_lines", not_started, "int")
+r.number("first_failing_tests", failing, "int")
 r.number("first_minutes", statistics.median(s for s, _, _ in rows["first"]) / 60, ".1")
 text = "\n".join(table) + "\n"
 open(f"{root}/figures/coursework_loop.md", "w").write(text)

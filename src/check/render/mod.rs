@@ -23,6 +23,7 @@ pub mod edges;
 pub mod exact;
 pub mod independence;
 pub mod ladder;
+pub mod pictures;
 pub mod planted;
 pub mod pool;
 pub mod references;

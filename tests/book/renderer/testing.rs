@@ -11,7 +11,7 @@
 use std::sync::OnceLock;
 
 use raylemma::check::Options;
-use raylemma::check::render::{self, Rendered, judge, ours, planted, pool, references};
+use raylemma::check::render::{self, Rendered, judge, ours, pictures, planted, pool, references};
 use raylemma::stats::test_alpha;
 
 fn exact_images() -> &'static [Rendered] {
@@ -41,7 +41,25 @@ fn the_renderer_matches_every_exact_image() {
         test_alpha(),
     );
     println!("{v}");
-    v.assert_pass();
+    assert_pass_with_pictures(&v, exact_images());
+}
+
+/// Passes if `v` does; else draws each failing scene (render, expected, difference) into
+/// `results/renderer/` of the crate and fails, naming the folder.
+fn assert_pass_with_pictures(v: &raylemma::check::Verdict, rendered: &[Rendered]) {
+    if v.passed() {
+        return;
+    }
+    let dir = crate::support::root().join(pictures::results_dir());
+    let files = pictures::write_failed(&dir, rendered, v);
+    panic!(
+        "{v}\npictures of the failing scenes (your render, the expected image, 4 x their difference): {}",
+        files
+            .iter()
+            .map(|f| f.display().to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
 }
 
 /// The scenes whose noise allows a half-percent global bias to be seen.
@@ -76,6 +94,16 @@ fn exact_images_reject_a_global_bias_of_one_percent() {
             "{name} missed it:\n{v}"
         );
     }
+    // The pictures a failure leaves: one per failing scene, its three panels side by side.
+    let dir = crate::support::scratch("renderer-pictures");
+    let files = pictures::write_failed(dir.as_path(), &images, &v);
+    assert!(files.len() >= SENSITIVE.len(), "{files:?}");
+    let quad = images
+        .iter()
+        .find(|r| r.name == SENSITIVE[0])
+        .map(|r| (r.image.width, r.image.height));
+    let png = crate::support::read_png(&dir.as_path().join("floor-under-a-quad-light.png"));
+    assert_eq!(quad, Some(((png.width - 8) / 3, png.height)));
 }
 
 #[test]
@@ -167,7 +195,7 @@ fn every_canonical_scene_matches_its_reference() {
         test_alpha(),
     );
     println!("{v}");
-    v.assert_pass();
+    assert_pass_with_pictures(&v, reference_images());
 }
 
 /// The canonical scenes whose windows' noise lets a 5 % global bias be seen (the caustics

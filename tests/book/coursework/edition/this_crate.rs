@@ -211,3 +211,48 @@ fn an_exercise_that_does_not_return_fails_and_the_card_goes_on() {
         other => panic!("{other:?}"),
     }
 }
+
+/// A failing sampler's pictures go into the exercise's own folder, `results/NAME/`, which
+/// the card's line names; once the exercise passes, the folder is removed (a picture of a
+/// fixed mistake would mislead). The book's own planted-bug tests draw into
+/// `warp-failures/`, never there.
+#[test]
+fn the_card_draws_a_failing_sampler_into_its_results_folder_and_removes_it_once_it_passes() {
+    use raylemma::check::warp::{self, Domain, SquareWarp, planted};
+    use raylemma::exercise::card::{LIMIT, Status, judge_within, results_dir};
+    use raylemma::sampling::disc::{disc_pdf, disc_polar};
+    fn disc(name: &str, f: fn(glam::DVec2) -> glam::DVec3) -> Vec<raylemma::check::Verdict> {
+        let w = SquareWarp::new(name, Domain::Disc, f, disc_pdf);
+        vec![warp::check(&w, &warp::WarpOptions::default())]
+    }
+    fn wrong() -> Vec<raylemma::check::Verdict> {
+        disc("results demo", planted::disc_r_equals_u)
+    }
+    fn right() -> Vec<raylemma::check::Verdict> {
+        disc("results demo", disc_polar)
+    }
+    let dir = crate::support::root().join(results_dir("results_demo"));
+    let lines = match judge_within("results_demo", wrong, LIMIT) {
+        Status::Failing(lines) => lines,
+        other => panic!("{other:?}"),
+    };
+    let picture = lines
+        .iter()
+        .find_map(|l| l.trim_start().strip_prefix("picture"))
+        .unwrap_or_else(|| panic!("no picture named: {lines:#?}"))
+        .trim();
+    assert_eq!(
+        std::path::Path::new(picture),
+        results_dir("results_demo")
+            .join("results_demo")
+            .join("difference.png"),
+        "{lines:#?}"
+    );
+    assert!(dir.join("results_demo/difference.png").is_file());
+    assert_eq!(judge_within("results_demo", right, LIMIT), Status::Passing);
+    assert!(
+        !dir.exists(),
+        "{} is left after the exercise passed",
+        dir.display()
+    );
+}
