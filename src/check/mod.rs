@@ -64,6 +64,7 @@ pub mod external;
 pub mod fresnel;
 pub mod importance;
 pub mod lambert;
+pub mod pictures;
 pub mod reflect;
 pub mod render;
 pub mod roulette;

@@ -267,7 +267,7 @@ fn verdict(result: Result<Verdict, DataError>) -> CmdResult {
 
 fn sampler(args: &SamplerArgs) -> Result<Verdict, DataError> {
     if let Some(dir) = &args.failure_images {
-        raylemma::check::warp::set_failure_dir(dir.clone());
+        raylemma::check::pictures::set_failure_dir(dir.clone());
     }
     let options = options(
         Some(args.cases.unwrap_or(external::SAMPLES as u64)),

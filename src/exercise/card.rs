@@ -126,7 +126,7 @@ pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) ->
     let owned = name.to_string();
     let dir = results_dir(name);
     let judged = within(name, limit, move || {
-        crate::check::warp::with_failure_dir(dir, || judge(&owned, &check))
+        crate::check::pictures::with_failure_dir(dir, || judge(&owned, &check))
     });
     let status = match judged {
         Ok(status) => status,

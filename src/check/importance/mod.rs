@@ -27,6 +27,42 @@ pub const SEED: u64 = 0x1a5;
 /// Bound of the matched proposal's spread and error, in units of `eps I`.
 pub(crate) const MATCHED_BOUND: f64 = 16.0;
 
+/// The error of `estimate` against the draws it is given, as a picture: the root mean
+/// square of `mean - exact` over 16 estimates at each of 16, 64, ..., 65 536 draws, on
+/// log-log axes beside the slope -1/2 an unbiased estimator of finite variance follows. A
+/// bias shows as the points levelling off. Written as `importance_convergence.svg` into
+/// [`crate::check::pictures::failure_dir`]; `None` if it cannot be.
+fn convergence(
+    estimate: &Estimator,
+    f: &dyn Fn(f64) -> f64,
+    q: &Proposal,
+    exact: f64,
+    name: &str,
+    rng: &mut Rng,
+) -> Option<std::path::PathBuf> {
+    let points: Vec<(f64, f64)> = (0..7)
+        .map(|k| {
+            let n = 16usize << (2 * k);
+            let sum: f64 = (0..16)
+                .map(|_| (estimate(f, q, n, rng).mean - exact).powi(2))
+                .sum();
+            (n as f64, (sum / 16.0).sqrt())
+        })
+        .collect();
+    let title = format!("f = {name}, q: {}: the error of the estimate", q.name);
+    let svg = crate::check::pictures::loglog_svg(
+        &points,
+        -0.5,
+        [
+            &title,
+            "draws n",
+            "root mean square of (estimate - integral), 16 estimates",
+            "slope -1/2: an unbiased estimator",
+        ],
+    );
+    crate::check::pictures::write("importance_convergence.svg", &svg)
+}
+
 /// Runs the chapter's claims on `estimate`; `options` sets the draws per estimate (default
 /// [`SAMPLES`]), the seed (default [`SEED`]) and the t-tests' level.
 pub fn estimator(estimate: &Estimator, options: &Options) -> Verdict {
@@ -56,6 +92,10 @@ pub fn estimator(estimate: &Estimator, options: &Options) -> Verdict {
         for q in [UNIFORM, LINEAR] {
             let s = estimate(f, &q, n, &mut rng);
             let p = ttest::one_sample(&s, exact).map_or(0.0, |t| t.p_value);
+            if p < options.level() && unbiased.picture.is_none() {
+                unbiased.picture = convergence(estimate, f, &q, exact, name, &mut rng)
+                    .map(|path| path.display().to_string());
+            }
             unbiased.record(p >= options.level(), || {
                 format!(
                     "f = {name}, q: {}: mean {:.6} over {} terms where int f = {exact:.6} (p = {p:.3e})",

@@ -3,44 +3,10 @@
 //! *Checking a sampler*.
 
 use std::path::PathBuf;
-use std::sync::OnceLock;
 
 use super::cells::grid;
 use super::{Warp, WarpOptions};
-
-/// The folder set by [`set_failure_dir`] (`raylemma check sampler --failure-images DIR`).
-static FAILURE_DIR: OnceLock<PathBuf> = OnceLock::new();
-
-thread_local! {
-    /// The folder [`with_failure_dir`] set for the checks running on this thread.
-    static THREAD_DIR: std::cell::RefCell<Option<PathBuf>> = const { std::cell::RefCell::new(None) };
-}
-
-/// The folder the failure images go into: the one [`with_failure_dir`] set on this thread,
-/// else the one [`set_failure_dir`] set, else `warp-failures/` in the working directory
-/// (never a folder fixed when the binary was built, which may be read-only or another
-/// user's).
-pub fn failure_dir() -> PathBuf {
-    THREAD_DIR
-        .with(|d| d.borrow().clone())
-        .or_else(|| FAILURE_DIR.get().cloned())
-        .unwrap_or_else(|| PathBuf::from("warp-failures"))
-}
-
-/// Runs `f` with the failure images of this thread's checks going into `dir` (the report
-/// card puts each exercise's pictures into `results/EXERCISE/`), then restores the folder.
-pub fn with_failure_dir<T>(dir: PathBuf, f: impl FnOnce() -> T) -> T {
-    let before = THREAD_DIR.with(|d| d.replace(Some(dir)));
-    let out = f();
-    THREAD_DIR.with(|d| *d.borrow_mut() = before);
-    out
-}
-
-/// Sets the folder of the failure images for the rest of the process (the first call
-/// wins; `false` if it was already set to another folder).
-pub fn set_failure_dir(dir: PathBuf) -> bool {
-    FAILURE_DIR.get_or_init(|| dir.clone()) == &dir
-}
+use crate::check::pictures::failure_dir;
 
 /// The folder name of `warp`'s images: its name with every character that is not an ASCII
 /// letter or digit made `_`.

@@ -32,7 +32,6 @@ use super::{Finding, Options, Verdict};
 use crate::rng::{self, Rng};
 use crate::stats::{StatsError, chi2};
 use cells::{cell_of, cell_probabilities, grid, outside, worst_cells};
-pub use images::{failure_dir, set_failure_dir, with_failure_dir};
 use images::{remove_stale_images, write_failure_images};
 
 // ANCHOR: interface

@@ -160,7 +160,11 @@ fn writes_images_on_failure() {
         .unwrap_or_default()
         .trim();
     let dir = std::path::Path::new(named);
-    assert_eq!(dir, warp::failure_dir().join("images_demo"), "{message}");
+    assert_eq!(
+        dir,
+        raylemma::check::pictures::failure_dir().join("images_demo"),
+        "{message}"
+    );
     assert!(dir.is_relative(), "{message}");
     for f in ["observed.png", "expected.png", "difference.png"] {
         assert!(dir.join(f).is_file(), "{f} missing");

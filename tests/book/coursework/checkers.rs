@@ -33,6 +33,73 @@ fn importance_estimator() {
     );
 }
 
+/// A biased estimator's failure comes with a picture of its convergence: the error
+/// levels off where an unbiased one's keeps falling as n^(-1/2). The book's estimator,
+/// which passes, draws nothing.
+#[test]
+fn a_biased_estimator_is_drawn_levelling_off() {
+    use check::importance::planted;
+    use check::pictures::with_failure_dir;
+    let o = Options::default();
+    let dir = crate::support::scratch("importance-picture");
+    let v = with_failure_dir(dir.as_path().to_path_buf(), || {
+        check::importance::estimator(&planted::forgets_the_density, &o)
+    });
+    let picture = v.finding("unbiased").picture.clone();
+    let path = dir.as_path().join("importance_convergence.svg");
+    assert_eq!(picture, Some(path.display().to_string()));
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        svg.starts_with("<svg")
+            && svg.contains("slope -1/2")
+            && svg.matches("<circle").count() == 7,
+        "{svg}"
+    );
+    let book = |f: &dyn Fn(f64) -> f64, q: &importance::Proposal, n, r: &mut _| {
+        importance::estimate(f, q, n, r)
+    };
+    let clean = crate::support::scratch("importance-no-picture");
+    let v = with_failure_dir(clean.as_path().to_path_buf(), || {
+        check::importance::estimator(&book, &o)
+    });
+    assert_eq!(v.finding("unbiased").picture, None);
+    assert!(!clean.as_path().join("importance_convergence.svg").exists());
+}
+
+/// The log-log plot: points on slope -1/2 lie on the dashed line; the axes span whole
+/// decades; points that are not finite and positive are left out.
+#[test]
+fn the_log_log_plot_draws_the_points_and_the_expected_slope() {
+    let points: Vec<(f64, f64)> = [1e1, 1e2, 1e3, 1e4]
+        .iter()
+        .map(|&n: &f64| (n, 1.0 / n.sqrt()))
+        .chain([(1e5, f64::NAN), (0.0, 1.0)])
+        .collect();
+    let svg = check::pictures::loglog_svg(&points, -0.5, ["t", "x", "y", "slope"]);
+    assert_eq!(svg.matches("<circle").count(), 4, "{svg}");
+    assert!(
+        svg.contains(">1e1<") && svg.contains(">1e4<") && svg.contains(">1e-2<"),
+        "{svg}"
+    );
+    // The dashed line ends at the last point's height.
+    let line = svg
+        .lines()
+        .find(|l| l.contains("stroke-dasharray"))
+        .unwrap();
+    let last = svg.lines().rfind(|l| l.contains("<circle")).unwrap();
+    let y2 = line
+        .split("y2=\"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .unwrap();
+    let cy = last
+        .split("cy=\"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .unwrap();
+    assert_eq!(y2, cy, "{line}\n{last}");
+}
+
 #[test]
 fn tabulated_samplers() {
     let o = Options::default();
