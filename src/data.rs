@@ -41,15 +41,8 @@ impl fmt::Display for DataError {
 impl std::error::Error for DataError {}
 
 /// The 1-based line of `text` on which the byte `offset` is (a parser's span, for a
-/// [`DataError`]'s line).
-pub fn line_of(text: &str, offset: usize) -> usize {
-    let end = offset.min(text.len());
-    text.as_bytes()[..end]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
-}
+/// [`DataError`]'s line): the workspace's one, in the shared crate.
+pub use raylemma_output::line_of;
 
 /// The largest text file read (a scene, a table, a file of samples or answers): 32 MiB.
 pub const MAX_TEXT: u64 = 32 << 20;

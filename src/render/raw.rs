@@ -106,20 +106,11 @@ pub(super) struct RawSpectrum {
 
 /// The 1-based line of `text` on which the byte span `span` starts.
 pub(super) fn line_of(text: &str, span: Range<usize>) -> usize {
-    let end = span.start.min(text.len());
-    text.as_bytes()[..end]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
+    raylemma_output::line_of(text, span.start)
 }
 
 /// The 64-bit FNV-1a hash of `bytes` (a scene file's, for the render's sidecar).
-pub fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
-}
+pub use raylemma_output::fnv1a;
 
 /// The raw tables of the TOML text `text` of the file `file`, with their spans.
 ///

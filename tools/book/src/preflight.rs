@@ -32,6 +32,7 @@ use std::io;
 use std::path::{Path, PathBuf};
 use std::sync::LazyLock;
 
+use raylemma_output::line_of;
 use regex::Regex;
 
 use crate::values;
@@ -129,13 +130,4 @@ impl Checker {
             .map(Path::to_path_buf)
             .unwrap_or_else(|_| path.to_path_buf())
     }
-}
-
-/// 1-based line number of byte `offset` in `text`.
-fn line_of(text: &str, offset: usize) -> usize {
-    text.as_bytes()[..offset.min(text.len())]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
 }

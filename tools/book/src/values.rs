@@ -17,6 +17,7 @@ use std::sync::LazyLock;
 use anyhow::{Result, bail};
 use mdbook_driver::book::{Book, BookItem};
 use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
+use raylemma_output::line_of;
 use raylemma_values::{Found, Values};
 use regex::Regex;
 
@@ -194,10 +195,6 @@ fn suggest(values: &Values, name: &str) -> String {
         list.push_str(", …");
     }
     format!(" ({} records: {list})", entry.file)
-}
-
-fn line_of(text: &str, offset: usize) -> usize {
-    text[..offset.min(text.len())].matches('\n').count() + 1
 }
 
 fn paragraph(text: &str, start: usize, end: usize) -> (usize, usize) {

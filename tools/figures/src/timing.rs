@@ -8,6 +8,8 @@
 use std::hint::black_box;
 use std::time::Instant;
 
+use raylemma::output::fnv1a;
+
 /// Median nanoseconds per item of `batch`, which processes `items` items per call.
 /// Runs a warm-up call, then `reps` timed calls.
 pub fn median_ns_per_item(items: usize, reps: usize, mut batch: impl FnMut() -> u64) -> f64 {
@@ -205,13 +207,6 @@ pub fn describe(cpuinfo: &str, caches: &[Cache], max_khz: Option<f64>, threads: 
         "{printed}, fingerprint {:08x}",
         (print >> 32) as u32 ^ print as u32
     )
-}
-
-/// 64-bit FNV-1a: a fixed hash, the same on every platform and Rust version.
-fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
 }
 
 /// Median nanoseconds per call of `f` over `inputs` (see [`median_ns_per_item`]); the

@@ -462,9 +462,40 @@ pub fn files_under<P: AsRef<Path>>(root: &Path, dirs: &[P]) -> Result<Vec<PathBu
     Ok(files)
 }
 
+/// The 1-based line of `text` on which the byte `offset` is (a parser's span, for an
+/// error that names its line); an offset past the end is on the last line.
+pub fn line_of(text: &str, offset: usize) -> usize {
+    let end = offset.min(text.len());
+    text.as_bytes()[..end]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+/// The 64-bit FNV-1a hash of `bytes`: fixed, the same on every platform and Rust version
+/// (a scene file's hash in a render's sidecar, the code version of kept figures, a
+/// machine's fingerprint).
+pub fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lines_and_hashes() {
+        assert_eq!(line_of("a\nb\nc", 0), 1);
+        assert_eq!(line_of("a\nb\nc", 2), 2);
+        assert_eq!(line_of("a\nb\nc", 99), 3);
+        // The published FNV-1a 64 test vectors.
+        assert_eq!(fnv1a(b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(fnv1a(b"a"), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(fnv1a(b"foobar"), 0x8594_4171_f739_67e8);
+    }
 
     #[test]
     fn files_under_lists_every_file_of_the_folders_sorted() {
