@@ -210,7 +210,7 @@ fn first_line(text: &str) -> &str {
 
 /// The lines the card gives for each failed claim of `verdict`: the claim in words, in how
 /// many cases it is wrong and by how much (the worst error, in its unit, against what the
-/// claim allows), the input that shows it best (its first two lines, the worst failure if
+/// claim allows), the input that shows it best (its first two lines, at most 300 characters each; the worst failure if
 /// there is one, else the first), and the picture the checker drew, if any.
 pub(crate) fn failed_claims(verdict: &Verdict) -> Vec<String> {
     if verdict.findings.is_empty() {
@@ -239,7 +239,7 @@ pub(crate) fn failed_claims(verdict: &Verdict) -> Vec<String> {
             };
             for (k, line) in example.lines().take(2).enumerate() {
                 let head = if k == 0 { what } else { "" };
-                lines.push(format!("  {head:<11} {}", clip(line.trim(), 160)));
+                lines.push(format!("  {head:<11} {}", clip(line.trim(), 300)));
             }
         }
         if let Some(picture) = &f.picture {
