@@ -28,6 +28,12 @@ pub struct CompareArgs {
     /// Where to write the difference image (PNG).
     #[arg(long)]
     pub diff: Option<PathBuf>,
+    /// Samples per pixel of each plain candidate (read from an EXR's `spp` attribute when it
+    /// has one). With it, a candidate's variance is never taken below the reference's
+    /// per-sample variance over the candidates' samples: where every candidate reads the same
+    /// by chance (all 0 on a sliver of lit floor), their spread of 0 is not their noise.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    pub spp: Option<u32>,
 }
 
 /// Runs `raylemma compare`: agree (0), differ (1), bad input (2).
@@ -56,11 +62,30 @@ pub(crate) fn reference(path: &Path) -> Result<Estimate, ImageError> {
 }
 
 // ANCHOR: candidate
-/// The candidate: one image with its variance channels, or the spread of two or more.
+/// The candidate: one image with its variance channels, or the spread of two or more;
+/// its variances floored by the reference's ([`Estimate::floor_from_reference`]) when its
+/// samples per pixel are known (each image's `spp` attribute, else `spp`).
 pub(crate) fn candidate(
     paths: &[PathBuf],
-    size: (u32, u32),
+    reference: &Estimate,
+    spp: Option<u32>,
 ) -> Result<(Estimate, String, bool), ImageError> {
+    let size = (reference.image.width, reference.image.height);
+    let (mut estimate, name, from_xyz, samples) = read_candidate(paths, size, spp)?;
+    let floored = samples.is_some_and(|n| estimate.floor_from_reference(reference, n));
+    if !floored {
+        estimate.source +=
+            "; not floored by the reference's variance (its samples per pixel unknown: pass --spp)";
+    }
+    Ok((estimate, name, from_xyz))
+}
+
+/// The candidate as read, and its samples per pixel in all when every image's is known.
+fn read_candidate(
+    paths: &[PathBuf],
+    size: (u32, u32),
+    spp: Option<u32>,
+) -> Result<(Estimate, String, bool, Option<u64>), ImageError> {
     let mut files = Vec::new();
     for path in paths {
         let c = ExrContents::read(path)?;
@@ -87,6 +112,7 @@ pub(crate) fn candidate(
                 ),
                 name,
                 one.from_xyz,
+                one.spp.map(u64::from),
             )),
             None => Err(ImageError::Mismatch(format!(
                 "{path} is a plain image without variance channels, and it is the only candidate: \
@@ -111,7 +137,11 @@ pub(crate) fn candidate(
         paths[0].display(),
         paths[paths.len() - 1].display()
     );
-    Ok((estimate, name, from_xyz))
+    let samples = files
+        .iter()
+        .map(|c| c.spp.or(spp).map(u64::from))
+        .sum::<Option<u64>>();
+    Ok((estimate, name, from_xyz, samples))
 }
 // ANCHOR_END: candidate
 
@@ -210,8 +240,7 @@ fn compare_files(args: &CompareArgs) -> Result<bool, ImageError> {
         )));
     }
     let reference = reference(&args.reference)?;
-    let size = (reference.image.width, reference.image.height);
-    let (candidate, name, from_xyz) = candidate(&args.candidates, size)?;
+    let (candidate, name, from_xyz) = candidate(&args.candidates, &reference, args.spp)?;
     let c = compare::compare(&reference, &candidate, args.alpha)?;
     let names = [args.reference.display().to_string(), name];
     print!("{}", c.report([&names[0], &names[1]]));

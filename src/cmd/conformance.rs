@@ -12,13 +12,14 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
+use raylemma::check::external::ProgramError;
 use raylemma::check::render::diagnose::{self, diagnose};
 use raylemma::check::render::ladder::{self, LADDER, Rung, header};
 use raylemma::output::FileError;
-use raylemma::render::compare;
+use raylemma::render::compare::{self, Failures};
 use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
-use super::{CmdResult, Failure, Outcome, root, xml_escape};
+use super::{CmdResult, Failure, Outcome, xml_escape};
 
 /// The scene format the candidate reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -43,12 +44,18 @@ pub struct ConformanceArgs {
     /// has it: the rung's own where no other is asked, 1000 for the default) replaced.
     #[arg(long)]
     pub renderer: String,
-    /// The scene format the renderer reads.
-    #[arg(long, value_enum, default_value = "json")]
+    /// The scene format the renderer reads (no default: a renderer fed the wrong format
+    /// fails on every rung, which would say nothing about its physics).
+    #[arg(long, value_enum)]
     pub format: Format,
-    /// Renders of each rung, with seeds 1, 2, ...: their spread is the candidate's noise.
+    /// Renders of each rung, with different seeds: their spread is the candidate's noise.
     #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u32).range(2..))]
     pub runs: u32,
+    /// The card's seed: its K runs of each rung use the seeds K(S - 1) + 1 to K S (with
+    /// the default 1, the seeds 1 to K), so that cards of different seeds share no render.
+    /// A card that differs can be run again with another seed.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub seed: u64,
     /// Samples per pixel of each render.
     #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..))]
     pub spp: u32,
@@ -61,6 +68,13 @@ pub struct ConformanceArgs {
     /// The family-wise false-alarm rate of the whole card (Šidák over its comparisons).
     #[arg(long, default_value_t = 0.01)]
     pub alpha: f64,
+    /// The suite to run: a folder laid out as raylemma's source tree (its
+    /// `scenes/conformance/`, the `data/` files they read and
+    /// `figures/reference/conformance/`), such as a clone whose references you rendered
+    /// yourself. Default: the suite built into this binary, written out into
+    /// `WORK/suite/`. The card names the suite and its hash.
+    #[arg(long)]
+    pub suite: Option<PathBuf>,
     /// Where the scenes and renders go [default: conformance/ in the working directory].
     #[arg(long, default_value = "conformance")]
     pub work: PathBuf,
@@ -72,18 +86,204 @@ pub struct ConformanceArgs {
     pub junit: Option<PathBuf>,
 }
 
+/// A file of the suite as this binary was built: its path under the project root, and its
+/// bytes.
+macro_rules! suite_file {
+    ($path:literal) => {
+        (
+            $path,
+            include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/", $path)) as &[u8],
+        )
+    };
+}
+
+/// The suite built into this binary (40 files, about 2 MB): the ladder's scene
+/// files, the data files they read, and the references of every rung at every depth, as
+/// they were when it was built. A copied binary carries it; `--suite DIR` reads another.
+/// The test `the_built_in_suite_holds_every_rung_and_depth` holds it to the ladder.
+const BUILT_IN: &[(&str, &[u8])] = &[
+    suite_file!("scenes/conformance/01-direct-quad.toml"),
+    suite_file!("scenes/conformance/02-direct-sphere.toml"),
+    suite_file!("scenes/conformance/03-two-lights.toml"),
+    suite_file!("scenes/conformance/04-one-bounce.toml"),
+    suite_file!("scenes/conformance/05-box.toml"),
+    suite_file!("scenes/conformance/06-mirror.toml"),
+    suite_file!("scenes/conformance/07-glass.toml"),
+    suite_file!("scenes/conformance/08-roulette.toml"),
+    suite_file!("scenes/conformance/09-spectral-lamp.toml"),
+    suite_file!("scenes/conformance/10-thin-film.toml"),
+    suite_file!("scenes/conformance/11-dispersion.toml"),
+    suite_file!("data/cie_illuminant_D65.csv"),
+    suite_file!("data/cornell_box_reflectance.csv"),
+    suite_file!("figures/reference/conformance/01-direct-quad.exr"),
+    suite_file!("figures/reference/conformance/02-direct-sphere.exr"),
+    suite_file!("figures/reference/conformance/03-two-lights.exr"),
+    suite_file!("figures/reference/conformance/04-one-bounce-depth1.exr"),
+    suite_file!("figures/reference/conformance/04-one-bounce.exr"),
+    suite_file!("figures/reference/conformance/05-box-depth1.exr"),
+    suite_file!("figures/reference/conformance/05-box-depth2.exr"),
+    suite_file!("figures/reference/conformance/05-box-depth3.exr"),
+    suite_file!("figures/reference/conformance/05-box.exr"),
+    suite_file!("figures/reference/conformance/06-mirror-depth1.exr"),
+    suite_file!("figures/reference/conformance/06-mirror-depth2.exr"),
+    suite_file!("figures/reference/conformance/06-mirror-depth3.exr"),
+    suite_file!("figures/reference/conformance/06-mirror.exr"),
+    suite_file!("figures/reference/conformance/07-glass-depth1.exr"),
+    suite_file!("figures/reference/conformance/07-glass-depth2.exr"),
+    suite_file!("figures/reference/conformance/07-glass-depth3.exr"),
+    suite_file!("figures/reference/conformance/07-glass.exr"),
+    suite_file!("figures/reference/conformance/08-roulette-depth1.exr"),
+    suite_file!("figures/reference/conformance/08-roulette-depth2.exr"),
+    suite_file!("figures/reference/conformance/08-roulette-depth3.exr"),
+    suite_file!("figures/reference/conformance/08-roulette.exr"),
+    suite_file!("figures/reference/conformance/09-spectral-lamp-depth1.exr"),
+    suite_file!("figures/reference/conformance/09-spectral-lamp.exr"),
+    suite_file!("figures/reference/conformance/10-thin-film-depth1.exr"),
+    suite_file!("figures/reference/conformance/10-thin-film.exr"),
+    suite_file!("figures/reference/conformance/11-dispersion-depth1.exr"),
+    suite_file!("figures/reference/conformance/11-dispersion.exr"),
+];
+
+/// The suite a card runs: where its files are, where they came from, and their hash.
+struct Suite {
+    /// The folder holding `scenes/conformance/`, `data/` and `figures/reference/conformance/`.
+    dir: PathBuf,
+    /// "built into this binary" or the folder given.
+    source: String,
+    /// FNV-1a of every file of [`BUILT_IN`]'s list, its path then its bytes, in hexadecimal:
+    /// the same for a folder whose files are the built-in ones.
+    hash: String,
+}
+
+impl Suite {
+    /// The built-in suite, written out into `work/suite/`, or the folder `dir`.
+    fn open(dir: Option<&Path>, work: &Path) -> Result<Suite, Failure> {
+        let mut all = Vec::new();
+        let (dir, source) = match dir {
+            None => {
+                let out = work.join("suite");
+                for (path, bytes) in BUILT_IN {
+                    let to = out.join(path);
+                    raylemma::output::create_dir_all(to.parent().unwrap_or(&out))?;
+                    raylemma::output::write_file(&to, bytes)?;
+                    all.extend_from_slice(path.as_bytes());
+                    all.extend_from_slice(bytes);
+                }
+                (out, "built into this binary".to_string())
+            }
+            Some(dir) => {
+                for (path, _) in BUILT_IN {
+                    let from = dir.join(path);
+                    let bytes = std::fs::read(&from).map_err(|e| {
+                        Failure::BadInput(format!(
+                            "--suite {}: {} cannot be read ({e}): a suite is laid out as raylemma's source tree",
+                            dir.display(),
+                            from.display()
+                        ))
+                    })?;
+                    all.extend_from_slice(path.as_bytes());
+                    all.extend_from_slice(&bytes);
+                }
+                (dir.to_path_buf(), dir.display().to_string())
+            }
+        };
+        Ok(Suite {
+            dir,
+            source,
+            hash: format!("{:016x}", raylemma::output::fnv1a(&all)),
+        })
+    }
+
+    /// The folder of the ladder's scene files.
+    fn scenes(&self) -> PathBuf {
+        self.dir.join("scenes/conformance")
+    }
+}
+
 /// One line of the card.
 struct Row {
     rung: Rung,
     depth: Option<u32>,
-    /// `agree`, `differ`, `error` or `skipped`.
+    /// `agree`, `differ`, `error` (the renderer failed, or the suite could not be read) or
+    /// `skipped`.
     verdict: &'static str,
     /// The whole image's relative difference per channel with its 95 % half-width.
     bias: Option<[(f64, f64); 3]>,
-    /// The worst block, or the error, or why it was skipped.
+    /// `agree`: the worst block; `differ`: the tests that failed ([`Failures::text`]);
+    /// `error`: what failed; `skipped`: why.
     detail: String,
+    /// The tests that failed, when it differs.
+    failures: Option<Failures>,
+    /// How the renderer failed, when it did: never a verdict on its physics.
+    run_failure: Option<RunFailure>,
     /// What the difference looks like ([`diagnose`]), when it differs.
     diagnosis: Vec<String>,
+}
+
+/// How one run of the renderer failed: the command as run, what happened (its exit
+/// status, its time running out, no image, an image that cannot be read), the last lines
+/// of its output, and the image it was to write.
+struct RunFailure {
+    command: String,
+    what: String,
+    log_tail: Vec<String>,
+    log: PathBuf,
+    expected: PathBuf,
+}
+
+/// The last lines of the renderer's output (stdout and stderr together) kept on a card.
+const LOG_TAIL: usize = 8;
+
+impl RunFailure {
+    fn new(command: &str, what: String, log: &Path, expected: &Path) -> RunFailure {
+        let text = std::fs::read(log).unwrap_or_default();
+        let text = String::from_utf8_lossy(&text);
+        let lines: Vec<String> = text
+            .lines()
+            .filter(|l| !l.trim().is_empty())
+            .map(|l| l.chars().take(300).collect())
+            .collect();
+        RunFailure {
+            command: command.to_string(),
+            what,
+            log_tail: lines[lines.len().saturating_sub(LOG_TAIL)..].to_vec(),
+            log: log.to_path_buf(),
+            expected: expected.to_path_buf(),
+        }
+    }
+
+    /// The failure for people, several lines indented by `indent`.
+    fn text(&self, indent: &str) -> String {
+        let mut s = format!(
+            "{indent}command: {}\n{indent}what happened: {}\n{indent}the image it was to write: {}\n",
+            self.command,
+            self.what,
+            self.expected.display()
+        );
+        if self.log_tail.is_empty() {
+            let _ = writeln!(s, "{indent}its output ({}): nothing", self.log.display());
+        } else {
+            let _ = writeln!(
+                s,
+                "{indent}the last lines of its output ({}):",
+                self.log.display()
+            );
+            for l in &self.log_tail {
+                let _ = writeln!(s, "{indent}  | {l}");
+            }
+        }
+        s
+    }
+
+    fn json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "command": self.command,
+            "what": self.what,
+            "log": self.log.display().to_string(),
+            "log_tail": self.log_tail,
+            "expected": self.expected.display().to_string(),
+        })
+    }
 }
 
 /// Runs `raylemma conformance`.
@@ -115,12 +315,13 @@ pub fn run(args: &ConformanceArgs) -> CmdResult {
             LADDER.len()
         )));
     }
+    let suite = Suite::open(args.suite.as_deref(), &args.work)?;
     let comparisons: usize = rungs.iter().map(|r| r.depths.len()).sum();
     let level = raylemma::stats::sidak(args.alpha, comparisons as u32);
     let mut rows = Vec::new();
     for rung in rungs {
         for &depth in rung.depths {
-            let row = one(args, rung, depth, level);
+            let row = one(args, &suite, rung, depth, level);
             eprintln!(
                 "raylemma: rung {} {}: {} {}",
                 rung.number,
@@ -131,13 +332,13 @@ pub fn run(args: &ConformanceArgs) -> CmdResult {
             rows.push(row);
         }
     }
-    let card = card_text(&rows, args);
+    let card = card_text(&rows, args, &suite);
     print!("{card}");
     let write = |path: &Path, text: String| {
         raylemma::output::write_file(path, text.as_bytes()).map_err(Failure::from)
     };
     if let Some(p) = &args.json {
-        write(p, card_json(&rows, args))?;
+        write(p, card_json(&rows, args, &suite))?;
     }
     if let Some(p) = &args.junit {
         write(p, card_junit(&rows))?;
@@ -157,18 +358,25 @@ fn depth_name(depth: Option<u32>) -> String {
 }
 
 /// One rung at one depth: written, rendered `runs` times, compared.
-fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Row {
+fn one(args: &ConformanceArgs, suite: &Suite, rung: Rung, depth: Option<u32>, level: f64) -> Row {
     let row = |verdict, detail: String| Row {
         rung,
         depth,
         verdict,
         bias: None,
         detail,
+        failures: None,
+        run_failure: None,
         diagnosis: Vec::new(),
+    };
+    let failed = |failure: RunFailure| Row {
+        detail: format!("the renderer failed: {}", failure.what),
+        run_failure: Some(failure),
+        ..row("error", String::new())
     };
     let name = ladder::reference_name(&rung, depth);
     let dir = args.work.join(&name);
-    let (scene, file) = match write_scene(rung, depth, args.format, &dir) {
+    let (scene, file) = match write_scene(suite, rung, depth, args.format, &dir) {
         Ok(Written::Scene(p, file)) => (p, file),
         Ok(Written::Refused(why)) => {
             return row(
@@ -179,8 +387,9 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
         Err(e) => return row("error", format!("the scene could not be written: {e}")),
     };
     let mut outs = Vec::new();
-    for seed in 1..=args.runs {
-        let outdir = dir.join(format!("run-{seed}"));
+    for run in 1..=args.runs {
+        let seed = u64::from(args.runs) * (args.seed - 1) + u64::from(run);
+        let outdir = dir.join(format!("run-{run}"));
         let out = outdir.join("scene.exr");
         let _ = std::fs::remove_file(&out);
         if let Err(e) = std::fs::create_dir_all(&outdir) {
@@ -195,30 +404,48 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
             .replace("{seed}", &seed.to_string())
             .replace("{depth}", &file.scene.settings.max_depth.to_string());
         let log = outdir.join("log.txt");
-        if let Err(e) = raylemma::check::external::run_logged(
+        let failure = |what: String| failed(RunFailure::new(&command, what, &log, &out));
+        match raylemma::check::external::run_logged(
             &command,
             &log,
             Duration::from_secs_f64(args.timeout),
         ) {
-            return row(
-                "error",
-                format!("run {seed}: {e} (its output: {})", log.display()),
-            );
+            Err(ProgramError::Status { status, .. }) => {
+                return failure(format!(
+                    "run {run} (seed {seed}) {}",
+                    raylemma::check::external::ended(status)
+                ));
+            }
+            Err(ProgramError::Timeout { timeout, .. }) => {
+                return failure(format!(
+                    "run {run} (seed {seed}) did not finish in {:.0} s (--timeout): killed it",
+                    timeout.as_secs_f64()
+                ));
+            }
+            Err(e) => return failure(format!("run {run} (seed {seed}): {e}")),
+            Ok(()) => {}
         }
         if !out.is_file() {
-            return row("error", format!("run {seed} wrote no {}", out.display()));
+            return failure(format!(
+                "run {run} (seed {seed}) ended with status 0 but wrote no image"
+            ));
+        }
+        if let Err(e) = raylemma::render::image::ExrContents::read(&out) {
+            return failure(format!(
+                "run {run} (seed {seed}) wrote an image that cannot be read: {e}"
+            ));
         }
         outs.push(out);
     }
     let reference_of = |d: Option<u32>| {
-        let path = root()
+        let path = suite
+            .dir
             .join("figures/reference/conformance")
             .join(format!("{}.exr", ladder::reference_name(&rung, d)));
         super::compare::reference(&path)
     };
     let result = reference_of(depth).and_then(|reference| {
-        let size = (reference.image.width, reference.image.height);
-        let (candidate, _, _) = super::compare::candidate(&outs, size)?;
+        let (candidate, _, _) = super::compare::candidate(&outs, &reference, Some(args.spp))?;
         let c = compare::compare(&reference, &candidate, level)?;
         Ok((reference, candidate, c))
     });
@@ -244,25 +471,39 @@ fn one(args: &ConformanceArgs, rung: Rung, depth: Option<u32>, level: f64) -> Ro
                 };
                 diagnose(&reference, &candidate, level, &context)
             };
-            let worst = c.regions.first().map_or(String::new(), |r| {
-                format!(
-                    "worst block at ({}, {}) channel {}: z = {:.1}",
-                    r.x,
-                    r.y,
-                    ["R", "G", "B"][r.channel],
-                    r.z
-                )
-            });
+            let failures = c.failures();
+            let detail = if failures.is_empty() {
+                c.regions.first().map_or(String::new(), |r| {
+                    format!(
+                        "worst block at ({}, {}) channel {}: z = {:.1} (|z| > {:.2} fails)",
+                        r.x,
+                        r.y,
+                        ["R", "G", "B"][r.channel],
+                        r.z,
+                        c.z_critical
+                    )
+                })
+            } else {
+                format!("failed: {}", failures.text())
+            };
             Row {
                 rung,
                 depth,
                 verdict: if c.agree() { "agree" } else { "differ" },
                 bias: Some(c.image.map(|(_, _, rel)| rel)),
-                detail: worst,
+                detail,
+                failures: (!failures.is_empty()).then_some(failures),
+                run_failure: None,
                 diagnosis,
             }
         }
     }
+}
+
+/// `path` made absolute against the working directory (the scene is written elsewhere, and
+/// its data paths must hold from there).
+fn absolute(path: &Path) -> PathBuf {
+    std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
 /// What [`write_scene`] did.
@@ -275,12 +516,13 @@ enum Written {
 
 /// The rung's scene at `depth` in `format`, written into `dir`, or the export's refusal.
 fn write_scene(
+    suite: &Suite,
     rung: Rung,
     depth: Option<u32>,
     format: Format,
     dir: &Path,
 ) -> Result<Written, Box<dyn std::error::Error>> {
-    let source = root().join("scenes/conformance").join(rung.file);
+    let source = suite.scenes().join(rung.file);
     let text =
         std::fs::read_to_string(&source).map_err(|e| FileError::new(&source, e.to_string()))?;
     let mut text: String = text
@@ -289,7 +531,7 @@ fn write_scene(
         .map(|l| {
             let l = l.replace(
                 "\"../../data/",
-                &format!("\"{}/", root().join("data").display()),
+                &format!("\"{}/", absolute(&suite.dir.join("data")).display()),
             );
             if l.trim() == "[render]"
                 && let Some(d) = depth
@@ -302,7 +544,7 @@ fn write_scene(
         .collect::<Vec<_>>()
         .join("\n");
     text.push('\n');
-    let file = SceneFile::parse(&text, rung.file, &root().join("scenes/conformance"))?;
+    let file = SceneFile::parse(&text, rung.file, &suite.scenes())?;
     let exported = match format {
         Format::Toml => Ok(("toml", text)),
         Format::Json => Ok(("json", json::to_json(&file))),
@@ -331,14 +573,17 @@ fn bias_text(bias: &Option<[(f64, f64); 3]>) -> String {
 
 /// The card for people: one line per rung and depth, then the first failing rung and what
 /// a failure there usually means (its scene file's header).
-fn card_text(rows: &[Row], args: &ConformanceArgs) -> String {
+fn card_text(rows: &[Row], args: &ConformanceArgs, suite: &Suite) -> String {
     let mut s = format!(
-        "conformance of `{}` ({:?} scenes, {} runs of {} spp each; false alarms at most {} % over the card)\n",
+        "conformance of `{}` ({:?} scenes, {} runs of {} spp each, card seed {}; false alarms at most {} % over the card)\nsuite {} ({})\n",
         args.renderer,
         args.format,
         args.runs,
         args.spp,
-        100.0 * args.alpha
+        args.seed,
+        100.0 * args.alpha,
+        suite.hash,
+        suite.source
     );
     for r in rows {
         let _ = writeln!(
@@ -352,40 +597,65 @@ fn card_text(rows: &[Row], args: &ConformanceArgs) -> String {
             r.detail
         );
     }
-    match rows
-        .iter()
-        .find(|r| matches!(r.verdict, "differ" | "error"))
-    {
-        None => s += "verdict: every rung AGREES\n",
-        Some(r) => {
-            let text = std::fs::read_to_string(root().join("scenes/conformance").join(r.rung.file))
-                .unwrap_or_default();
-            let h = header(&text);
-            let _ = writeln!(
-                s,
-                "first failing: rung {} ({}) at {}: it tests {}",
-                r.rung.number,
-                h.title,
-                depth_name(r.depth),
-                h.tests,
-            );
-            if let Some(at) = depth_meaning(r.depth, r.rung) {
-                let _ = writeln!(s, "  {at}");
+    let errors: Vec<&Row> = rows.iter().filter(|r| r.verdict == "error").collect();
+    if let Some(r) = errors.first() {
+        let _ = writeln!(
+            s,
+            "the renderer FAILED on {} of {} comparisons: no image to judge there, so no verdict on its physics; the first, rung {} at {}:",
+            errors.len(),
+            rows.len(),
+            r.rung.number,
+            depth_name(r.depth)
+        );
+        match &r.run_failure {
+            Some(f) => s += &f.text("  "),
+            None => {
+                let _ = writeln!(s, "  {}", r.detail);
             }
-            if !r.diagnosis.is_empty() {
-                s += "  what the difference looks like:\n";
-                for d in &r.diagnosis {
-                    let _ = writeln!(s, "    - {d}");
-                }
-            }
-            let _ = writeln!(
-                s,
-                "  a failure here usually means: {}\n  derived in: {}",
-                h.failure, h.chapter
-            );
-            s += "verdict: the renderer DIFFERS\n";
         }
     }
+    if let Some(r) = rows.iter().find(|r| r.verdict == "differ") {
+        let text = std::fs::read_to_string(suite.scenes().join(r.rung.file)).unwrap_or_default();
+        let h = header(&text);
+        let _ = writeln!(
+            s,
+            "first differing: rung {} ({}) at {}: it tests {}",
+            r.rung.number,
+            h.title,
+            depth_name(r.depth),
+            h.tests,
+        );
+        let _ = writeln!(
+            s,
+            "  what failed: {}",
+            r.detail.trim_start_matches("failed: ")
+        );
+        if let Some(at) = depth_meaning(r.depth, r.rung) {
+            let _ = writeln!(s, "  {at}");
+        }
+        if !r.diagnosis.is_empty() {
+            s += "  what the difference looks like:\n";
+            for d in &r.diagnosis {
+                let _ = writeln!(s, "    - {d}");
+            }
+        }
+        let _ = writeln!(
+            s,
+            "  a failure here usually means: {}\n  derived in: {}",
+            h.failure, h.chapter
+        );
+    }
+    s += match (
+        errors.is_empty(),
+        rows.iter().any(|r| r.verdict == "differ"),
+    ) {
+        (true, false) => "verdict: every rung AGREES\n",
+        (_, true) => "verdict: the renderer DIFFERS\n",
+        (false, false) if rows.iter().any(|r| r.verdict == "agree") => {
+            "verdict: the renderer FAILED to render (see above); every comparison it rendered agrees\n"
+        }
+        (false, false) => "verdict: the renderer FAILED to render (see above)\n",
+    };
     s
 }
 
@@ -415,7 +685,7 @@ fn depth_meaning(depth: Option<u32>, rung: Rung) -> Option<&'static str> {
     })
 }
 
-fn card_json(rows: &[Row], args: &ConformanceArgs) -> String {
+fn card_json(rows: &[Row], args: &ConformanceArgs, suite: &Suite) -> String {
     let rungs: Vec<serde_json::Value> = rows
         .iter()
         .map(|r| {
@@ -426,6 +696,8 @@ fn card_json(rows: &[Row], args: &ConformanceArgs) -> String {
                 "verdict": r.verdict,
                 "relative_difference": r.bias.map(|b| b.map(|(rel, half)| serde_json::json!({"value": rel, "half_width_95": half}))),
                 "detail": r.detail,
+                "failed_tests": r.failures.as_ref().map(failures_json),
+                "renderer_failure": r.run_failure.as_ref().map(RunFailure::json),
                 "diagnosis": r.diagnosis,
             })
         })
@@ -438,11 +710,32 @@ fn card_json(rows: &[Row], args: &ConformanceArgs) -> String {
         "renderer": args.renderer,
         "runs": args.runs,
         "spp": args.spp,
+        "seed": args.seed,
+        "suite": {"hash": suite.hash, "source": suite.source},
         "alpha": args.alpha,
         "rungs": rungs,
         "first_failing_rung": first,
     });
     serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
+}
+
+/// The failed tests of a comparison as JSON: each kind's count and worst failure.
+fn failures_json(f: &Failures) -> serde_json::Value {
+    let rgb = ["R", "G", "B"];
+    serde_json::json!({
+        "z_critical": f.z_critical,
+        "pixels": {
+            "count": f.pixels.0,
+            "worst": f.pixels.1.map(|(x, y, c, z)| serde_json::json!({"x": x, "y": y, "channel": rgb[c], "z": z})),
+        },
+        "blocks": {
+            "count": f.blocks.0,
+            "size": compare::BLOCK,
+            "worst": f.blocks.1.map(|r| serde_json::json!({"x": r.x, "y": r.y, "channel": rgb[r.channel], "z": r.z})),
+        },
+        "whole_image": f.image.iter().map(|(c, z)| serde_json::json!({"channel": rgb[*c], "z": z})).collect::<Vec<_>>(),
+        "text": f.text(),
+    })
 }
 
 fn card_junit(rows: &[Row]) -> String {
@@ -460,7 +753,10 @@ fn card_junit(rows: &[Row]) -> String {
             r.rung.file.trim_end_matches(".toml"),
             depth_name(r.depth)
         ));
-        let detail = xml_escape(&format!("{} {}", bias_text(&r.bias), r.detail));
+        let detail = xml_escape(&match &r.run_failure {
+            Some(f) => f.text(""),
+            None => format!("{} {}", bias_text(&r.bias), r.detail),
+        });
         let _ = match r.verdict {
             "differ" => writeln!(
                 s,
@@ -468,7 +764,7 @@ fn card_junit(rows: &[Row]) -> String {
             ),
             "error" => writeln!(
                 s,
-                "  <testcase name=\"{name}\"><error message=\"the renderer failed\">{detail}</error></testcase>"
+                "  <testcase name=\"{name}\"><error message=\"the renderer failed: not a verdict on its physics\">{detail}</error></testcase>"
             ),
             "skipped" => writeln!(
                 s,
@@ -479,4 +775,33 @@ fn card_junit(rows: &[Row]) -> String {
     }
     s += "</testsuite>\n";
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every rung's scene file and its reference at every depth are in the built-in suite
+    /// (a rung or depth added to the ladder without its files here fails this test).
+    #[test]
+    fn the_built_in_suite_holds_every_rung_and_depth() {
+        let has = |path: String| BUILT_IN.iter().any(|(p, _)| *p == path);
+        for rung in LADDER {
+            assert!(
+                has(format!("scenes/conformance/{}", rung.file)),
+                "{}",
+                rung.file
+            );
+            for &depth in rung.depths {
+                let name = ladder::reference_name(&rung, depth);
+                assert!(
+                    has(format!("figures/reference/conformance/{name}.exr")),
+                    "{name}"
+                );
+            }
+        }
+        let references = BUILT_IN.iter().filter(|(p, _)| p.ends_with(".exr")).count();
+        let comparisons: usize = LADDER.iter().map(|r| r.depths.len()).sum();
+        assert_eq!(references, comparisons);
+    }
 }

@@ -120,6 +120,38 @@ impl Estimate {
         })
     }
     // ANCHOR_END: spread
+
+    // ANCHOR: floor
+    /// Raises every variance of this estimate (a candidate's) to at least the variance a
+    /// mean of `samples` samples would have if each sample were as spread as the
+    /// reference's: `σ̂²_R / N`, with `σ̂²_R = n_R v_R` the reference's per-sample variance
+    /// (its variance of the mean `v_R` times its `n_R` samples per pixel) and `N` the
+    /// candidate's samples per pixel in all (`K x n` for `K` images of `n`). Returns
+    /// whether it could: not when the reference's samples per pixel are unknown.
+    ///
+    /// Why: a candidate's own estimate of its variance misses what its samples missed. On a
+    /// sliver of lit floor at a sphere's edge that one sample in a hundred reaches, four
+    /// renders of 64 samples often all read exactly 0: their spread is 0, and a t-test
+    /// with no spread is no test (any difference at all is infinitely many standard errors).
+    /// Under the hypothesis that both renders estimate the same image with samples equally
+    /// spread, `σ̂²_R / N` is the candidate's variance, estimated from the reference's
+    /// thousands of samples; a candidate noisier than the reference keeps its own larger
+    /// spread. Raising a variance only shrinks `|t|`, so every test stays at least as
+    /// conservative as before with the same degrees of freedom (`K - 1`, or `n - 1`).
+    pub fn floor_from_reference(&mut self, reference: &Estimate, samples: u64) -> bool {
+        let Some(n_ref) = reference.image.spp.filter(|&n| n >= 2) else {
+            return false;
+        };
+        let scale = f64::from(n_ref) / samples.max(1) as f64;
+        for (v, v_ref) in self.image.var.iter_mut().zip(&reference.image.var) {
+            *v = v.max(*v_ref * scale);
+        }
+        self.source += &format!(
+            "; raised where smaller to the reference's per-sample variance over {samples} samples per pixel"
+        );
+        true
+    }
+    // ANCHOR_END: floor
 }
 
 /// The variance of the rounding of `v` to a half float: `ulp²/12`, that of an error spread
@@ -301,6 +333,89 @@ impl Comparison {
             "verdict: the images DIFFER\n"
         };
         s
+    }
+}
+
+/// The tests of a [`Comparison`] that failed: how many of each kind, and the worst of each.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Failures {
+    /// The critical `|z|` every test was held to.
+    pub z_critical: f64,
+    /// How many pixel-channel tests failed, and the worst: `(x, y, channel, z)`.
+    pub pixels: (usize, Option<(u32, u32, usize, f64)>),
+    /// How many block tests failed, and the worst.
+    pub blocks: (usize, Option<Region>),
+    /// The whole image's failed channel means: `(channel, z)`.
+    pub image: Vec<(usize, f64)>,
+}
+
+impl Failures {
+    /// Whether no test failed.
+    pub fn is_empty(&self) -> bool {
+        self.pixels.0 == 0 && self.blocks.0 == 0 && self.image.is_empty()
+    }
+
+    /// In words: `3 pixel tests (worst: pixel (12, 40) G, z = 7.2), 1 block test (worst:
+    /// the block at (16, 16) B, z = -5.9), the whole image's mean in R (z = 6.3), beyond
+    /// |z| > 5.31`; empty when none failed.
+    pub fn text(&self) -> String {
+        let rgb = ["R", "G", "B"];
+        let plural =
+            |n: usize, what: &str| format!("{n} {what} test{}", if n == 1 { "" } else { "s" });
+        let mut parts = Vec::new();
+        if let (n, Some((x, y, c, z))) = self.pixels {
+            parts.push(format!(
+                "{} (worst: pixel ({x}, {y}) {}, z = {z:.1})",
+                plural(n, "pixel"),
+                rgb[c]
+            ));
+        }
+        if let (n, Some(r)) = self.blocks {
+            parts.push(format!(
+                "{} (worst: the {BLOCK}x{BLOCK} block at ({}, {}) {}, z = {:.1})",
+                plural(n, "block"),
+                r.x,
+                r.y,
+                rgb[r.channel],
+                r.z
+            ));
+        }
+        if !self.image.is_empty() {
+            let channels: Vec<String> = self
+                .image
+                .iter()
+                .map(|(c, z)| format!("{} (z = {z:.1})", rgb[*c]))
+                .collect();
+            parts.push(format!("the whole image's mean in {}", channels.join(", ")));
+        }
+        if parts.is_empty() {
+            return String::new();
+        }
+        format!("{}, beyond |z| > {:.2}", parts.join(", "), self.z_critical)
+    }
+}
+
+impl Comparison {
+    /// The tests that failed ([`Failures`]).
+    pub fn failures(&self) -> Failures {
+        Failures {
+            z_critical: self.z_critical,
+            pixels: (
+                self.pixel_failure_count,
+                self.pixel_failures.first().copied(),
+            ),
+            blocks: (
+                self.block_failure_count,
+                self.regions
+                    .iter()
+                    .find(|r| fails(r.z, self.z_critical))
+                    .copied(),
+            ),
+            image: (0..3)
+                .filter(|&c| fails(self.image[c].0, self.z_critical))
+                .map(|c| (c, self.image[c].0))
+                .collect(),
+        }
     }
 }
 

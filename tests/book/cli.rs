@@ -612,16 +612,36 @@ fn conformance_passes_raylemma_and_points_at_a_fault() {
     let card = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{card}");
     assert!(
-        card.contains("first failing: rung 1")
+        card.contains("first differing: rung 1")
+            && card.contains("what failed: ")
+            && card.contains("the whole image's mean in R")
             && card.contains("a failure here usually means")
             && card.contains("differ"),
         "{card}"
     );
+    // A renderer that fails is not physics: the card names the command, how it ended, the
+    // last lines of its output and the image it was to write, and no physical cause.
     let out = run("true", &[]);
     let card = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{card}");
     assert!(
-        card.contains("error") && card.contains("wrote no"),
+        card.contains("error") && card.contains("wrote no image") && card.contains("FAILED"),
+        "{card}"
+    );
+    let out = run("echo cannot read {scene} >&2; exit 3", &[]);
+    let card = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{card}");
+    for needed in [
+        "exited with status 3",
+        "| cannot read ",
+        "command: echo cannot read ",
+        "the image it was to write: ",
+        "no verdict on its physics",
+    ] {
+        assert!(card.contains(needed), "{needed} missing from {card}");
+    }
+    assert!(
+        !card.contains("usually means") && !card.contains("DIFFERS"),
         "{card}"
     );
     let out = run(&ours, &["--rungs", "99"]);

@@ -55,7 +55,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 pub use optics::{Function, fresnel, fresnel_questions, refraction, refraction_questions};
-pub use run::{ProgramError, run_logged};
+pub use run::{ProgramError, ended, run_logged};
 pub use sampler::{Density, Sampler, Target, domain_named, sampler};
 
 /// How long one run of a program may take by default: generous, since a run may answer

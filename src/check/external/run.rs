@@ -352,6 +352,12 @@ fn kill(child: &mut Child) {
     let _ = child.wait();
 }
 
+/// How a program ended, in words, with what the shell's own statuses mean: "exited with
+/// status 127 (127: the shell found no such command)".
+pub fn ended(status: ExitStatus) -> String {
+    format!("{}{}", describe(status), hint(status))
+}
+
 /// "exited with status 3", "was killed by signal 9".
 fn describe(status: ExitStatus) -> String {
     match status.code() {

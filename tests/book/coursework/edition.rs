@@ -116,7 +116,8 @@ fn names(dir: &Path) -> Vec<String> {
 // stub's place is this file (`edition.rs:`).
 #[test]
 fn a_stub_panics_with_a_message_the_card_recognises() {
-    let payload = crate::report_card::deliberate(|| raylemma::exercise::todo("disc_polar")).unwrap_err();
+    let payload =
+        crate::report_card::deliberate(|| raylemma::exercise::todo("disc_polar")).unwrap_err();
     let message = raylemma::exercise::panic_message(payload.as_ref());
     assert!(
         message.starts_with("exercise `disc_polar` is not started"),

@@ -2,11 +2,14 @@
 //! plain EXRs as other renderers write them, and the refusal of images no comparison can
 //! use.
 //!
-//! Statistical tests (3 of the suite's budget of 200), on synthetic images with normal
+//! Statistical tests (4 of the suite's budget of 200), on synthetic images with normal
 //! noise of known size (no rendering: the tests cost milliseconds): the pixel z's of 2, 4
 //! and 16 candidates are standard normal and the verdict is *agree*; 4 candidates
 //! with normal critical values (the planted twin) raise false alarms; a 3 % brighter
-//! candidate is refused. Each at `raylemma::stats::test_alpha()`, shared by Šidák.
+//! candidate is refused; on light that few samples reach, 4 candidates whose spread is
+//! often 0 agree once floored by the reference's variance, and do not without the floor
+//! (the planted twin), and the same light 25 % brighter is refused. Each at
+//! `raylemma::stats::test_alpha()`, shared by Šidák.
 
 use std::path::PathBuf;
 
@@ -471,4 +474,97 @@ fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
     let mut bright = candidates(1.03, "half-bright");
     add_half_rounding(&mut bright);
     assert!(!compare(&reference, &bright, alpha).unwrap().agree());
+}
+
+/// A pixel of rare light: each sample is `1` with probability `p`, else `0`, as on a sliver
+/// of floor that few paths reach. The mean of `n` samples (a binomial count over `n`) and
+/// the variance of that mean, `s^2 / n` from the samples' own spread.
+fn rare_pixel(p: f64, n: u32, gain: f64, rng: &mut Rng) -> (f64, f64) {
+    let hits = (0..n).filter(|_| rng::uniform(rng, 0.0, 1.0) < p).count() as f64;
+    let n = f64::from(n);
+    let mean = hits / n;
+    let var = if n > 1.0 {
+        hits * (1.0 - mean) * (1.0 - mean) / (n - 1.0) + (n - hits) * mean * mean / (n - 1.0)
+    } else {
+        0.0
+    } / n;
+    (gain * mean, gain * gain * var)
+}
+
+/// An image of rare light, `SIDE_RARE` square, where each pixel's three channels are
+/// reached with probability `p` rising from 0.5 % to 4 % across the image; `n` samples per
+/// pixel.
+fn rare_image(n: u32, gain: f64, rng: &mut Rng) -> Image {
+    const SIDE_RARE: u32 = 32;
+    let mut mean = Vec::new();
+    let mut var = Vec::new();
+    for i in 0..SIDE_RARE * SIDE_RARE {
+        let p = 0.005 + 0.035 * f64::from(i % SIDE_RARE) / f64::from(SIDE_RARE - 1);
+        let (mut m, mut v) = (DVec3::ZERO, DVec3::ZERO);
+        for c in 0..3 {
+            (m[c], v[c]) = rare_pixel(p, n, gain, rng);
+        }
+        mean.push(m);
+        var.push(v);
+    }
+    Image {
+        width: SIDE_RARE,
+        height: SIDE_RARE,
+        mean,
+        var,
+        spp: Some(n),
+    }
+}
+
+/// The conformance card's case (chapter *Comparing images*, *A floor under the spread*):
+/// four candidates of 64 samples of light that one sample in 25 to 200 reaches. Their
+/// spread is often 0 where all four read 0; floored by the reference's per-sample variance
+/// ([`Estimate::floor_from_reference`]) they agree with a reference of 4096 samples; without
+/// the floor (the planted twin: the card before the floor) they do not; and the same light
+/// 25 % brighter, floored, is refused.
+#[test]
+fn rare_light_agrees_once_floored_and_a_brighter_one_does_not() {
+    let mut rng = rng::seeded(0x000f_1004);
+    let reference = Estimate::from_variance(rare_image(4096, 1.0, &mut rng));
+    let runs = |gain: f64, rng: &mut Rng| {
+        let images: Vec<Image> = (0..4).map(|_| rare_image(64, gain, rng)).collect();
+        let means: Vec<&[DVec3]> = images.iter().map(|i| &i.mean[..]).collect();
+        Estimate::from_spread(32, 32, &means).unwrap()
+    };
+    let same = runs(1.0, &mut rng);
+    let zero_spread = same
+        .image
+        .var
+        .iter()
+        .filter(|v| v.min_element() == 0.0)
+        .count();
+    assert!(
+        zero_spread > 10,
+        "only {zero_spread} pixels with a channel of no spread"
+    );
+    let bare = compare(&reference, &same, test_alpha()).unwrap();
+    assert!(
+        !bare.agree(),
+        "without the floor, zero spread went unpunished:\n{}",
+        bare.report(["ref", "cand"])
+    );
+    let mut floored = same.clone();
+    assert!(floored.floor_from_reference(&reference, 4 * 64));
+    let c = compare(&reference, &floored, test_alpha()).unwrap();
+    assert!(c.agree(), "{}", c.report(["ref", "cand"]));
+    let mut brighter = runs(1.25, &mut rng);
+    assert!(brighter.floor_from_reference(&reference, 4 * 64));
+    let c = compare(&reference, &brighter, test_alpha()).unwrap();
+    assert!(
+        !c.agree() && c.image.iter().all(|(z, _, _)| *z > 0.0),
+        "{}",
+        c.report(["ref", "cand"])
+    );
+    // What failed is said: the whole image's mean, brighter.
+    let failed = c.failures();
+    assert!(
+        !failed.is_empty() && failed.text().contains("the whole image's mean"),
+        "{}",
+        failed.text()
+    );
 }

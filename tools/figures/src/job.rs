@@ -16,8 +16,8 @@ pub use raylemma_values::Record;
 use raylemma_values::{Entry, Values, fingerprint};
 
 use crate::{
-    accuracy, colour, compare, coursework, diagram, dispersion, display, emission, export,
-    external, frame, fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow,
+    accuracy, colour, compare, conformance, coursework, diagram, dispersion, display, emission,
+    export, external, frame, fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow,
     specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
@@ -89,6 +89,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(upsample::outputs());
     outputs.extend(crate::render::outputs());
     outputs.extend(compare::outputs());
+    outputs.extend(conformance::outputs());
     outputs.extend(export::outputs());
     outputs.extend(limit::outputs());
     outputs.extend(mitsuba::outputs());
@@ -101,8 +102,9 @@ pub fn all() -> Vec<Output> {
 /// with a comment, invisible in the book, naming the [`code_version`] it was made from), or
 /// when the file is gone. Every other output takes about a second or less. A kept output's
 /// record in `figures/values.json` stays as it was made (one that records nothing has none).
-const KEPT_WHILE_CODE_UNCHANGED: [&str; 9] = [
+const KEPT_WHILE_CODE_UNCHANGED: [&str; 10] = [
     "render_compare_calibration.md",
+    "conformance_false_alarms.md",
     "render_test_power.md",
     "stats_far_tail.md",
     "stats_pvalues.svg",

@@ -16,6 +16,7 @@ mod timing;
 mod accuracy;
 mod colour;
 mod compare;
+mod conformance;
 mod coursework;
 mod diagram;
 mod dispersion;
