@@ -124,13 +124,11 @@ pub fn schlick(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdict {
         let r0 = ((n1 - n2) / (n1 + n2)).powi(2);
         for k in 0..angles {
             let cos_i = (k as f64 * step).to_radians().cos();
-            let cos = if n1 <= n2 {
-                cos_i
-            } else {
-                match independent_transmittance(cos_i, n1, n2) {
-                    Some((cos_t, _)) => cos_t,
-                    None => continue,
-                }
+            // The cosine on the less dense side.
+            let cos = match independent_transmittance(cos_i, n1, n2) {
+                _ if n1 <= n2 => cos_i,
+                Some((cos_t, _)) => cos_t,
+                None => continue,
             };
             let x = 1.0 - cos;
             let want = r0 + (1.0 - r0) * x * x * x * x * x;

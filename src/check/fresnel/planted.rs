@@ -38,13 +38,11 @@ pub fn fresnel_p_paired_like_s(cos_i: f64, n1: f64, n2: f64) -> f64 {
 /// grazing, TIR, reciprocity), and [`super::schlick`] must reject it.
 pub fn schlick_fourth_power(cos_i: f64, n1: f64, n2: f64) -> f64 {
     let c = cos_i.abs().min(1.0);
-    let cos = if n1 <= n2 {
-        c
-    } else {
-        match crate::optics::fresnel::cos_transmitted(c, n1, n2) {
-            Some(cos_t) => cos_t,
-            None => return 1.0,
-        }
+    // The cosine on the less dense side.
+    let cos = match crate::optics::fresnel::cos_transmitted(c, n1, n2) {
+        _ if n1 <= n2 => c,
+        Some(cos_t) => cos_t,
+        None => return 1.0,
     };
     let r0 = crate::optics::fresnel::r0(n1, n2);
     r0 + (1.0 - r0) * (1.0 - cos).powi(4)
