@@ -280,3 +280,15 @@ fn every_solution_of_this_crate_is_a_body_the_grader_accepts() {
         }
     }
 }
+
+/// This crate's hand-out can be made: no line of a removed solution is in any file it ships
+/// (a checker or a planted bug that repeats a solution's line is found here, not first by
+/// `raylemma exercises` in CI).
+#[test]
+fn this_crate_makes_a_hand_out_with_no_solution_line() {
+    let root = crate::support::root();
+    let sources = edition::read_sources(root).unwrap_or_else(|e| panic!("{e}"));
+    if let Err(e) = edition::make(sources, Kind::HandOut) {
+        panic!("{e}");
+    }
+}
