@@ -9,7 +9,9 @@
 //! non-uniform `disc_polar` look uniform), a test, a checker, the registry, a `use` line.
 //! So a body must say everything it needs (a `use` inside the body, a helper as a nested
 //! `fn`). An exercise whose markers the submission lost or broke is graded as its stub,
-//! with a note that says why.
+//! with a note that says why, and so is one whose body could reach outside its function
+//! ([`refused`]: read by a tokenizer, its brackets must balance outside strings and
+//! comments; no `include!`, `mod`, `macro_rules!`, `unsafe` or `extern`).
 //!
 //! **Points.** [`Weights`] come from one TOML file the teacher writes:
 //!
