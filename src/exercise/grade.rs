@@ -9,7 +9,9 @@
 //! non-uniform `disc_polar` look uniform), a test, a checker, the registry, a `use` line.
 //! So a body must say everything it needs (a `use` inside the body, a helper as a nested
 //! `fn`). An exercise whose markers the submission lost or broke is graded as its stub,
-//! with a note that says why.
+//! with a note that says why, and so is one whose body could reach outside its function
+//! ([`refused`]: read by a tokenizer, its brackets must balance outside strings and
+//! comments; no `include!`, `mod`, `macro_rules!`, `unsafe` or `extern`).
 //!
 //! **Points.** [`Weights`] come from one TOML file the teacher writes:
 //!
@@ -36,7 +38,8 @@ use super::stub;
 use crate::data::DataError;
 
 /// The body of `m` in `text` (a file of the submission whose markers are `theirs`): the
-/// lines strictly between its signature and its closing `}`, or why there is none.
+/// lines strictly between its signature and its closing `}`, or why there is none or it
+/// is refused ([`refused`]).
 fn body_of(m: &Marker, text: &str, theirs: &[Marker]) -> Result<Vec<String>, String> {
     let Some(t) = theirs.iter().find(|t| t.name == m.name) else {
         return Err(format!(
@@ -44,12 +47,86 @@ fn body_of(m: &Marker, text: &str, theirs: &[Marker]) -> Result<Vec<String>, Str
             m.file, m.name
         ));
     };
-    Ok(text
+    let body: Vec<String> = text
         .lines()
         .skip(t.signature_end)
         .take(t.close - t.signature_end - 1)
         .map(str::to_string)
-        .collect())
+        .collect();
+    match refused(&body) {
+        Some((line, why)) => Err(format!(
+            "{}:{}: the body of `{}` is refused: {why}: graded as not started",
+            m.file,
+            t.signature_end + line,
+            m.name
+        )),
+        None => Ok(body),
+    }
+}
+
+/// Why the lines `body` of an exercise cannot go into the edition's code, with the line
+/// of the body (1-based) where it shows, or `None`. Chapter *Coursework*, "What the grader
+/// stops".
+///
+/// The body is read by a Rust tokenizer (proc-macro2's, which lexes strings, raw strings,
+/// characters, lifetimes and nested comments as rustc does). It is refused when:
+///
+/// - it does not tokenize: a bracket that does not balance outside strings and comments,
+///   or a string or comment not closed. Only such a body can end outside its function
+///   (`} #[cfg(any())] mod hidden { fn h() {`, closed by a later body, hides and
+///   replaces the edition's code between them); a body whose brackets balance is, in the
+///   edition, all inside the function's braces;
+/// - a line of it is an exercise marker (it would move the graded copy's markers);
+/// - it reads a file into the code (`include!`, `include_str!`, `include_bytes!`),
+///   declares a module (`mod`: with `#[path]`, another file), defines a macro
+///   (`macro_rules!`, which `#[macro_export]` would put at the crate's root), or uses
+///   `unsafe` or `extern` (memory, symbols and linking outside the language's rules).
+///
+/// What a body does when it runs (`std::process::exit`, writing the card's JSON file,
+/// reading files) no reading of its text stops: that needs a sandbox.
+pub fn refused(body: &[String]) -> Option<(usize, String)> {
+    if let Some(i) = body.iter().position(|l| marker::is_marker_line(l)) {
+        return Some((i + 1, "a line of it is an exercise marker".into()));
+    }
+    match body.join("\n").parse::<proc_macro2::TokenStream>() {
+        Err(e) => Some((
+            e.span().start().line.max(1),
+            "its brackets do not balance outside strings and comments, or a string or comment \
+             is not closed: a body must end inside its own function"
+                .into(),
+        )),
+        Ok(tokens) => forbidden(tokens),
+    }
+}
+
+/// The first token of `tokens` (at any depth) that [`refused`] does not allow, with its
+/// line and why.
+fn forbidden(tokens: proc_macro2::TokenStream) -> Option<(usize, String)> {
+    use proc_macro2::TokenTree;
+    let trees: Vec<TokenTree> = tokens.into_iter().collect();
+    for (i, tree) in trees.iter().enumerate() {
+        let ident = match tree {
+            TokenTree::Group(g) => match forbidden(g.stream()) {
+                Some(found) => return Some(found),
+                None => continue,
+            },
+            TokenTree::Ident(ident) => ident,
+            _ => continue,
+        };
+        let bang = matches!(trees.get(i + 1), Some(TokenTree::Punct(p)) if p.as_char() == '!');
+        let why = match ident.to_string().as_str() {
+            "include" | "include_str" | "include_bytes" if bang => {
+                "it reads a file into the code when it is compiled"
+            }
+            "macro_rules" if bang => "it defines a macro",
+            "mod" => "it declares a module",
+            "unsafe" => "it uses `unsafe`",
+            "extern" => "it declares or links outside code (`extern`)",
+            _ => continue,
+        };
+        return Some((ident.span().start().line, format!("{why} (`{ident}`)")));
+    }
+    None
 }
 
 /// This crate's files `sources` with every exercise of `exercises` given the body it has

@@ -170,6 +170,21 @@ fn warp_options() -> Options {
 /// keep (it cannot keep `energy` or `matched`: it approximates).
 pub const SCHLICK_KEEPS: [&str; 5] = ["range", "normal", "grazing", "tir", "reciprocity"];
 
+/// The card's judgement of a Schlick routine `f` (the chapter *Fresnel and Schlick*): the
+/// claims of the reflectance checker an approximation keeps ([`SCHLICK_KEEPS`]), which
+/// hold for any power of `1 - cos`, and [`check::fresnel::schlick`]'s `formula` and
+/// `exponent`, which hold only for Schlick's fifth power: one verdict.
+pub fn schlick_verdict(f: &dyn Fn(f64, f64, f64) -> f64) -> Verdict {
+    let o = Options::default();
+    let mut v = only(
+        check::fresnel::reflectance(f, &o),
+        &SCHLICK_KEEPS,
+        "the claims an approximation keeps, and its formula",
+    );
+    v.findings.extend(check::fresnel::schlick(f, &o).findings);
+    v
+}
+
 /// `verdict` with only the findings named `keep`, its subject saying so.
 pub fn only(mut verdict: Verdict, keep: &[&str], why: &str) -> Verdict {
     verdict.findings.retain(|f| keep.contains(&f.name.as_str()));
@@ -348,10 +363,7 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "schlick",
         needs: &[],
-        check: || {
-            let v = check::fresnel::reflectance(&fresnel::schlick, &Options::default());
-            vec![only(v, &SCHLICK_KEEPS, "the claims an approximation keeps")]
-        },
+        check: || vec![schlick_verdict(&fresnel::schlick)],
     },
     Exercise {
         name: "narrow_lobe_brdf",

@@ -9,7 +9,12 @@ exercises at 1, disc_polar at 3, srgb_encode at 2).
   loophole  disc_polar samples r = u1 and the same file's disc_pdf (1/(2 pi r)) and
             disc_polar_invert (r instead of r^2) are changed to match, so that the
             submission's own card passes it: the grader puts back the edition's disc_pdf
-            and inverse, 24 of 27.
+            and inverse, 24 of 27;
+  escape    the escape of issue 40: a wrong amplitudes whose body ends with
+            `} #[cfg(any())] mod hidden { fn h() {`, and fresnel_transmittance's body that
+            closes it and redefines the edition's fresnel_polarized and fresnel_dielectric
+            (which the card judges amplitudes by) between: both bodies are refused for
+            brackets that do not balance and graded as their stubs (not started), 25 of 27.
 
 It also writes OUT/expected.json, the marks and failing exercises CI requires.
 
@@ -58,12 +63,41 @@ edit(d, DISC, "    V2::new(p.x * p.x + p.y * p.y, phi / consts::TAU)",
 edit(d, DISC, "    if p.x * p.x + p.y * p.y <= 1.0 {\n        DISC_PDF",
      "    if p.x * p.x + p.y * p.y <= 1.0 {\n        1.0 / (consts::TAU * (p.x * p.x + p.y * p.y).sqrt())")
 
+FRESNEL = "src/optics/fresnel.rs"
+AMPLITUDES_END = "        t_p: 2.0 * a / (d + e),\n        cos_t,\n    })\n"
+TRANSMITTANCE_START = "    if n1 == n2 {\n        return Polarized { s: 1.0, p: 1.0 };\n    }\n"
+d = case("escape")
+edit(d, FRESNEL, "        r_s: (a - b) / (a + b),\n", "        r_s: 0.5 * (a - b) / (a + b), // wrong\n")
+edit(d, FRESNEL, AMPLITUDES_END, AMPLITUDES_END
+     + "}\n#[cfg(any())]\nmod hidden {\n    fn h() {\n")
+edit(d, FRESNEL, TRANSMITTANCE_START, """        unreachable!()
+    }
+}
+pub fn fresnel_polarized(cos_i: f64, n1: f64, n2: f64) -> Polarized {
+    let c = clamp_cos(cos_i);
+    if n1 == n2 {
+        return Polarized { s: 0.0, p: 0.0 };
+    }
+    let Some(cos_t) = cos_transmitted(c, n1, n2) else {
+        return Polarized { s: 1.0, p: 1.0 };
+    };
+    let rs = (n1 * c - n2 * cos_t) / (n1 * c + n2 * cos_t);
+    let rp = (n2 * c - n1 * cos_t) / (n2 * c + n1 * cos_t);
+    Polarized { s: rs * rs, p: rp * rp }
+}
+pub fn fresnel_dielectric(cos_i: f64, n1: f64, n2: f64) -> f64 {
+    fresnel_polarized(cos_i, n1, n2).unpolarized()
+}
+pub fn fresnel_transmittance(cos_i: f64, n1: f64, n2: f64) -> Polarized {
+""" + TRANSMITTANCE_START)
+
 expected = {
     "solutions": {"score": 27, "failing": []},
     "handout": {"score": 0, "failing": []},
     "planted": {"score": 22, "failing": ["disc_polar", "srgb_encode"]},
     "looping": {"score": 24, "failing": ["disc_polar"]},
     "loophole": {"score": 24, "failing": ["disc_polar"]},
+    "escape": {"score": 25, "failing": []},
 }
 (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
-print(f"planted submissions written to {out}: planted, looping, loophole")
+print(f"planted submissions written to {out}: planted, looping, loophole, escape")

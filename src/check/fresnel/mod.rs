@@ -4,7 +4,9 @@
 //! (`chapters/optics/fresnel.md`): range, normal and grazing incidence, matched indices,
 //! total internal reflection, `R + T = 1` and reciprocity. Its planted bugs are in
 //! [`planted`]. [`amplitudes`] checks the amplitude coefficients themselves, signs
-//! included, which no reflectance can see.
+//! included, which no reflectance can see. [`schlick`] holds an approximation to
+//! Schlick's formula itself (its value, its exponent), which the claims of a reflectance
+//! an approximation keeps cannot tell from another power.
 //!
 //! The cases are a deterministic sweep: [`PAIRS`] of indices times the cosines of
 //! [`sweep_cosines`]. Of the [`Options`], the number of cases is the number of evenly
@@ -83,6 +85,74 @@ pub(crate) fn independent_transmittance(cos_i: f64, n1: f64, n2: f64) -> Option<
     let t_p = 2.0 * n1 * c / (n2 * c + n1 * cos_t);
     let t = n2 * cos_t / (n1 * c) * 0.5 * (t_s * t_s + t_p * t_p);
     Some((cos_t, t))
+}
+
+/// Bound of [`schlick`]'s `formula` claim, in units of `eps (1 + 1 / cos)` with `cos` the
+/// cosine on the less dense side (computing `cos_t` is ill-conditioned near the critical
+/// angle): orders of operations, `powi(5)` or products agree far within it; the fourth
+/// power differs by up to about `(1 - R0) / 4`, some `1e14` of these units.
+pub(crate) const SCHLICK_BOUND: f64 = 64.0;
+/// Bound of [`schlick`]'s `exponent` claim: the exponent read from the curve, absolute.
+pub(crate) const EXPONENT_BOUND: f64 = 1e-6;
+
+/// The claims that tell Schlick's approximation from another curve with the same ends
+/// (the chapter *Fresnel and Schlick*): `R0 + (1 - R0)(1 - cos)^5` with `cos` on the less
+/// dense side. The claims of [`reflectance`] that an approximation keeps (range, normal,
+/// grazing, TIR, reciprocity) hold for any exponent; these do not.
+///
+/// * `formula`: `f` agrees with the formula, computed here with `cos_t` from the angles,
+///   at every pair of [`PAIRS`] and every angle of the sweep (`options`' number of angles,
+///   default [`ANGLES`]) that does not reflect totally, within [`SCHLICK_BOUND`]
+///   `eps (1 + 1 / cos)`;
+/// * `exponent`: entering a denser (or matched) medium, the exponent of `1 - cos` read
+///   from `f`'s own curve, `log2((f(0) - f(1)) / (f(1/2) - f(1)))`, is 5 within
+///   [`EXPONENT_BOUND`]; the message says which exponent it is.
+pub fn schlick(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) -> Verdict {
+    let angles = options.cases_or(ANGLES).max(2);
+    let step = 90.0 / (angles - 1) as f64;
+    let mut formula = Finding::new(
+        "formula",
+        "R = R0 + (1 - R0)(1 - cos)^5, cos on the less dense side, within 64 eps (1 + 1/cos) (errors in that unit)",
+    )
+    .in_unit("multiples of eps (1 + 1/cos)");
+    let mut exponent = Finding::new(
+        "exponent",
+        "entering a denser medium, log2((R(0) - R(1)) / (R(1/2) - R(1))) = 5: the power of (1 - cos)",
+    )
+    .in_unit("absolute error of the exponent");
+    for &(n1, n2) in &PAIRS {
+        let r0 = ((n1 - n2) / (n1 + n2)).powi(2);
+        for k in 0..angles {
+            let cos_i = (k as f64 * step).to_radians().cos();
+            // The cosine on the less dense side.
+            let cos = match independent_transmittance(cos_i, n1, n2) {
+                _ if n1 <= n2 => cos_i,
+                Some((cos_t, _)) => cos_t,
+                None => continue,
+            };
+            let x = 1.0 - cos;
+            let want = r0 + (1.0 - r0) * x * x * x * x * x;
+            let got = f(cos_i, n1, n2);
+            let unit = f64::EPSILON * (1.0 + 1.0 / cos.max(f64::MIN_POSITIVE));
+            formula.measure((got - want).abs() / unit, SCHLICK_BOUND, || {
+                format!(
+                    "f({cos_i:e}, {n1}, {n2}) = {got:e}, R0 + (1 - R0)(1 - cos)^5 = {want:e} (cos on the less dense side = {cos:e})"
+                )
+            });
+        }
+        if n1 <= n2 {
+            let (grazing, half, normal) = (f(0.0, n1, n2), f(0.5, n1, n2), f(1.0, n1, n2));
+            let power = ((grazing - normal) / (half - normal)).log2();
+            exponent.measure((power - 5.0).abs(), EXPONENT_BOUND, || {
+                format!(
+                    "from {n1} into {n2}: f(0) = {grazing:e}, f(0.5) = {half:e}, f(1) = {normal:e}: (1 - cos) to the power {power:.6}, not 5"
+                )
+            });
+        }
+    }
+    let mut verdict = Verdict::new("Schlick's formula");
+    verdict.findings.extend([formula, exponent]);
+    verdict
 }
 
 // ANCHOR: claims

@@ -33,6 +33,21 @@ pub fn fresnel_p_paired_like_s(cos_i: f64, n1: f64, n2: f64) -> f64 {
     fresnel_polarized(cos_i, n1, n2).s
 }
 
+/// Schlick with the fourth power, `R0 + (1 - R0)(1 - cos)^4` (cosine on the less dense
+/// side): it keeps every claim of a reflectance an approximation keeps (range, normal,
+/// grazing, TIR, reciprocity), and [`super::schlick`] must reject it.
+pub fn schlick_fourth_power(cos_i: f64, n1: f64, n2: f64) -> f64 {
+    let c = cos_i.abs().min(1.0);
+    // The cosine on the less dense side.
+    let cos = match crate::optics::fresnel::cos_transmitted(c, n1, n2) {
+        _ if n1 <= n2 => c,
+        Some(cos_t) => cos_t,
+        None => return 1.0,
+    };
+    let r0 = crate::optics::fresnel::r0(n1, n2);
+    r0 + (1.0 - r0) * (1.0 - cos).powi(4)
+}
+
 /// Planted bugs of the amplitude checker [`super::amplitudes`]: amplitude routines with a
 /// mistake that no reflectance sees (`R = r^2` hides every sign).
 pub mod amplitude {

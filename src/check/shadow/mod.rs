@@ -8,6 +8,9 @@
 //!   light facing the point and for one facing away;
 //! * `area_scale`: `f` is proportional to `pdf_area`;
 //! * `distance_scale`: `f` grows with the square of the distance;
+//! * `cos_scale`: `f` is inversely proportional to `|cos_light|`: halving the cosine
+//!   doubles it (a routine without the cosine is caught here by name, not only through
+//!   `solid_angle`);
 //! * `positive`: `f` is finite and positive for `cos_light ≠ 0` of either sign;
 //! * `edge_on`: a patch seen edge-on (`cos_light = 0`) gives 0, not infinity.
 //!
@@ -83,6 +86,8 @@ pub fn area_to_solid_angle(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) 
         .in_unit("relative error in machine epsilons");
     let mut distance_scale = Finding::new("distance_scale", "f(p_A, 2 d, c) = 4 f(p_A, d, c)")
         .in_unit("relative error in machine epsilons");
+    let mut cos_scale = Finding::new("cos_scale", "f(p_A, d, c / 2) = 2 f(p_A, d, c)")
+        .in_unit("relative error in machine epsilons");
     let mut positive = Finding::new(
         "positive",
         "f is finite and > 0 for cos_light != 0, either sign",
@@ -111,6 +116,17 @@ pub fn area_to_solid_angle(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) 
                 )
             },
         );
+        let steeper = f(a, d, 0.5 * c);
+        cos_scale.measure(
+            (steeper / (2.0 * base) - 1.0).abs() / eps,
+            SCALE_BOUND,
+            || {
+                format!(
+                    "f({a}, {d}, {c}) = {base}, f({a}, {d}, {}) = {steeper}: halving cos_light must double it",
+                    0.5 * c
+                )
+            },
+        );
         let far = f(a, 2.0 * d, c);
         distance_scale.measure((far / (4.0 * base) - 1.0).abs() / eps, SCALE_BOUND, || {
             format!(
@@ -125,8 +141,13 @@ pub fn area_to_solid_angle(f: &dyn Fn(f64, f64, f64) -> f64, options: &Options) 
         edge_on.record(got == 0.0, || format!("f(0.5, 2, {c}) = {got}"));
     }
     let mut verdict = Verdict::new("area to solid angle");
-    verdict
-        .findings
-        .extend([solid, area_scale, distance_scale, positive, edge_on]);
+    verdict.findings.extend([
+        solid,
+        area_scale,
+        distance_scale,
+        cos_scale,
+        positive,
+        edge_on,
+    ]);
     verdict
 }

@@ -4,6 +4,8 @@
 
 use glam::DVec3;
 use raylemma::check::{self, Options, Verdict};
+use raylemma::exercise::registry;
+use raylemma::optics::fresnel;
 use raylemma::optics::{dispersion, specular, thinfilm};
 use raylemma::sampling::{importance, tabulated};
 use raylemma::spectral::{display, wavelength};
@@ -216,7 +218,7 @@ fn area_to_solid_angle() {
     );
     failed(
         &check::shadow::area_to_solid_angle(&planted::missing_cos, &o),
-        &["solid_angle"],
+        &["solid_angle", "cos_scale"],
     );
     failed(
         &check::shadow::area_to_solid_angle(&planted::signed_cos, &o),
@@ -266,4 +268,104 @@ fn srgb_curves() {
         &check::display::srgb_decode(&|v| display::gamma_decode(v, 2.2), &o),
         &["reference"],
     );
+}
+
+/// A routine with `area_to_solid_angle`'s signature: `(pdf_area, dist, cos_light)`.
+type Pdf = dyn Fn(f64, f64, f64) -> f64;
+
+/// The card's claims on `area_to_solid_angle` name the cosine and the distance squared:
+/// the answer without the cosine fails `cos_scale` (not only `solid_angle`), the one
+/// without the distance `distance_scale`; correct answers written otherwise (another order
+/// of operations, `powi`, an explicit `if` for the sign) pass every claim.
+#[test]
+fn area_to_solid_angle_is_judged_on_its_cosine_and_distance() {
+    let o = Options::default();
+    // The card's check of the exercise is this checker, with these claims.
+    let e = registry::find("area_to_solid_angle").expect("registered");
+    let book = (e.check)();
+    assert!(
+        book.iter()
+            .all(|v| v.finding("cos_scale").cases > 0 && v.passed())
+    );
+    let card = |f: &dyn Fn(f64, f64, f64) -> f64| check::shadow::area_to_solid_angle(f, &o);
+    let without_cos = |p: f64, d: f64, _c: f64| p * d * d;
+    let v = card(&without_cos);
+    assert!(v.failed("cos_scale") && !v.failed("distance_scale"), "{v}");
+    let without_r2 = |p: f64, _d: f64, c: f64| p / c.abs();
+    let v = card(&without_r2);
+    assert!(v.failed("distance_scale") && !v.failed("cos_scale"), "{v}");
+    let alternatives: [(&str, &Pdf); 3] = [
+        ("p / (|c| / d^2)", &|p, d, c| {
+            let s = p / (c.abs() / (d * d));
+            if s.is_finite() { s } else { 0.0 }
+        }),
+        ("p d.powi(2) / |c|", &|p, d, c| match c {
+            0.0 => 0.0,
+            _ => p * d.powi(2) / c.abs(),
+        }),
+        ("an explicit if", &|p, d, c| {
+            if c == 0.0 {
+                0.0
+            } else if c < 0.0 {
+                d * d * p / -c
+            } else {
+                d * d * p / c
+            }
+        }),
+    ];
+    for (name, f) in alternatives {
+        let v = card(f);
+        assert!(v.passed(), "{name}:\n{v}");
+    }
+}
+
+/// The card judges `schlick` by its formula as well as by the reflectance claims an
+/// approximation keeps: Schlick with `(1 - cos)^4`, which keeps all five of those, fails
+/// `formula` and `exponent` (which says the power it read, 4); correct Schlicks written
+/// otherwise (`powi(5)`, an explicit `if` for the side, `cos_t` from `sqrt(1 - sin_t^2)`)
+/// pass every claim, as the book's does.
+#[test]
+fn schlick_is_judged_on_its_formula_and_exponent() {
+    let fourth = registry::schlick_verdict(&check::fresnel::planted::schlick_fourth_power);
+    for keep in registry::SCHLICK_KEEPS {
+        assert!(!fourth.failed(keep), "{keep} failed:\n{fourth}");
+    }
+    failed(&fourth, &["formula", "exponent"]);
+    let said = fourth.to_string();
+    assert!(said.contains("to the power 4.000000, not 5"), "{said}");
+    registry::schlick_verdict(&fresnel::schlick).assert_pass();
+    let powi = |c: f64, n1: f64, n2: f64| {
+        let c = c.abs().min(1.0);
+        let cos = if n1 > n2 {
+            match fresnel::cos_transmitted(c, n1, n2) {
+                Some(t) => t,
+                None => return 1.0,
+            }
+        } else {
+            c
+        };
+        let r0 = ((n1 - n2) / (n1 + n2)).powi(2);
+        r0 + (1.0 - r0) * (1.0 - cos).powi(5)
+    };
+    let by_sine = |c: f64, n1: f64, n2: f64| {
+        let c = c.abs().min(1.0);
+        let r0 = fresnel::r0(n1, n2);
+        if n1 <= n2 {
+            let x = 1.0 - c;
+            return r0 + (1.0 - r0) * x * x * x * x * x;
+        }
+        let sin_t = n1 / n2 * (1.0 - c * c).sqrt();
+        if sin_t >= 1.0 {
+            return 1.0;
+        }
+        let x = 1.0 - (1.0 - sin_t * sin_t).sqrt();
+        (1.0 - r0) * x.powf(5.0) + r0
+    };
+    for (name, f) in [
+        ("powi(5)", &powi as &dyn Fn(f64, f64, f64) -> f64),
+        ("cos_t from sin_t", &by_sine),
+    ] {
+        let v = registry::schlick_verdict(f);
+        assert!(v.passed(), "{name}:\n{v}");
+    }
 }

@@ -256,3 +256,39 @@ fn the_card_draws_a_failing_sampler_into_its_results_folder_and_removes_it_once_
         dir.display()
     );
 }
+
+/// Every solution of this crate is a body the grader accepts (`grade::refused`): the
+/// solutions edition, graded, scores every point.
+#[test]
+fn every_solution_of_this_crate_is_a_body_the_grader_accepts() {
+    let root = crate::support::root();
+    for m in edition::markers_under(root).unwrap_or_else(|e| panic!("{e}")) {
+        let text = fs::read_to_string(root.join(&m.file)).unwrap();
+        let body: Vec<String> = text
+            .lines()
+            .skip(m.signature_end)
+            .take(m.close - m.signature_end - 1)
+            .map(str::to_string)
+            .collect();
+        if let Some((line, why)) = grade::refused(&body) {
+            panic!(
+                "{}:{}: the grader refuses the solution of `{}`: {why}",
+                m.file,
+                m.signature_end + line,
+                m.name
+            );
+        }
+    }
+}
+
+/// This crate's hand-out can be made: no line of a removed solution is in any file it ships
+/// (a checker or a planted bug that repeats a solution's line is found here, not first by
+/// `raylemma exercises` in CI).
+#[test]
+fn this_crate_makes_a_hand_out_with_no_solution_line() {
+    let root = crate::support::root();
+    let sources = edition::read_sources(root).unwrap_or_else(|e| panic!("{e}"));
+    if let Err(e) = edition::make(sources, Kind::HandOut) {
+        panic!("{e}");
+    }
+}
