@@ -560,6 +560,9 @@ fn neither_form_of_cos_t_squared_rounds_below_zero_entering_a_denser_medium() {
         };
         let textbook = 1.0 - eta * eta * (1.0 - c * c);
         let rearranged = (1.0 - eta * eta) + (eta * c) * (eta * c);
-        assert!(textbook >= 0.0 && rearranged >= 0.0, "eta {eta:e}, cos {c:e}");
+        assert!(
+            textbook >= 0.0 && rearranged >= 0.0,
+            "eta {eta:e}, cos {c:e}"
+        );
     }
 }

@@ -308,9 +308,9 @@ fn quarter_wave_is_the_peak_only_between_denser_or_rarer() {
         let others: Vec<f64> = (0..=400)
             .map(|k| r(2.0 * quarter * f64::from(k) / 400.0))
             .collect();
-        let (lo, hi) = others
-            .iter()
-            .fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+        let (lo, hi) = others.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| {
+            (lo.min(x), hi.max(x))
+        });
         (r(quarter), r(0.0), r(2.0 * quarter), lo, hi)
     };
     for film in [(1.0, 1.33, 1.0), (1.0, 1.5, 1.33)] {
@@ -320,7 +320,10 @@ fn quarter_wave_is_the_peak_only_between_denser_or_rarer() {
         );
         assert!(r12 * r23 < 0.0, "{film:?}");
         let (quarter, bare, half, _, hi) = over_a_period(film);
-        assert!(quarter >= hi - 1e-15 && quarter > bare + 0.01, "{film:?}: {quarter}");
+        assert!(
+            quarter >= hi - 1e-15 && quarter > bare + 0.01,
+            "{film:?}: {quarter}"
+        );
         assert!((bare - half).abs() <= 1e-12, "{film:?}: {bare} vs {half}");
     }
     // The lens coating: denser than the ambient air, yet a minimum.
@@ -329,7 +332,10 @@ fn quarter_wave_is_the_peak_only_between_denser_or_rarer() {
     let (quarter, bare, half, lo, _) = over_a_period(coating);
     assert!(quarter <= lo + 1e-15, "{quarter} vs {lo}");
     assert!((quarter - 0.0126).abs() < 5e-5, "{quarter}");
-    assert!((bare - 0.0426).abs() < 5e-5 && (half - bare).abs() <= 1e-12, "{bare}, {half}");
+    assert!(
+        (bare - 0.0426).abs() < 5e-5 && (half - bare).abs() <= 1e-12,
+        "{bare}, {half}"
+    );
 }
 // ---------------------------------------------------------------------------------------
 // Exercises. Each scaffold is the student's to fill in; each ignored test checks it, and

@@ -351,8 +351,5 @@ fn at_the_rim_one_rounding_decides_the_density() {
     assert!(singles > 4.7e-8 && singles < 4.8e-8, "{singles:e}");
     let single_pdf = raylemma::single::sampling::disc::disc_pdf(glam::Vec3::new(xs, ys, 0.0));
     assert!(single_pdf > 0.0, "{single_pdf}");
-    assert_eq!(
-        disc_pdf(DVec3::new(f64::from(xs), f64::from(ys), 0.0)),
-        0.0
-    );
+    assert_eq!(disc_pdf(DVec3::new(f64::from(xs), f64::from(ys), 0.0)), 0.0);
 }
