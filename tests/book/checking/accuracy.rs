@@ -92,6 +92,25 @@ fn the_claim_rejects_lost_digits_and_accepts_one_ulp() {
     }
 }
 
+/// What one rounding of an input costs, in ulps of the answer: up to κ u |y|, which is
+/// between κ/2 and κ ulps, as y falls at the bottom or the top of its binade (an ulp of a
+/// number in [2^e, 2^(e+1)) is 2^(e+1) u). The routine y = c x with a constant c has κ = 1.
+/// The real input x = 1 + 2^-53 - 2^-70 rounds to 1, a relative error of almost u, and the
+/// routine, exact on the rounded input, answers c.
+#[test]
+fn an_input_rounded_once_costs_between_half_kappa_and_kappa_ulps() {
+    let u = f64::EPSILON / 2.0;
+    let lost = u - (2f64).powi(-70); // x - round(x), exactly
+    assert_eq!(1.0 + lost, 1.0);
+    let cost = |c: f64| c * lost / accuracy::ulp(c, Precision::Double);
+    // At the bottom of the binade, κ/2; towards its top, κ.
+    assert!((cost(1.0) - 0.5).abs() < 1e-5, "{}", cost(1.0));
+    assert!((cost(1.75) - 0.875).abs() < 1e-5, "{}", cost(1.75));
+    let top = 2.0 - (2f64).powi(-10);
+    assert!(cost(top) > 0.999 && cost(top) < 1.0, "{}", cost(top));
+    // So more than "about κ/2", and never more than κ: BOUND max(κ, 1) absorbs it.
+}
+
 #[test]
 fn ulps_are_counted_in_the_binade_of_the_answer_or_its_scale() {
     assert_eq!(accuracy::ulp(1.0, Precision::Double), f64::EPSILON);

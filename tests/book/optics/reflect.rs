@@ -536,3 +536,33 @@ fn exercise_4_refract_in_f32() {
         "worst Snell error = {worst_snell:.2} f32 eps"
     );
 }
+
+/// What the rearranged `cos^2 theta_t = (1 - eta^2) + (eta cos_i)^2` does *not* buy over
+/// the textbook `1 - eta^2 (1 - cos_i^2)`: a sign. Entering a denser medium (the rounded
+/// `eta = n1 / n2` at most 1) the textbook form cannot round below 0 either, because
+/// rounding is monotone: for `cos_i <= 1` the rounded `eta^2 (1 - cos_i^2)` is at most 1,
+/// and for a dot product that rounded above 1 it is at most 0. Checked on nearly matched
+/// indices (`n2 / n1 - 1` from 1e-16 on), cosines near 0 and 1, and `1 + 2^-52`.
+#[test]
+fn neither_form_of_cos_t_squared_rounds_below_zero_entering_a_denser_medium() {
+    let mut rng = raylemma::rng::seeded(7);
+    let mut u = || raylemma::rng::uniform(&mut rng, 0.0, 1.0);
+    for k in 0..1_000_000 {
+        let n1 = 1.0 + 1.5 * u();
+        let gap = [1e-16, 1e-15, 1e-12, 1e-7, 0.1, 0.5][k % 6] * u();
+        let eta = n1 / (n1 * (1.0 + gap));
+        assert!(eta <= 1.0);
+        let c = match k % 4 {
+            0 => u(),
+            1 => 1.0 - 1e-15 * u(),
+            2 => 1e-8 * u(),
+            _ => 1.0 + f64::EPSILON,
+        };
+        let textbook = 1.0 - eta * eta * (1.0 - c * c);
+        let rearranged = (1.0 - eta * eta) + (eta * c) * (eta * c);
+        assert!(
+            textbook >= 0.0 && rearranged >= 0.0,
+            "eta {eta:e}, cos {c:e}"
+        );
+    }
+}

@@ -293,6 +293,50 @@ fn quarter_wave_soap_film_reflects_most() {
     }
 }
 // ANCHOR_END: soap_test
+
+/// The rule for the spectra of *What films look like*: the quarter wave is the brightest
+/// thickness when r12 r23 < 0, the film denser (or rarer) than *both* neighbours, as soap in
+/// air and oil (1.5) on water (1.33) are. Denser than the ambient side alone does not make a
+/// maximum: MgF2 (1.38) on glass (1.52) is denser than air, and its quarter wave is the
+/// darkest thickness, darker than bare glass (the film at zero or half-wave thickness).
+#[test]
+fn quarter_wave_is_the_peak_only_between_denser_or_rarer() {
+    let lambda = 550.0;
+    let over_a_period = |(n1, n2, n3): (f64, f64, f64)| {
+        let quarter = lambda / (4.0 * n2);
+        let r = |d: f64| Film::new(n1, n2, n3, d).reflectance(lambda, 0.0);
+        let others: Vec<f64> = (0..=400)
+            .map(|k| r(2.0 * quarter * f64::from(k) / 400.0))
+            .collect();
+        let (lo, hi) = others.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &x| {
+            (lo.min(x), hi.max(x))
+        });
+        (r(quarter), r(0.0), r(2.0 * quarter), lo, hi)
+    };
+    for film in [(1.0, 1.33, 1.0), (1.0, 1.5, 1.33)] {
+        let (r12, r23) = (
+            (film.0 - film.1) / (film.0 + film.1),
+            (film.1 - film.2) / (film.1 + film.2),
+        );
+        assert!(r12 * r23 < 0.0, "{film:?}");
+        let (quarter, bare, half, _, hi) = over_a_period(film);
+        assert!(
+            quarter >= hi - 1e-15 && quarter > bare + 0.01,
+            "{film:?}: {quarter}"
+        );
+        assert!((bare - half).abs() <= 1e-12, "{film:?}: {bare} vs {half}");
+    }
+    // The lens coating: denser than the ambient air, yet a minimum.
+    let coating = (1.0, 1.38, 1.52);
+    assert!(coating.1 > coating.0);
+    let (quarter, bare, half, lo, _) = over_a_period(coating);
+    assert!(quarter <= lo + 1e-15, "{quarter} vs {lo}");
+    assert!((quarter - 0.0126).abs() < 5e-5, "{quarter}");
+    assert!(
+        (bare - 0.0426).abs() < 5e-5 && (half - bare).abs() <= 1e-12,
+        "{bare}, {half}"
+    );
+}
 // ---------------------------------------------------------------------------------------
 // Exercises. Each scaffold is the student's to fill in; each ignored test checks it, and
 // fails until it is done: `cargo test --test book optics::thinfilm::exercise_ -- --ignored`.

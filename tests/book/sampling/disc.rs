@@ -326,3 +326,30 @@ fn exercise_3_stratified_half_disc() {
         "variances: {variances:?}"
     );
 }
+
+/// The density at the rim, where one rounding decides: the doubles nearest (0.6, 0.8) have
+/// x^2 + y^2 = 1 + 4.4e-17 exactly, just outside the disc, and their `f64` sum rounds to 1,
+/// so the `f64` density answers 1/pi there, as the `f32` twin does at the singles nearest
+/// (0.6, 0.8) (1 + 4.8e-8, whose `f32` sum rounds to 1). `f64` decides those singles
+/// correctly. (The corpus counts either answer as right at both: kappa is infinite.)
+#[test]
+fn at_the_rim_one_rounding_decides_the_density() {
+    // x^2 + y^2 - 1 exactly, for doubles in [0.5, 1): x = m 2^-53 with an integer m.
+    let excess = |x: f64, y: f64| {
+        let m = |v: f64| (v * (2f64).powi(53)) as u128;
+        let (mx, my) = (m(x), m(y));
+        assert_eq!(mx as f64 * (2f64).powi(-53), x);
+        assert_eq!(my as f64 * (2f64).powi(-53), y);
+        ((mx * mx + my * my) as i128 - (1i128 << 106)) as f64 * (2f64).powi(-106)
+    };
+    let doubles = excess(0.6, 0.8);
+    assert!(doubles > 4.4e-17 && doubles < 4.5e-17, "{doubles:e}");
+    assert_eq!(0.6f64 * 0.6 + 0.8 * 0.8, 1.0);
+    assert!(disc_pdf(DVec3::new(0.6, 0.8, 0.0)) > 0.3);
+    let (xs, ys) = (0.6f32, 0.8f32);
+    let singles = excess(f64::from(xs), f64::from(ys));
+    assert!(singles > 4.7e-8 && singles < 4.8e-8, "{singles:e}");
+    let single_pdf = raylemma::single::sampling::disc::disc_pdf(glam::Vec3::new(xs, ys, 0.0));
+    assert!(single_pdf > 0.0, "{single_pdf}");
+    assert_eq!(disc_pdf(DVec3::new(f64::from(xs), f64::from(ys), 0.0)), 0.0);
+}

@@ -159,6 +159,14 @@ fn near_zero_vectors_normalise_or_are_refused() {
     }
     // glam's plain normalize fails on the same inputs: the reason normalize_robust exists.
     assert!(!DVec3::new(1e-300, -2e-300, 2e-300).normalize().is_finite());
+    // Its |v|^2 is 0: infinite in the non-zero components, NaN in a zero one.
+    let all = DVec3::new(1e-300, -2e-300, 2e-300).normalize();
+    assert!(all.to_array().iter().all(|c| c.is_infinite()), "{all:?}");
+    let one = DVec3::new(5e-324, 0.0, 0.0).normalize();
+    assert!(
+        one.x.is_infinite() && one.y.is_nan() && one.z.is_nan(),
+        "{one:?}"
+    );
 }
 
 #[test]

@@ -244,8 +244,9 @@ fn exposure_is_in_stops() {
 
 /// Scaling *encoded* values by `k` is not the exposure `k`. On a pure power-law display it is
 /// exactly an exposure, but of `k^γ`: `decode(k · encode(x)) = k^2.2 x`. On sRGB the factor on
-/// the light depends on the level: within 15 % of `k^2.4` at full scale, and nearer 1 in the
-/// shadows (at linear 0.01), where the offset and the linear toe bend the curve.
+/// the light depends on the level: within 15 % of `k^2.4` at full scale, a lower power of `k`
+/// in the shadows (between `k^1.2` and `k^1.9` at linear 0.01), where the offset bends the
+/// curve, and `k` itself on the linear toe (at linear 0.001): not nearer 1, nearer `k`.
 #[test]
 fn scaling_encoded_values_is_not_an_exposure() {
     for k in [0.5_f64, 2.0] {
@@ -269,6 +270,16 @@ fn scaling_encoded_values_is_not_an_exposure() {
         assert!(
             (low - 1.0).abs() < (mid - 1.0).abs() * 0.8,
             "sRGB, k = {k}: factor {low} in the shadows against k^2.4 = {mid}"
+        );
+        let power = low.ln() / k.ln();
+        assert!(
+            (1.2..1.9).contains(&power),
+            "sRGB, k = {k}: factor k^{power} at linear 0.01"
+        );
+        assert!(
+            (factor(0.001) / k - 1.0).abs() <= 1e-12,
+            "sRGB, k = {k}: factor {} on the toe",
+            factor(0.001)
         );
     }
 }
