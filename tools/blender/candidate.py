@@ -280,7 +280,7 @@ def light_material(name, rgb, one_sided):
         material.cycles.emission_sampling = "FRONT"
     else:
         tree.links.new(emission.outputs["Emission"], output.inputs["Surface"])
-        material.cycles.emission_sampling = "FRONT_AND_BACK"
+        material.cycles.emission_sampling = "FRONT_BACK"
     return material
 
 
