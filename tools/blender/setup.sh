@@ -11,6 +11,7 @@ set -euo pipefail
 
 BPY_VERSION=5.0.1
 NUMPY_VERSION=1.26.4
+OPENEXR_VERSION=3.5.3
 
 venv="${RAYLEMMA_BLENDER_VENV:-/root/.cache/raylemma-blender-venv}"
 py="$venv/bin/python"
@@ -34,13 +35,13 @@ if [ ! -x "$py" ]; then
 fi
 have="$("$py" -c 'import importlib.metadata as m
 try:
-    print(m.version("bpy"), m.version("numpy"))
+    print(m.version("bpy"), m.version("numpy"), m.version("OpenEXR"))
 except m.PackageNotFoundError:
     print("")' 2>/dev/null || true)"
-if [ "$have" != "$BPY_VERSION $NUMPY_VERSION" ]; then
-    echo "installing bpy==$BPY_VERSION numpy==$NUMPY_VERSION into $venv (about 400 MB)" >&2
+if [ "$have" != "$BPY_VERSION $NUMPY_VERSION $OPENEXR_VERSION" ]; then
+    echo "installing bpy==$BPY_VERSION numpy==$NUMPY_VERSION OpenEXR==$OPENEXR_VERSION into $venv (about 400 MB)" >&2
     "$py" -m pip install --quiet --disable-pip-version-check \
-        "bpy==$BPY_VERSION" "numpy==$NUMPY_VERSION"
+        "bpy==$BPY_VERSION" "numpy==$NUMPY_VERSION" "OpenEXR==$OPENEXR_VERSION"
 fi
 [ "$mode" = notest ] && exit 0
 
