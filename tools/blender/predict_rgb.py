@@ -118,14 +118,21 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     rgb, var, header = [], [], None
     for c, name in enumerate("RGB"):
+        # A saturated light (a sodium lamp) has a negative channel in linear sRGB; raylemma's
+        # emission is not negative, but the image is linear in the emission: render its
+        # magnitude and give the channel the sign back, when every emitter has the same one.
+        lights = [float(e[c]) for e in emission] + ([] if env_rgb is None else [float(env_rgb[c])])
+        sign = -1.0 if any(v < 0 for v in lights) else 1.0
+        if any(v * sign < 0 for v in lights):
+            sys.exit(f"predict_rgb.py: the emitters' channel {name} has both signs")
         toml = os.path.join(args.work, f"channel-{name}.toml")
         open(toml, "w").write(grey_toml(
-            data, [float(r[c]) for r in reflectance], [float(e[c]) for e in emission],
-            None if env_rgb is None else float(env_rgb[c])))
+            data, [float(r[c]) for r in reflectance], [sign * float(e[c]) for e in emission],
+            None if env_rgb is None else sign * float(env_rgb[c])))
         subprocess.run([raylemma, "render", toml, "--out", args.work, "--spp", str(args.spp),
                         "--seed", str(args.seed)], check=True, stdout=subprocess.DEVNULL)
         channels, header = read_channels(os.path.join(args.work, f"channel-{name}.exr"))
-        rgb.append(channels[name])
+        rgb.append(sign * channels[name])
         var.append(channels["var." + name])
     write_prediction(args.out, np.stack(rgb, axis=-1), np.stack(var, axis=-1), header)
 
