@@ -42,8 +42,8 @@ Cycles $version (\`bpy\` from PyPI, CPU) through \`raylemma conformance --format
 $spp spp per rung and depth, each rung exported and built by \`tools/blender/candidate.py\` (box filter of \
 one pixel, clamping, light threshold, light tree, adaptive sampling, denoising and Filter Glossy off, \
 bounces = max_depth − 1). Where the card says *differs*, \`predict_rgb.py\` renders raylemma's prediction \
-of the RGB image (4096 spp a channel); the block is the 16 × 16 block and channel where that prediction is \
+of the RGB image (4096 spp a channel, negative colours clamped to 0 as Cycles does); the block is the 16 × 16 block and channel where that prediction is \
 furthest from the spectral reference, and the last column is \`raylemma compare PREDICTION.exr RUN-*.exr\`.*"
 "$py" "$root/tools/blender/ladder_table.py" --name cycles --label Cycles --card "$work/card.json" \
-    --work "$work" --figure conformance_cycles.md --caption "$caption"
+    --work "$work" --figure conformance_cycles.md --caption "$caption" --clamp-negative
 echo "conformance.sh: $(( $(date +%s) - t0 )) s" >&2

@@ -54,7 +54,7 @@ def depth(comparison):
     return "own" if comparison["depth"] is None else str(comparison["depth"])
 
 
-def explain(comparison, work, spp, raylemma):
+def explain(comparison, work, spp, raylemma, clamp_negative):
     """Predict the RGB image of a differing comparison and measure the two comparisons."""
     name = stem(comparison)
     here = os.path.join(work, name)
@@ -62,8 +62,9 @@ def explain(comparison, work, spp, raylemma):
     prediction = os.path.join(work, "prediction", name + ".exr")
     os.makedirs(os.path.dirname(prediction), exist_ok=True)
     subprocess.run([sys.executable, os.path.join(HERE, "predict_rgb.py"), os.path.join(here, "scene.json"),
-                    prediction, "--spp", str(spp), "--work", os.path.join(work, "prediction", name)],
-                   check=True, stdout=subprocess.DEVNULL)
+                    prediction, "--spp", str(spp), "--work", os.path.join(work, "prediction", name)]
+                   + (["--clamp-negative"] if clamp_negative else []),
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     runs = sorted(os.path.join(here, d, "scene.exr") for d in os.listdir(here) if d.startswith("run-"))
     residual = subprocess.run([raylemma, "compare", prediction, *runs], capture_output=True, text=True)
     ref, pred = blocks(rgb(reference)), blocks(rgb(prediction))
@@ -97,6 +98,7 @@ def main():
     for a in ("--name", "--label", "--card", "--work", "--figure", "--caption"):
         ap.add_argument(a, required=True)
     ap.add_argument("--prediction-spp", type=int, default=4096)
+    ap.add_argument("--clamp-negative", action="store_true", help="the renderer clamps negative colours (predict_rgb.py)")
     args = ap.parse_args()
     raylemma = os.environ.get("RAYLEMMA", "raylemma")
     card = json.load(open(args.card))
@@ -119,7 +121,7 @@ def main():
             lines.append(f"| {rung} | {d} | agrees | {whole} | | | | |")
             continue
         try:
-            e = explain(comparison, args.work, args.prediction_spp, raylemma)
+            e = explain(comparison, args.work, args.prediction_spp, raylemma, args.clamp_negative)
         except subprocess.CalledProcessError as failed:
             lines.append(f"| {rung} | {d} | differs | {whole} | no prediction: {' '.join(failed.cmd[:2])} failed | | | |")
             continue

@@ -16,6 +16,9 @@ writes channel c of the c-th render, with its variance channel, into PREDICTION.
     raylemma compare REFERENCE.exr PREDICTION.exr     what the RGB product costs
     raylemma compare PREDICTION.exr CANDIDATE-*.exr   whether the candidate is that RGB image
 
+A renderer that clamps negative colours to 0 (Cycles: the linear sRGB of a sodium lamp has a
+negative blue) is predicted with --clamp-negative.
+
 Needs numpy and OpenEXR (setup.sh installs both), and raylemma on the PATH or in $RAYLEMMA.
 """
 
@@ -104,6 +107,8 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--work", default=os.path.join(os.environ.get("TMPDIR", "/tmp"), "raylemma-rgb-prediction"))
     ap.add_argument("--cmf", default=DEFAULT_CMF)
+    ap.add_argument("--clamp-negative", action="store_true",
+                    help="predict a renderer that clamps negative colours to 0 (Cycles does, in an Emission shader)")
     args = ap.parse_args()
     raylemma = os.environ.get("RAYLEMMA", "raylemma")
 
@@ -114,6 +119,10 @@ def main():
     emission = [colour.radiance(light["emission"]) / colour.flat_rgb for light in data["lights"]]
     env = data.get("environment")
     env_rgb = None if env is None else colour.radiance(env["radiance"]) / colour.flat_rgb
+    if args.clamp_negative:
+        reflectance = [np.maximum(r, 0) for r in reflectance]
+        emission = [np.maximum(e, 0) for e in emission]
+        env_rgb = None if env_rgb is None else np.maximum(env_rgb, 0)
 
     os.makedirs(args.work, exist_ok=True)
     rgb, var, header = [], [], None

@@ -29,6 +29,7 @@ import json
 import math
 import os
 import sys
+import time
 
 import numpy as np  # before pyluxcore: importing numpy after it crashes the interpreter
 
@@ -169,7 +170,11 @@ def main():
         sys.exit(f"candidate.py: LuxCore cannot express this scene: {e}")
     session = pyluxcore.RenderSession(config)
     session.Start()
-    session.WaitForDone()
+    # The halt condition (batch.haltspp) is checked when the statistics are updated: a
+    # session nobody asks for statistics renders for ever (WaitForDone alone never returns).
+    while not session.HasDone():
+        time.sleep(0.05)
+        session.UpdateStats()
     session.Stop()
     film = session.GetFilm()
     w, h = data["camera"]["width"], data["camera"]["height"]
