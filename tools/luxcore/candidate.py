@@ -31,7 +31,10 @@ import os
 import sys
 import time
 
-import numpy as np  # before pyluxcore: importing numpy after it crashes the interpreter
+# numpy and OpenEXR before pyluxcore: imported after it, either aborts the interpreter
+# ("free(): invalid pointer"; the wheels bundle clashing copies of shared libraries).
+import numpy as np
+import OpenEXR
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "blender"))
@@ -145,7 +148,6 @@ def build(data, colour, spp, seed):
 
 
 def write_exr(path, image):
-    import OpenEXR
     channels = {c: image[:, :, i].astype(np.float32) for i, c in enumerate("RGB")}
     with OpenEXR.File({"compression": OpenEXR.ZIP_COMPRESSION}, channels) as f:
         f.write(path)
