@@ -17,7 +17,8 @@ reflectances relative to the equal-energy light). What LuxCore is told:
     quad light             a matte of reflectance 0 with emission = the radiance, gain 1
                            (no power, no efficacy: the colour is the radiance); LuxCore's
                            triangle lights emit on the front face only
-    sphere                 an icosphere, as for Cycles
+    sphere                 an icosphere, as for Cycles (--sphere-subdivisions, default 6)
+    screen window          moved up one pixel row: LuxCore 2.11.2 renders one row low
 
 Features LuxCore cannot express here (Sellmeier dispersion, raylemma's thin film, a gradient
 sky) stop the script with a message naming them.
@@ -41,7 +42,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "blender"))
 from candidate import Colour, DEFAULT_CMF, Unsupported  # noqa: E402
 
 
-def icosphere(centre, radius, subdivisions=6):
+def icosphere(centre, radius, subdivisions):
     """Vertices and triangles of an icosphere whose area is 4 pi r^2, outward winding."""
     t = (1 + math.sqrt(5)) / 2
     vertices = [np.array(v, dtype=float) for v in [
@@ -72,13 +73,18 @@ def icosphere(centre, radius, subdivisions=6):
     return v, f, normals
 
 
+# Subdivisions of a sphere's icosphere; candidate.py --sphere-subdivisions sets it. LuxCore
+# 2.11.2 lights nothing from an emissive icosphere of 2 or more subdivisions (README.md).
+SPHERE_SUBDIVISIONS = 6
+
+
 def mesh(shape):
     """Vertices, triangles and (for spheres) vertex normals of a shape."""
     if shape["type"] == "quad":
         c, e1, e2 = (np.array(shape[k]) for k in ("corner", "edge1", "edge2"))
         return np.array([c, c + e1, c + e1 + e2, c + e2]), np.array([(0, 1, 2), (0, 2, 3)]), None
     if shape["type"] == "sphere":
-        return icosphere(shape["center"], shape["radius"])
+        return icosphere(shape["center"], shape["radius"], SPHERE_SUBDIVISIONS)
     raise Unsupported(f"shape type {shape['type']}")
 
 
@@ -160,13 +166,16 @@ def write_exr(path, image):
 
 
 def main():
+    global SPHERE_SUBDIVISIONS
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("json")
     ap.add_argument("out")
     ap.add_argument("--spp", type=int, required=True)
     ap.add_argument("--seed", type=int, required=True)
     ap.add_argument("--cmf", default=DEFAULT_CMF)
+    ap.add_argument("--sphere-subdivisions", type=int, default=SPHERE_SUBDIVISIONS)
     args = ap.parse_args()
+    SPHERE_SUBDIVISIONS = args.sphere_subdivisions
     data = json.load(open(args.json))
     if data.get("format") != "raylemma-scene" or data.get("version") != 1:
         sys.exit(f"candidate.py: {args.json} is not a version 1 raylemma-scene JSON export")
