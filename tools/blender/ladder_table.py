@@ -6,6 +6,7 @@ of the RGB image (predict_rgb.py) with the two comparisons that explain the diff
 
     the cost of RGB     the reference against the prediction: the block (16 x 16 pixels) and
                         channel where RGB moves furthest from the spectral answer, predicted
+                        (on a grey rung, where the renderer moves furthest: RGB costs nothing)
     the residual        `raylemma compare PREDICTION.exr RUN-*.exr`: whether the renderer's
                         images are that RGB image within noise
 
@@ -61,21 +62,28 @@ def explain(comparison, work, spp, raylemma, clamp_negative):
     reference = os.path.join(ROOT, "figures", "reference", "conformance", name + ".exr")
     prediction = os.path.join(work, "prediction", name + ".exr")
     os.makedirs(os.path.dirname(prediction), exist_ok=True)
-    subprocess.run([sys.executable, os.path.join(HERE, "predict_rgb.py"), os.path.join(here, "scene.json"),
-                    prediction, "--spp", str(spp), "--work", os.path.join(work, "prediction", name)]
-                   + (["--clamp-negative"] if clamp_negative else []),
-                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    if not os.path.exists(prediction):  # kept from an earlier run of this card
+        subprocess.run([sys.executable, os.path.join(HERE, "predict_rgb.py"), os.path.join(here, "scene.json"),
+                        prediction, "--spp", str(spp), "--work", os.path.join(work, "prediction", name)]
+                       + (["--clamp-negative"] if clamp_negative else []),
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     runs = sorted(os.path.join(here, d, "scene.exr") for d in os.listdir(here) if d.startswith("run-"))
     residual = subprocess.run([raylemma, "compare", prediction, *runs], capture_output=True, text=True)
     ref, pred = blocks(rgb(reference)), blocks(rgb(prediction))
     measured = blocks(np.mean([rgb(r) for r in runs], axis=0))
-    cost = pred / ref - 1
-    y, x, c = np.unravel_index(np.argmax(np.abs(cost)), cost.shape)
+    # Blocks the reference has black (the sky, a light's back) have no relative difference.
+    lit = np.abs(ref) > 1e-6
+    cost = np.where(lit, pred / np.where(lit, ref, 1) - 1, 0)
+    off = np.where(lit, measured / np.where(lit, ref, 1) - 1, 0)
+    # Where the prediction moves furthest; for grey scenes (the prediction is the reference
+    # itself: the same scene, seed and spp) where the renderer does.
+    worst = cost if np.any(cost) else off
+    y, x, c = np.unravel_index(np.argmax(np.abs(worst)), worst.shape)
     return {
         "block": (int(x) * BLOCK, int(y) * BLOCK),
         "channel": "RGB"[c],
         "predicted": float(cost[y, x, c]),
-        "measured": float(measured[y, x, c] / ref[y, x, c] - 1),
+        "measured": float(off[y, x, c]),
         "residual_agrees": residual.returncode == 0,
         "residual_line": next((l for l in residual.stdout.splitlines() if l.startswith("whole image, candidate")), ""),
     }
