@@ -86,71 +86,13 @@ pub struct ConformanceArgs {
     pub junit: Option<PathBuf>,
 }
 
-/// A file of the suite as this binary was built: its path under the project root, and its
-/// bytes.
-macro_rules! suite_file {
-    ($path:literal) => {
-        (
-            $path,
-            include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/", $path)) as &[u8],
-        )
-    };
-}
-
-/// The suite built into this binary (40 files, about 2 MB): the ladder's scene
-/// files, the data files they read, and the references of every rung at every depth, as
-/// they were when it was built. A copied binary carries it; `--suite DIR` reads another.
-/// The test `the_built_in_suite_holds_every_rung_and_depth` holds it to the ladder.
-const BUILT_IN: &[(&str, &[u8])] = &[
-    suite_file!("scenes/conformance/01-direct-quad.toml"),
-    suite_file!("scenes/conformance/02-direct-sphere.toml"),
-    suite_file!("scenes/conformance/03-two-lights.toml"),
-    suite_file!("scenes/conformance/04-one-bounce.toml"),
-    suite_file!("scenes/conformance/05-box.toml"),
-    suite_file!("scenes/conformance/06-mirror.toml"),
-    suite_file!("scenes/conformance/07-glass.toml"),
-    suite_file!("scenes/conformance/08-roulette.toml"),
-    suite_file!("scenes/conformance/09-spectral-lamp.toml"),
-    suite_file!("scenes/conformance/10-thin-film.toml"),
-    suite_file!("scenes/conformance/11-dispersion.toml"),
-    suite_file!("data/cie_illuminant_D65.csv"),
-    suite_file!("data/cornell_box_reflectance.csv"),
-    suite_file!("figures/reference/conformance/01-direct-quad.exr"),
-    suite_file!("figures/reference/conformance/02-direct-sphere.exr"),
-    suite_file!("figures/reference/conformance/03-two-lights.exr"),
-    suite_file!("figures/reference/conformance/04-one-bounce-depth1.exr"),
-    suite_file!("figures/reference/conformance/04-one-bounce.exr"),
-    suite_file!("figures/reference/conformance/05-box-depth1.exr"),
-    suite_file!("figures/reference/conformance/05-box-depth2.exr"),
-    suite_file!("figures/reference/conformance/05-box-depth3.exr"),
-    suite_file!("figures/reference/conformance/05-box.exr"),
-    suite_file!("figures/reference/conformance/06-mirror-depth1.exr"),
-    suite_file!("figures/reference/conformance/06-mirror-depth2.exr"),
-    suite_file!("figures/reference/conformance/06-mirror-depth3.exr"),
-    suite_file!("figures/reference/conformance/06-mirror.exr"),
-    suite_file!("figures/reference/conformance/07-glass-depth1.exr"),
-    suite_file!("figures/reference/conformance/07-glass-depth2.exr"),
-    suite_file!("figures/reference/conformance/07-glass-depth3.exr"),
-    suite_file!("figures/reference/conformance/07-glass.exr"),
-    suite_file!("figures/reference/conformance/08-roulette-depth1.exr"),
-    suite_file!("figures/reference/conformance/08-roulette-depth2.exr"),
-    suite_file!("figures/reference/conformance/08-roulette-depth3.exr"),
-    suite_file!("figures/reference/conformance/08-roulette.exr"),
-    suite_file!("figures/reference/conformance/09-spectral-lamp-depth1.exr"),
-    suite_file!("figures/reference/conformance/09-spectral-lamp.exr"),
-    suite_file!("figures/reference/conformance/10-thin-film-depth1.exr"),
-    suite_file!("figures/reference/conformance/10-thin-film.exr"),
-    suite_file!("figures/reference/conformance/11-dispersion-depth1.exr"),
-    suite_file!("figures/reference/conformance/11-dispersion.exr"),
-];
-
 /// The suite a card runs: where its files are, where they came from, and their hash.
 struct Suite {
     /// The folder holding `scenes/conformance/`, `data/` and `figures/reference/conformance/`.
     dir: PathBuf,
     /// "built into this binary" or the folder given.
     source: String,
-    /// FNV-1a of every file of [`BUILT_IN`]'s list, its path then its bytes, in hexadecimal:
+    /// FNV-1a of every file of [`ladder::SUITE`]'s list, its path then its bytes, in hexadecimal:
     /// the same for a folder whose files are the built-in ones.
     hash: String,
 }
@@ -162,7 +104,7 @@ impl Suite {
         let (dir, source) = match dir {
             None => {
                 let out = work.join("suite");
-                for (path, bytes) in BUILT_IN {
+                for (path, bytes) in ladder::SUITE {
                     let to = out.join(path);
                     raylemma::output::create_dir_all(to.parent().unwrap_or(&out))?;
                     raylemma::output::write_file(&to, bytes)?;
@@ -172,7 +114,7 @@ impl Suite {
                 (out, "built into this binary".to_string())
             }
             Some(dir) => {
-                for (path, _) in BUILT_IN {
+                for (path, _) in ladder::SUITE {
                     let from = dir.join(path);
                     let bytes = std::fs::read(&from).map_err(|e| {
                         Failure::BadInput(format!(
@@ -775,33 +717,4 @@ fn card_junit(rows: &[Row]) -> String {
     }
     s += "</testsuite>\n";
     s
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every rung's scene file and its reference at every depth are in the built-in suite
-    /// (a rung or depth added to the ladder without its files here fails this test).
-    #[test]
-    fn the_built_in_suite_holds_every_rung_and_depth() {
-        let has = |path: String| BUILT_IN.iter().any(|(p, _)| *p == path);
-        for rung in LADDER {
-            assert!(
-                has(format!("scenes/conformance/{}", rung.file)),
-                "{}",
-                rung.file
-            );
-            for &depth in rung.depths {
-                let name = ladder::reference_name(&rung, depth);
-                assert!(
-                    has(format!("figures/reference/conformance/{name}.exr")),
-                    "{name}"
-                );
-            }
-        }
-        let references = BUILT_IN.iter().filter(|(p, _)| p.ends_with(".exr")).count();
-        let comparisons: usize = LADDER.iter().map(|r| r.depths.len()).sum();
-        assert_eq!(references, comparisons);
-    }
 }

@@ -121,3 +121,63 @@ pub fn header(text: &str) -> Header {
         failure,
     }
 }
+
+/// A file of the suite as the library was built: its path under the project root, and its
+/// bytes.
+macro_rules! suite_file {
+    ($path:literal) => {
+        (
+            $path,
+            include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/", $path)) as &[u8],
+        )
+    };
+}
+
+/// The conformance suite built into the library, and so into every binary (40 files,
+/// about 2 MB): the ladder's scene files, the data files they read, and the references of
+/// every rung at every depth, as they were when it was built. `raylemma conformance`
+/// writes it out and runs it unless given `--suite DIR`, so a copied binary carries its
+/// suite. The test `the_built_in_suite_holds_every_rung_and_depth` holds it to the ladder
+/// and to the tree.
+pub const SUITE: &[(&str, &[u8])] = &[
+    suite_file!("scenes/conformance/01-direct-quad.toml"),
+    suite_file!("scenes/conformance/02-direct-sphere.toml"),
+    suite_file!("scenes/conformance/03-two-lights.toml"),
+    suite_file!("scenes/conformance/04-one-bounce.toml"),
+    suite_file!("scenes/conformance/05-box.toml"),
+    suite_file!("scenes/conformance/06-mirror.toml"),
+    suite_file!("scenes/conformance/07-glass.toml"),
+    suite_file!("scenes/conformance/08-roulette.toml"),
+    suite_file!("scenes/conformance/09-spectral-lamp.toml"),
+    suite_file!("scenes/conformance/10-thin-film.toml"),
+    suite_file!("scenes/conformance/11-dispersion.toml"),
+    suite_file!("data/cie_illuminant_D65.csv"),
+    suite_file!("data/cornell_box_reflectance.csv"),
+    suite_file!("figures/reference/conformance/01-direct-quad.exr"),
+    suite_file!("figures/reference/conformance/02-direct-sphere.exr"),
+    suite_file!("figures/reference/conformance/03-two-lights.exr"),
+    suite_file!("figures/reference/conformance/04-one-bounce-depth1.exr"),
+    suite_file!("figures/reference/conformance/04-one-bounce.exr"),
+    suite_file!("figures/reference/conformance/05-box-depth1.exr"),
+    suite_file!("figures/reference/conformance/05-box-depth2.exr"),
+    suite_file!("figures/reference/conformance/05-box-depth3.exr"),
+    suite_file!("figures/reference/conformance/05-box.exr"),
+    suite_file!("figures/reference/conformance/06-mirror-depth1.exr"),
+    suite_file!("figures/reference/conformance/06-mirror-depth2.exr"),
+    suite_file!("figures/reference/conformance/06-mirror-depth3.exr"),
+    suite_file!("figures/reference/conformance/06-mirror.exr"),
+    suite_file!("figures/reference/conformance/07-glass-depth1.exr"),
+    suite_file!("figures/reference/conformance/07-glass-depth2.exr"),
+    suite_file!("figures/reference/conformance/07-glass-depth3.exr"),
+    suite_file!("figures/reference/conformance/07-glass.exr"),
+    suite_file!("figures/reference/conformance/08-roulette-depth1.exr"),
+    suite_file!("figures/reference/conformance/08-roulette-depth2.exr"),
+    suite_file!("figures/reference/conformance/08-roulette-depth3.exr"),
+    suite_file!("figures/reference/conformance/08-roulette.exr"),
+    suite_file!("figures/reference/conformance/09-spectral-lamp-depth1.exr"),
+    suite_file!("figures/reference/conformance/09-spectral-lamp.exr"),
+    suite_file!("figures/reference/conformance/10-thin-film-depth1.exr"),
+    suite_file!("figures/reference/conformance/10-thin-film.exr"),
+    suite_file!("figures/reference/conformance/11-dispersion-depth1.exr"),
+    suite_file!("figures/reference/conformance/11-dispersion.exr"),
+];

@@ -39,6 +39,8 @@ pub fn outputs() -> Vec<Output> {
 const RUNS: u64 = 4;
 const SPP: u32 = 64;
 const ALPHA: f64 = 0.01;
+/// The first of the spectral rungs (a lamp's line spectrum, a thin film, dispersion).
+const SPECTRAL_FROM: u32 = 9;
 /// The planted twin: the light this much brighter.
 const BRIGHTER: f64 = 0.02;
 
@@ -173,6 +175,28 @@ fn false_alarms_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8
         format!(
             "without the floor {without} of {n} cards alarm; the 95 % interval starts at {:.3}, above {ALPHA}",
             wilson(without, n).0
+        ),
+    );
+    // The rungs before the spectral ones (9: a lamp's line spectrum, 10: a thin film,
+    // 11: dispersion), whose light is smooth in wavelength.
+    let grey: Vec<usize> = (0..rungs.len())
+        .filter(|&i| rungs[i].0.number <= SPECTRAL_FROM - 1)
+        .collect();
+    r.claim(
+        "rungs_before_the_spectral_ones_detect_in_every_card",
+        grey.iter().all(|&i| count(i, 2) == n),
+        format!(
+            "the light {} % brighter detected in all {n} cards on rungs 1 to {}: {}",
+            100.0 * BRIGHTER,
+            SPECTRAL_FROM - 1,
+            grey.iter()
+                .map(|&i| format!(
+                    "{} {}",
+                    ladder::reference_name(&rungs[i].0, rungs[i].1),
+                    count(i, 2)
+                ))
+                .collect::<Vec<_>>()
+                .join(", ")
         ),
     );
     r.number("weakest_detected", f64::from(weakest.0), "int");

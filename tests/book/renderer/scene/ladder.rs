@@ -252,3 +252,34 @@ fn the_card_s_diagnosis_names_each_mistake() {
         "a local mistake explained by a hypothesis: {d:#?}"
     );
 }
+
+/// Every rung's scene file and its reference at every depth are in the suite built into the
+/// library, byte for byte as committed (a rung or depth added to the ladder without its
+/// files there fails this test, and so does a built-in file that differs from the tree's).
+#[test]
+fn the_built_in_suite_holds_every_rung_and_depth() {
+    use raylemma::check::render::ladder::{self, LADDER, SUITE};
+    let has = |path: String| SUITE.iter().any(|(p, _)| *p == path);
+    for rung in LADDER {
+        assert!(
+            has(format!("scenes/conformance/{}", rung.file)),
+            "{}",
+            rung.file
+        );
+        for &depth in rung.depths {
+            let name = ladder::reference_name(&rung, depth);
+            assert!(
+                has(format!("figures/reference/conformance/{name}.exr")),
+                "{name}"
+            );
+        }
+    }
+    let references = SUITE.iter().filter(|(p, _)| p.ends_with(".exr")).count();
+    let comparisons: usize = LADDER.iter().map(|r| r.depths.len()).sum();
+    assert_eq!(references, comparisons);
+    for (path, bytes) in SUITE {
+        let on_disk = std::fs::read(crate::support::root().join(path))
+            .unwrap_or_else(|e| panic!("{path}: {e}"));
+        assert!(on_disk == *bytes, "{path} differs from the built-in copy");
+    }
+}
