@@ -180,7 +180,7 @@ fn false_alarms_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8
     // The rungs before the spectral ones (9: a lamp's line spectrum, 10: a thin film,
     // 11: dispersion), whose light is smooth in wavelength.
     let grey: Vec<usize> = (0..rungs.len())
-        .filter(|&i| rungs[i].0.number <= SPECTRAL_FROM - 1)
+        .filter(|&i| rungs[i].0.number < SPECTRAL_FROM)
         .collect();
     r.claim(
         "rungs_before_the_spectral_ones_detect_in_every_card",
