@@ -4,6 +4,10 @@
 //! those are judged, and each failing one's verdicts are printed in full after the card
 //! (every claim in words, its first and worst failing inputs) with the chapter to reread.
 //! `--json FILE` writes the card as data too (what `raylemma grade` reads).
+//!
+//! The card judges the code compiled into this binary, so it refuses (exit status 2) to
+//! run outside the crate that binary was built from ([`edition::check_judged_crate`]):
+//! the repository's binary run inside a hand-out would judge the solved code.
 
 use std::path::PathBuf;
 
@@ -25,9 +29,13 @@ pub struct CardArgs {
 }
 
 /// Runs `raylemma card`: 0 if every exercise judged passes, 1 if one does not, 2 for an
-/// unknown exercise, markers that cannot be read or JSON that cannot be written.
+/// unknown exercise, a working directory outside the crate this binary judges, markers that
+/// cannot be read or JSON that cannot be written.
 pub fn run(args: &CardArgs) -> CmdResult {
     let root = root();
+    let cwd = std::env::current_dir()
+        .map_err(|e| Failure::BadInput(format!("cannot read the working directory: {e}")))?;
+    edition::check_judged_crate(&root, &cwd).map_err(Failure::BadInput)?;
     let mut markers = edition::markers_under(&root)?;
     if let Some(unknown) = args
         .only

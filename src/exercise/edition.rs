@@ -437,6 +437,52 @@ pub fn check_destination(dir: &Path, root: &Path, overwrite: bool) -> Result<(),
     Ok(())
 }
 
+/// Checks that the crate whose code a `raylemma` binary judges, `built_from` (the
+/// `CARGO_MANIFEST_DIR` it was compiled in: its library *is* that crate's code), is the crate
+/// of the working directory `cwd`, as `raylemma card` requires (chapter *Coursework*, *The
+/// report card*). `cwd` must be `built_from` or inside it, with no edition (a folder with
+/// [`STAMP`]) in between. Otherwise the repository's binary, run inside a hand-out, would
+/// judge the repository's solved code and print *passing*; and of two hand-outs sharing a
+/// `CARGO_TARGET_DIR`, one's binary would judge the other's code.
+///
+/// # Errors
+/// Where the working directory is, which crate the binary judges, and what to run instead.
+pub fn check_judged_crate(built_from: &Path, cwd: &Path) -> Result<(), String> {
+    let built = fs::canonicalize(built_from).unwrap_or_else(|_| built_from.to_path_buf());
+    let here = fs::canonicalize(cwd).unwrap_or_else(|_| cwd.to_path_buf());
+    let edition_between = here
+        .ancestors()
+        .take_while(|d| *d != built)
+        .find(|d| d.join(STAMP).is_file());
+    if here.starts_with(&built) && edition_between.is_none() {
+        return Ok(());
+    }
+    let crate_here =
+        edition_between.or_else(|| here.ancestors().find(|d| d.join("Cargo.toml").is_file()));
+    let place = match crate_here {
+        Some(c) if c.join(STAMP).is_file() => {
+            let kind = fs::read_to_string(c.join(STAMP)).unwrap_or_default();
+            let kind = kind
+                .trim()
+                .rsplit(": ")
+                .next()
+                .unwrap_or("edition")
+                .to_string();
+            format!("is in the {kind} edition at {} ({STAMP})", c.display())
+        }
+        Some(c) => format!("is in the crate at {} (its Cargo.toml)", c.display()),
+        None => "is in no crate (no Cargo.toml in it or above it)".into(),
+    };
+    Err(format!(
+        "the working directory {} {place}, but this raylemma binary was built from {} and \
+         judges that crate's code, not the code here: run `cargo run -- card` inside the crate \
+         to judge (in a hand-out, its own binary judges its own code), or this binary inside {}",
+        here.display(),
+        built.display(),
+        built.display()
+    ))
+}
+
 /// `path` made absolute with its existing ancestors resolved (it need not exist).
 fn absolute(path: &Path) -> std::io::Result<PathBuf> {
     let path = std::path::absolute(path)?;

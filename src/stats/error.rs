@@ -175,7 +175,11 @@ impl fmt::Display for StatsError {
                 index,
                 sample,
                 ref problem,
-            } => write!(f, "sample {index} = {sample:?}: {problem}"),
+            } => write!(
+                f,
+                "sample {index} = {}: {problem}",
+                crate::numeric::tuple_text(sample.to_array())
+            ),
             Self::InvalidPdf {
                 cell: (i, j),
                 at: (s, t),

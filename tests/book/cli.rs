@@ -673,6 +673,53 @@ fn conformance_passes_raylemma_and_points_at_a_fault() {
     );
 }
 
+/// `card` judges the code compiled into its binary, so this crate's binary run inside a
+/// hand-out would judge the solved code here and print *passing*: it refuses (exit status 2),
+/// naming the hand-out and the crate it was built from, and says what to run instead
+/// (chapter *Coursework*, *The report card*).
+#[test]
+fn card_refuses_to_judge_a_crate_other_than_its_own() {
+    let dir = crate::support::scratch("card-elsewhere");
+    let hand_out = dir.join("hand-out");
+    std::fs::create_dir_all(hand_out.join("src")).unwrap();
+    std::fs::write(
+        hand_out.join("Cargo.toml"),
+        "[package]\nname = \"raylemma-hand-out\"\n",
+    )
+    .unwrap();
+    std::fs::write(
+        hand_out.join(".raylemma-edition"),
+        "raylemma student edition: hand-out\n",
+    )
+    .unwrap();
+    for cwd in [hand_out.clone(), hand_out.join("src")] {
+        let out = Command::new(env!("CARGO_BIN_EXE_raylemma"))
+            .arg("card")
+            .current_dir(&cwd)
+            .output()
+            .expect("the binary runs");
+        let hand_out = std::fs::canonicalize(&hand_out).unwrap();
+        refused(
+            &out,
+            &[
+                &format!("is in the hand-out edition at {}", hand_out.display()),
+                &format!(
+                    "built from {}",
+                    std::fs::canonicalize(crate::support::root())
+                        .unwrap()
+                        .display()
+                ),
+                "run `cargo run -- card` inside the crate",
+            ],
+        );
+        assert!(
+            out.stdout.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+}
+
 /// `card` and `grade` refuse what they cannot use with exit status 2 and the reason: an
 /// exercise that does not exist, a folder that is not an edition, a weights file with an
 /// exercise that does not exist (its line), before anything is built or written. (The

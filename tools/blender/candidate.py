@@ -26,7 +26,8 @@ What Cycles is told, and why (README.md has the longer account):
     denoising, guiding
     filter glossy          0 (Cycles blurs sharp reflections after a diffuse bounce by default)
     bounces                max_depth - 1 in every kind: Cycles counts scattering events after
-                           the camera hit, raylemma path segments after the camera's
+                           the camera hit, raylemma every bounce including it (the JSON's
+                           render.max_depth_counts: 1 is direct light only, Cycles' 0)
     quad light             an emissive mesh, black on its back face (a Mix shader driven by
                            Backfacing), emission sampling "front": radiance = Emission
                            strength, no unit conversion (Emission strength 1 is radiance 1)
@@ -131,6 +132,8 @@ def settings(scene, render, camera, spp, seed, threads):
     cycles.blur_glossy = 0.0
     cycles.caustics_reflective = True
     cycles.caustics_refractive = True
+    if not render.get("max_depth_counts", "bounces").startswith("bounces"):
+        raise Unsupported(f"max_depth counts {render['max_depth_counts']!r}, not bounces")
     bounces = render["max_depth"] - 1
     if bounces < 0:
         raise Unsupported(f"max_depth {render['max_depth']} (Cycles renders at least direct light)")

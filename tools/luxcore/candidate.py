@@ -112,6 +112,10 @@ def build(data, colour, spp, seed):
     r = data["render"]
     if data.get("environment") is not None:
         raise Unsupported("an environment (not written for LuxCore yet)")
+    # raylemma's max_depth counts bounces (the JSON's render.max_depth_counts: 1 is direct
+    # light only); path.pathdepth gets it unchanged (README.md: which depths agree is open).
+    if not r.get("max_depth_counts", "bounces").startswith("bounces"):
+        raise Unsupported(f"max_depth counts {r['max_depth_counts']!r}, not bounces")
     depth = r["max_depth"]
     config = [
         "renderengine.type = PATHCPU", f"renderengine.seed = {seed % (2 ** 31 - 1) + 1}",

@@ -69,6 +69,18 @@ impl Target {
         }
     }
 
+    /// Its domain in its own words, for messages: "the sphere", "the hemisphere", "the
+    /// disc", "the square" (a hemisphere's samples are checked on the sphere, with a pdf
+    /// of zero below, but a sample off it is outside the hemisphere to its writer).
+    pub fn words(self) -> &'static str {
+        match self {
+            Target::UniformSphere => "the sphere",
+            Target::UniformHemisphere | Target::CosineHemisphere => "the hemisphere",
+            Target::Disc => "the disc",
+            Target::Square => "the square",
+        }
+    }
+
     /// Its density at `p` (per steradian on the sphere, per unit area on the disc and the
     /// square), with the library's own pdfs.
     pub fn pdf(self, p: DVec3) -> f64 {
@@ -119,15 +131,6 @@ pub fn domain_named(name: &str) -> Result<Domain, String> {
     }
 }
 
-fn domain_name(domain: Domain) -> &'static str {
-    match domain {
-        Domain::Sphere => "sphere",
-        Domain::Disc => "disc",
-        Domain::Square => "square",
-        Domain::Interval { .. } => "interval",
-    }
-}
-
 /// The density a program's samples are checked against.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Density {
@@ -142,6 +145,14 @@ impl Density {
         match self {
             Density::Target(t) => t.domain(),
             Density::Program(domain) => domain,
+        }
+    }
+
+    /// Its domain in words: the target's own, or the domain's.
+    fn words(self) -> String {
+        match self {
+            Density::Target(t) => t.words().into(),
+            Density::Program(domain) => domain.words(),
         }
     }
 }
@@ -235,6 +246,9 @@ impl Warp for ProgramWarp<'_> {
     fn domain(&self) -> Domain {
         self.density.domain()
     }
+    fn domain_words(&self) -> String {
+        self.density.words()
+    }
     /// The warp at a uniform point of the square: the same points, from the same seed, as
     /// a [`warp::SquareWarp`] draws.
     fn sample(&self, rng: &mut Rng) -> DVec3 {
@@ -271,6 +285,9 @@ impl Warp for SampleTable {
     }
     fn domain(&self) -> Domain {
         self.target.domain()
+    }
+    fn domain_words(&self) -> String {
+        self.target.words().into()
     }
     fn sample(&self, _rng: &mut Rng) -> DVec3 {
         let k = self.next.fetch_add(1, Ordering::Relaxed);
@@ -340,7 +357,7 @@ pub fn sampler(sampler: &Sampler, options: &impl ToWarpOptions) -> Result<Verdic
             let name = match density {
                 Density::Target(t) => format!("{command} ({t})"),
                 Density::Program(d) => {
-                    format!("{command} (its own pdf on the {})", domain_name(*d))
+                    format!("{command} (its own pdf on {})", d.words())
                 }
             };
             let warp = ProgramWarp {

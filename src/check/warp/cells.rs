@@ -120,19 +120,37 @@ pub(super) fn grid(domain: Domain, resolution: usize) -> (usize, usize) {
     }
 }
 
-/// Why a sample is not in the domain, if it is not.
-pub(super) fn outside(domain: Domain, p: DVec3) -> Option<String> {
+/// Why a sample is not in the domain, if it is not, naming the domain in `words` (the
+/// density's own: "the hemisphere" for a hemisphere sampler on [`Domain::Sphere`]) and
+/// saying which condition the sample breaks, its numbers written plainly.
+pub(super) fn outside(domain: Domain, words: &str, p: DVec3) -> Option<String> {
     if !p.is_finite() {
         return Some("the sample is not finite".into());
     }
     let tol = 1e-9;
-    let bad = match domain {
-        Domain::Interval { lo, hi } => p.x < lo || p.x > hi || p.y != 0.0 || p.z != 0.0,
-        Domain::Square => p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0 || p.z != 0.0,
-        Domain::Disc => p.x * p.x + p.y * p.y > 1.0 + tol || p.z != 0.0,
-        Domain::Sphere => (p.length() - 1.0).abs() > tol,
+    let flat = |why: String| {
+        if p.z == 0.0 {
+            why
+        } else {
+            format!("its z is {:?}, not 0", p.z)
+        }
     };
-    bad.then(|| format!("the sample lies outside the domain {domain:?}"))
+    let why = match domain {
+        Domain::Interval { lo, hi } => (p.x < lo || p.x > hi || p.y != 0.0 || p.z != 0.0)
+            .then(|| format!("it is not a point (x, 0, 0) with x in [{lo}, {hi}]")),
+        Domain::Square => (p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0 || p.z != 0.0)
+            .then(|| flat("x and y must lie in [0, 1]".into())),
+        Domain::Disc => {
+            let r2 = p.x * p.x + p.y * p.y;
+            (r2 > 1.0 + tol || p.z != 0.0).then(|| flat(format!("x^2 + y^2 = {r2:?} > 1")))
+        }
+        Domain::Sphere => {
+            let length = p.length();
+            ((length - 1.0).abs() > tol)
+                .then(|| format!("its length is {length:?}, not 1 (to 1e-9)"))
+        }
+    };
+    why.map(|why| format!("the sample lies outside {words}: {why}"))
 }
 
 /// 8-point Gauss-Legendre nodes and weights on `[-1, 1]`.

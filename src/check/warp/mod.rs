@@ -29,6 +29,7 @@ pub mod planted;
 use glam::{DVec2, DVec3};
 
 use super::{Finding, Options, Verdict};
+use crate::numeric::tuple_text;
 use crate::rng::{self, Rng};
 use crate::stats::{StatsError, chi2};
 use cells::{cell_of, cell_probabilities, grid, outside, worst_cells};
@@ -54,12 +55,31 @@ pub enum Domain {
     Sphere,
 }
 
+impl Domain {
+    /// The domain in words, for messages: "the sphere", "the disc", "the square",
+    /// "the interval [lo, hi]".
+    pub fn words(self) -> String {
+        match self {
+            Domain::Interval { lo, hi } => format!("the interval [{lo}, {hi}]"),
+            Domain::Square => "the square".into(),
+            Domain::Disc => "the disc".into(),
+            Domain::Sphere => "the sphere".into(),
+        }
+    }
+}
+
 /// A sampler and the density it claims. Implement this for your own sampler to check it.
 pub trait Warp: Sync {
     /// A name for reports and failure images.
     fn name(&self) -> String;
     /// The domain of the samples.
     fn domain(&self) -> Domain;
+    /// The domain in the words of the density sampled, for messages ("outside the
+    /// hemisphere" for a hemisphere sampler, whose domain is the sphere); by default
+    /// [`Domain::words`].
+    fn domain_words(&self) -> String {
+        self.domain().words()
+    }
     /// Draws one sample (may consume any number of random numbers).
     fn sample(&self, rng: &mut Rng) -> DVec3;
     /// The claimed density at `p` (zero outside the support).
@@ -311,7 +331,7 @@ pub fn chi_squared(
             sample: p,
             problem,
         };
-        if let Some(why) = outside(domain, p) {
+        if let Some(why) = outside(domain, &warp.domain_words(), p) {
             return Err(invalid(why));
         }
         // Every sample must lie where the claimed pdf is positive: a renderer divides by it.
@@ -418,12 +438,22 @@ pub fn jacobian(warp: &dyn Warp, options: &impl ToWarpOptions) -> Option<Finding
             rng::uniform(&mut rng, 1e-3, 1.0 - 1e-3),
         );
         let (Some(p), Some(area)) = (warp.warp(u), area_element(warp, u, 1e-6)) else {
-            finding.record(false, || format!("the warp is undefined near u = {u:?}"));
+            finding.record(false, || {
+                format!(
+                    "the warp is undefined near u = {}",
+                    tuple_text(u.to_array())
+                )
+            });
             continue;
         };
         let product = warp.pdf(p) * area;
         finding.measure((product - 1.0).abs(), 1e-4, || {
-            format!("at u = {u:?}: T(u) = {p:?}, pdf = {:.6e}, |dT/du| = {area:.6e}, product {product:.6e}", warp.pdf(p))
+            format!(
+                "at u = {}: T(u) = {}, pdf = {:.6e}, |dT/du| = {area:.6e}, product {product:.6e}",
+                tuple_text(u.to_array()),
+                tuple_text(p.to_array()),
+                warp.pdf(p)
+            )
         });
     }
     Some(finding)
@@ -444,7 +474,12 @@ pub fn round_trip(warp: &dyn Warp, options: &impl ToWarpOptions) -> Option<Findi
         let err = back.map_or(f64::INFINITY, |b| {
             crate::numeric::max_abs((b - u).to_array())
         });
-        finding.measure(err, 1e-9, || format!("u = {u:?} came back as {back:?}"));
+        finding.measure(err, 1e-9, || {
+            let back = back.map_or("nothing (the inverse is undefined there)".into(), |b| {
+                tuple_text(b.to_array())
+            });
+            format!("u = {} came back as {back}", tuple_text(u.to_array()))
+        });
     }
     Some(finding)
 }

@@ -18,7 +18,9 @@ use crate::spectral::spectrum::Spectrum;
 
 /// The format's name and version, the first keys of every file.
 pub(crate) const FORMAT: &str = "raylemma-scene";
-/// The version of the layout below; it changes whenever a key does.
+/// The version of the layout below; it changes whenever a key is renamed, removed or changes
+/// meaning. A key added beside the others (as `render.max_depth_counts` was) leaves it, so
+/// that readers of version 1 keep working.
 pub(crate) const VERSION: u32 = 1;
 
 #[derive(Serialize)]
@@ -57,8 +59,17 @@ struct Render {
     wavelengths: &'static str,
     direct: &'static str,
     roulette_depth: u32,
+    /// The scene's `max_depth`, counted in bounces as raylemma counts it.
     max_depth: u32,
+    /// What `max_depth` counts, in words, for an implementer whose renderer counts segments.
+    max_depth_counts: &'static str,
 }
+
+/// What the export's `max_depth` counts. raylemma counts bounces (surface hits after the
+/// camera's ray that scatter), Mitsuba path segments: the two differ by one, which is the
+/// first thing a renderer built from the JSON gets wrong (chapter *The path tracer*, *The
+/// maximum depth*; `tools/mitsuba/NOTES.md`, section 5).
+pub(crate) const MAX_DEPTH_COUNTS: &str = "bounces: a path has at most max_depth + 1 segments; 0 is only the lights the camera sees, 1 is direct light only (paths of two segments, camera to surface to light); a light is sampled only at the vertices before the last, where the next segment is traced too; a renderer counting segments (Mitsuba's max_depth) uses max_depth + 1";
 
 #[derive(Serialize)]
 struct Camera {
@@ -333,6 +344,7 @@ pub fn to_json(f: &SceneFile) -> String {
             direct: super::direct_name(s.settings.direct),
             roulette_depth: s.settings.roulette_depth,
             max_depth: s.settings.max_depth,
+            max_depth_counts: MAX_DEPTH_COUNTS,
         },
         camera: camera(s),
         materials: s

@@ -306,7 +306,10 @@ fn six_decimals_fail_every_claim_on_the_sphere() {
         "{v}"
     );
     let message = v.finding("chi_squared").example.clone().unwrap_or_default();
-    assert!(message.contains("outside the domain"), "{message}");
+    assert!(
+        message.contains("outside the hemisphere: its length is"),
+        "{message}"
+    );
     // The polar disc, r = sqrt(u1), with its inverse, printed with %f.
     let disc = r#"awk '
 $1 == "warp"   { r = sqrt($2); p = 6.283185307179586 * $3
@@ -526,6 +529,78 @@ fn raylemma_check_exits_0_on_pass_and_1_on_fail() {
         "{}",
         text(&out.stdout)
     );
+}
+
+/// `check sampler` names the domain in the target's own words (the sphere, the hemisphere,
+/// the disc, the square) and writes points as `(x, y, z)`, never glam's `DVec3(...)`: the
+/// cosine sampler printed with six decimals lies off the unit sphere, outside the
+/// hemisphere, and its Jacobian and round-trip lines give `u` and `T(u)` plainly.
+#[test]
+fn check_sampler_speaks_the_target_s_words_and_writes_numbers_plainly() {
+    let cosine = COSINE.replace("%.17g", "%f");
+    let args = ["--inverse", "--program", &cosine, "--cases", "5000"];
+    let out = raylemma(
+        &[
+            &["check", "sampler", "--target", "cosine-hemisphere"],
+            &args[..],
+        ]
+        .concat(),
+    );
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    let verdict = text(&out.stdout);
+    for words in [
+        "outside the hemisphere: its length is",
+        "at u = (0.",
+        "T(u) = (",
+        "came back as (",
+    ] {
+        assert!(verdict.contains(words), "{words:?} missing:\n{verdict}");
+    }
+    assert!(
+        !verdict.contains("DVec") && !verdict.contains("Some("),
+        "{verdict}"
+    );
+    // Files of samples, one wrong row each, in each target's words.
+    for (target, row, words) in [
+        (
+            "uniform-sphere",
+            "0,0,2",
+            "outside the sphere: its length is 2.0, not 1",
+        ),
+        (
+            "uniform-hemisphere",
+            "0,0,0.5",
+            "outside the hemisphere: its length is 0.5",
+        ),
+        ("disc", "0.9,0.9", "outside the disc: x^2 + y^2 = 1.62"),
+        (
+            "square",
+            "1.5,0.5",
+            "outside the square: x and y must lie in [0, 1]",
+        ),
+    ] {
+        let path = write(&format!("cli-outside-{target}.csv"), &format!("{row}\n"));
+        let out = raylemma(&[
+            "check",
+            "sampler",
+            "--target",
+            target,
+            "--samples",
+            path.to_str().unwrap(),
+        ]);
+        let verdict = text(&out.stdout);
+        assert_eq!(
+            out.status.code(),
+            Some(1),
+            "{target}: {}{verdict}",
+            text(&out.stderr)
+        );
+        assert!(
+            verdict.contains(words),
+            "{target}: {words:?} missing:\n{verdict}"
+        );
+        assert!(!verdict.contains("DVec"), "{verdict}");
+    }
 }
 
 #[test]

@@ -86,7 +86,10 @@ fn rejects_samples_outside_the_domain() {
         planted::disc_outside,
         disc_pdf,
     );
-    assert!(chi2_message(&v).contains("outside the domain"), "{v}");
+    assert!(
+        chi2_message(&v).contains("outside the disc: x^2 + y^2 = "),
+        "{v}"
+    );
 }
 
 #[test]

@@ -249,7 +249,7 @@ fn disc_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u
     let verdict = disc_verdict();
     let jacobian = verdict.finding("jacobian");
     let at = first_failure(jacobian)?;
-    let u1 = number_after(at, &["u = DVec2("])?;
+    let u1 = number_after(at, &["u = ("])?;
     let det = number_after(at, &["|dT/du| = "])?;
     let product = number_after(at, &["product "])?;
     r.number("jacobian.first.u1", u1, ".3");
@@ -257,8 +257,8 @@ fn disc_verdict_txt(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u
     r.number("jacobian.first.product", product, ".3");
     let round_trip = verdict.finding("round_trip");
     let at = first_failure(round_trip)?;
-    let u = number_after(at, &["u = DVec2("])?;
-    let back = number_after(at, &["Some(DVec2("])?;
+    let u = number_after(at, &["u = ("])?;
+    let back = number_after(at, &["came back as ("])?;
     r.number("round_trip.first.u1", u, ".3");
     r.number("round_trip.first.back_u1", back, ".3");
     r.claim(

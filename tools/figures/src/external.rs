@@ -97,7 +97,7 @@ fn sampler_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
 /// one on the rim; and how many times their share the chi-squared line's worst cell gets.
 fn record_uniform(verdict: &Verdict, r: &mut Record) -> anyhow::Result<()> {
     let jacobian = verdict.finding("jacobian");
-    let z_of = ["T(u) = DVec3(", ", ", ", "];
+    let z_of = ["T(u) = (", ", ", ", "];
     let first = first_failure(jacobian)?;
     let (product, z) = (
         number_after(first, &["product "])?,

@@ -91,6 +91,34 @@ fn json_is_fully_resolved() {
     assert_eq!(j["shapes"][6]["type"], "sphere");
 }
 
+/// `max_depth` counts bounces and the file says so beside it, in words an implementer of a
+/// segment-counting renderer cannot misread: direct light only is 1, paths of two segments,
+/// and Mitsuba's `max_depth` is one more (chapter *Reference scenes and interop*, *Exporting
+/// a scene*).
+#[test]
+fn json_says_what_max_depth_counts() {
+    for (scene, depth) in [
+        ("cornell.toml", 1000),
+        ("conformance/01-direct-quad.toml", 1),
+    ] {
+        let j = json_of(scene);
+        let r = &j["render"];
+        assert_eq!(r["max_depth"].as_u64(), Some(depth), "{scene}");
+        let counts = r["max_depth_counts"].as_str().unwrap_or_default();
+        for words in [
+            "bounces",
+            "at most max_depth + 1 segments",
+            "1 is direct light only (paths of two segments",
+            "Mitsuba's max_depth) uses max_depth + 1",
+        ] {
+            assert!(
+                counts.contains(words),
+                "{scene}: {counts:?} lacks {words:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn json_keeps_luminance_scaling_sellmeier_films_and_constants() {
     // The lamps are scaled to Y = 12: the exported samples integrate to it against the
