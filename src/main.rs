@@ -105,16 +105,28 @@ fn main() -> ExitCode {
     })
 }
 
+/// Whether a panic is `print!`'s on a closed pipe: standard output or error written after
+/// the program reading them has exited (Rust ignores `SIGPIPE`, so the write fails, and
+/// `print!` panics with the error).
+fn closed_pipe(message: &str) -> bool {
+    message.starts_with("failed printing to std") && message.contains("Broken pipe")
+}
+
 /// In the student edition, a function whose exercise is not started panics on every thread
 /// that calls it (a render calls it once per worker, and then again on the main thread):
-/// print that message once, with what to do, and leave every other panic to the default
-/// hook.
+/// print that message once, with what to do; end quietly on a closed pipe
+/// ([`closed_pipe`]); and leave every other panic to the default hook.
 fn one_message_per_unfinished_exercise() {
     use std::sync::atomic::{AtomicBool, Ordering};
     static SAID: AtomicBool = AtomicBool::new(false);
     let default = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
         let message = raylemma::exercise::panic_message(info.payload());
+        if closed_pipe(&message) {
+            // The reader went away (`raylemma check corpus | head -1`): what it wanted, it
+            // has; nothing is wrong, so end quietly with status 0, as `cat` would.
+            std::process::exit(0);
+        }
         if raylemma::exercise::not_started(&message).is_none() {
             return default(info);
         }

@@ -769,3 +769,23 @@ fn card_and_grade_refuse_bad_input_before_building_anything() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A closed pipe is not an error: `raylemma check corpus | head -1` ends quietly with status
+/// 0 once its reader is gone, never with a panic (status 101).
+#[test]
+fn a_closed_pipe_ends_quietly_with_status_zero() {
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_raylemma"))
+        .args(["check", "corpus"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    // The reader goes away before the first line (the corpora take a while to check), so
+    // the first line written meets a closed pipe.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("it ends");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
