@@ -48,11 +48,14 @@ fi
 mversion="$("$mpy" -c 'import importlib.metadata as m; print(m.version("mitsuba"))')"
 bversion="$("$bpy" -c 'import bpy; print(bpy.app.version_string)' 2>/dev/null | tail -n 1)"
 
-"$mpy" - "$root" "$work" "$spp" "$runs" "$mversion" "$bversion" <<'PY'
+# The table in the Blender venv's Python: it has numpy and OpenEXR for predict_rgb.py.
+RAYLEMMA="$raylemma" "$bpy" - "$root" "$work" "$spp" "$runs" "$mversion" "$bversion" <<'PY'
 import datetime, json, os, sys
 root, work, spp, runs, mversion, bversion = sys.argv[1:7]
 sys.path.insert(0, os.path.join(root, "tools", "values"))
+sys.path.insert(0, os.path.join(root, "tools", "blender"))
 from values import Record
+from ladder_table import explain
 
 cpu = next(l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name"))
 seconds = dict(line.split() for line in open(f"{work}/seconds.txt"))
@@ -62,7 +65,9 @@ record = Record("conformance_defaults.md")
 def depth(r):
     return "own" if r["depth"] is None else str(r["depth"])
 
-def cell(r):
+explained = {}
+
+def cell(r, name=None):
     if r is None:
         return ""
     v = r["verdict"]
@@ -71,15 +76,24 @@ def cell(r):
     if v == "agree":
         return f"agrees ({rel})"
     if v == "differ":
-        f = (r.get("failed_tests") or {}).get("text", "")
-        return f"**differs** ({rel}; {f})" if f else f"**differs** ({rel})"
+        f = (r.get("failed_tests") or {}).get("text", "").replace("|", "\\|")  # a table cell
+        text = f"**differs** ({rel}; {f})" if f else f"**differs** ({rel})"
+        if name == "cycles":
+            # An RGB renderer: is it raylemma's prediction of the RGB image (ladder_table.py)?
+            e = explain(r, os.path.join(work, name), 4096, os.environ["RAYLEMMA"], True)
+            explained[(r["rung"], depth(r))] = e
+            x, y = e["block"]
+            text += (f"; RGB − spectral in block ({x}, {y}) {e['channel']}: {100 * e['predicted']:+.2f} % predicted, "
+                     f"{100 * e['measured']:+.2f} % measured; against raylemma's RGB prediction it "
+                     f"{'agrees' if e['residual_agrees'] else '**differs**'}")
+        return text
     if v == "skipped":
         return "skipped (not expressed in Mitsuba's format)"
-    why = (r.get("renderer_failure") or {}).get("text") or r.get("detail") or ""
-    why = why.strip().splitlines()[-1] if why.strip() else ""
-    if "cannot express this scene: " in why:
-        why = why.split("cannot express this scene: ", 1)[1]
-    return f"not expressed: {why}" if why else "error"
+    tail = (r.get("renderer_failure") or {}).get("log_tail") or []
+    said = [l for l in tail if "cannot express this scene: " in l]
+    if said:
+        return "not expressed: " + said[-1].split("cannot express this scene: ", 1)[1]
+    return f"error: {r.get('detail', '')}"
 
 keys = []
 rows = {}
@@ -92,7 +106,7 @@ for name, card in cards.items():
         rows[k][name] = r
 lines = ["| rung | depth | Mitsuba `scalar_spectral` | Cycles |", "|---|---|---|---|"]
 for k in keys:
-    lines.append(f"| {k[0]} | {k[1]} | {cell(rows[k].get('mitsuba'))} | {cell(rows[k].get('cycles'))} |")
+    lines.append(f"| {k[0]} | {k[1]} | {cell(rows[k].get('mitsuba'))} | {cell(rows[k].get('cycles'), 'cycles')} |")
 for name, card in cards.items():
     v = [r["verdict"] for r in card["rungs"]]
     for what in ("agree", "differ", "error", "skipped"):
@@ -104,6 +118,12 @@ record.claim("mitsuba_agrees_everywhere", all(r["verdict"] == "agree" for r in m
 issue = [r for r in m if r["rung"] == 6 or (r["rung"] == 7 and r["depth"] in (1, 2))]
 record.claim("mitsuba_rungs_6_and_7_agree", bool(issue) and all(r["verdict"] == "agree" for r in issue),
              "; ".join(f"rung {r['rung']} depth {depth(r)}: {r['verdict']}" for r in issue))
+record.number("cycles.explained", sum(e["residual_agrees"] for e in explained.values()), "int")
+record.claim("cycles_every_difference_is_the_rgb_product",
+             len(explained) == sum(r["verdict"] == "differ" for r in cards["cycles"]["rungs"])
+             and all(e["residual_agrees"] for e in explained.values()),
+             "; ".join(f"rung {k[0]} depth {k[1]}: {'agrees' if e['residual_agrees'] else 'differs'} with the prediction"
+                       for k, e in explained.items()))
 record.number("spp", int(spp), "int")
 record.number("runs", int(runs), "int")
 caption = (f"*`tools/mitsuba/defaults.sh {spp} {runs}` on {datetime.date.today().isoformat()}, {cpu}, "
@@ -112,7 +132,9 @@ caption = (f"*`tools/mitsuba/defaults.sh {spp} {runs}` on {datetime.date.today()
            f"`tools/mitsuba/candidate.py`, {record.values['mitsuba.minutes']['shown']} minutes) and on "
            f"Cycles {bversion} (`--format json`, `tools/blender/candidate.py`, "
            f"{record.values['cycles.minutes']['shown']} minutes). In brackets the whole image's relative "
-           f"difference (R, G, B) and, where it differs, the tests that failed.*")
+           f"difference (R, G, B) and, where it differs, the tests that failed; for Cycles, an RGB renderer, "
+           f"also raylemma's prediction of its RGB image (`tools/blender/predict_rgb.py --clamp-negative`, 4096 spp "
+           f"a channel) and `raylemma compare PREDICTION.exr RUN-*.exr`, as in Cycles' table.*")
 table = "\n".join(lines) + "\n\n" + caption + "\n"
 open(os.path.join(root, "figures", "conformance_defaults.md"), "w").write(table)
 record.write(root, table)
