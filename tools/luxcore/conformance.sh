@@ -5,7 +5,7 @@
 # and the comparisons that explain it (tools/blender/ladder_table.py). Writes
 # figures/conformance_luxcore.md and its named values into figures/values.json.
 #
-#     tools/luxcore/conformance.sh [SPP [RUNS]]          (default 64 spp, 4 runs: the card's defaults)
+#     tools/luxcore/conformance.sh [SPP [RUNS]]          (default 256 spp, 4 runs a rung, as Cycles')
 #     tools/luxcore/conformance.sh --table [SPP [RUNS]]  (the table again from the last card)
 #
 # Work files: ${TMPDIR:-/tmp}/raylemma-conformance-luxcore. The caption gives the wall time.
@@ -17,7 +17,7 @@ if [ "${1:-}" = "--table" ]; then
     shift
 fi
 root="$(cd "$(dirname "$0")/../.." && pwd)"
-spp="${1:-64}"
+spp="${1:-256}"
 runs="${2:-4}"
 work="${TMPDIR:-/tmp}/raylemma-conformance-luxcore"
 venv="${RAYLEMMA_LUXCORE_VENV:-/root/.cache/raylemma-luxcore-venv}"
