@@ -12,11 +12,13 @@ reflectances relative to the equal-energy light). What LuxCore is told:
     film.filter            BOX of width 0.5 (LuxCore's width is a radius: one pixel)
     sampler                RANDOM, adaptive strength 0 (every pixel gets N samples)
     path.clamping          off (variance clamping 0)
-    path depths            total, diffuse, glossy and specular all max_depth (see README.md)
+    path depths            total, diffuse, glossy and specular all max_depth + 1 (LuxCore
+                           counts vertices, raylemma bounces; see README.md)
     lightstrategy          POWER (unbiased, as the default LOG_POWER)
     quad light             a matte of reflectance 0 with emission = the radiance, gain 1
                            (no power, no efficacy: the colour is the radiance); LuxCore's
-                           triangle lights emit on the front face only
+                           triangle lights emit on the front face only; light sampling
+                           ENABLED (AUTO turns it off for meshes of more than 256 triangles)
     sphere                 an icosphere, as for Cycles (--sphere-subdivisions, default 6)
     screen window          moved up one pixel row: LuxCore 2.11.2 renders one row low
 
@@ -73,8 +75,7 @@ def icosphere(centre, radius, subdivisions):
     return v, f, normals
 
 
-# Subdivisions of a sphere's icosphere; candidate.py --sphere-subdivisions sets it. LuxCore
-# 2.11.2 lights nothing from an emissive icosphere of 2 or more subdivisions (README.md).
+# Subdivisions of a sphere's icosphere; candidate.py --sphere-subdivisions sets it.
 SPHERE_SUBDIVISIONS = 6
 
 
@@ -112,11 +113,14 @@ def build(data, colour, spp, seed):
     r = data["render"]
     if data.get("environment") is not None:
         raise Unsupported("an environment (not written for LuxCore yet)")
-    # raylemma's max_depth counts bounces (the JSON's render.max_depth_counts: 1 is direct
-    # light only); path.pathdepth gets it unchanged (README.md: which depths agree is open).
+    # LuxCore's path.pathdepth.* count path vertices (surface hits), raylemma's max_depth
+    # counts bounces (the JSON's render.max_depth_counts): LuxCore adds emission found at
+    # vertices 0..D-1 and samples lights at vertices 0..D-2 (at vertex 0 also when D = 1, but
+    # then it samples no direction), so raylemma's max_depth d is LuxCore's D = d + 1
+    # (pathtracer.cpp, PathDepthInfo). README.md.
     if not r.get("max_depth_counts", "bounces").startswith("bounces"):
         raise Unsupported(f"max_depth counts {r['max_depth_counts']!r}, not bounces")
-    depth = r["max_depth"]
+    depth = r["max_depth"] + 1
     config = [
         "renderengine.type = PATHCPU", f"renderengine.seed = {seed % (2 ** 31 - 1) + 1}",
         "sampler.type = RANDOM", "sampler.random.adaptive.strength = 0",
@@ -152,7 +156,10 @@ def build(data, colour, spp, seed):
         name = f"light{i}"
         s += [f"scene.materials.{name}.type = matte", f"scene.materials.{name}.kd = 0 0 0",
               f"scene.materials.{name}.emission = {rgb_text(colour.radiance(light['emission']))}",
-              f"scene.materials.{name}.emission.gain = 1 1 1"]
+              f"scene.materials.{name}.emission.gain = 1 1 1",
+              # AUTO (the default) turns light sampling off for a mesh of more than 256
+              # triangles (TriangleLight::IsDirectLightSamplingEnabled): the icosphere.
+              f"scene.materials.{name}.emission.directlightsampling.type = ENABLED"]
         objects.append((name, light, name))
     for name, shape, material in objects:
         v, f, n = mesh(shape)
