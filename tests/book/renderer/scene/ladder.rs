@@ -97,8 +97,13 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
 /// - rung 1 with its light 1 % too bright: a uniform factor within 0.002 of 1.01, and no
 ///   other hypothesis that explains it;
 /// - the same images gamma-encoded: gamma encoding, and no other;
-/// - rung 1 seen with a field of view 0.5° wider: the camera, at a field of view within
-///   0.15° of 40.5° (the magnification is found to 0.001, about 0.04° here);
+/// - rung 1 seen with a field of view 0.5° wider, and 2° and 3° wider and narrower: the
+///   camera, at a field of view within 0.15° of the one rendered (the magnification is
+///   found to 0.001, about 0.04° here);
+/// - the same images with their linear sRGB put through the sRGB-to-XYZ matrix (XYZ saved
+///   as R, G, B): XYZ saved as R, G, B, and no other;
+/// - the same images shifted by one pixel down, and by one pixel left (edge pixels
+///   repeated): the shift, and no other;
 /// - the closed box of rung 5 rendered at depth 1, against its depth-2 reference with the
 ///   depth-1 and depth-3 references beside it: the depth, at depth 1;
 /// - rung 1 4 % too bright in its middle rows only (a local mistake, the planted twin of
@@ -191,19 +196,57 @@ fn the_card_s_diagnosis_names_each_mistake() {
     );
     assert_eq!(agrees(&d), 1, "{d:#?}");
 
-    let mut wide = file.scene.clone();
-    wide.camera.fov_y_deg += 0.5;
-    let d = found(&runs(&wide));
-    let fov = d
-        .first()
-        .filter(|f| f.starts_with("the camera:"))
-        .and_then(|f| f.split("field of view of ").nth(1))
-        .and_then(|f| f.split('°').next())
-        .and_then(|f| f.parse::<f64>().ok());
+    // The field of view off by 0.5°, by ±2° (a common slip) and by ±3°.
+    for off in [0.5, 2.0, -2.0, 3.0, -3.0] {
+        let mut wide = file.scene.clone();
+        wide.camera.fov_y_deg += off;
+        let d = found(&runs(&wide));
+        let fov = d
+            .first()
+            .filter(|f| f.starts_with("the camera:"))
+            .and_then(|f| f.split("field of view of ").nth(1))
+            .and_then(|f| f.split('°').next())
+            .and_then(|f| f.parse::<f64>().ok());
+        assert!(
+            fov.is_some_and(|f| (f - 40.0 - off).abs() <= 0.15),
+            "{off}: {fov:?}: {d:#?}"
+        );
+    }
+
+    // CIE XYZ saved as R, G, B.
+    let d = found(&estimate(&clean_images, &|_, p| {
+        raylemma::spectral::cie::linear_srgb_to_xyz(p)
+    }));
     assert!(
-        fov.is_some_and(|f| (f - 40.5).abs() <= 0.15),
-        "{fov:?}: {d:#?}"
+        d.first()
+            .is_some_and(|f| f.starts_with("CIE XYZ saved as R, G, B") && f.contains("AGREES")),
+        "{d:#?}"
     );
+    assert_eq!(agrees(&d), 1, "{d:#?}");
+
+    // The image shifted by one pixel: down (a flipped y range), then left.
+    for ((dx, dy), words) in [((0, 1), "one pixel down"), ((-1, 0), "one pixel left")] {
+        let shifted: Vec<Vec<glam::DVec3>> = clean_images
+            .iter()
+            .map(|m| {
+                (0..64 * 64)
+                    .map(|i| {
+                        let (x, y) = (i % 64 - dx, i / 64 - dy);
+                        m[(y.clamp(0, 63) * 64 + x.clamp(0, 63)) as usize]
+                    })
+                    .collect()
+            })
+            .collect();
+        let d = found(&estimate(&shifted, &|_, p| p));
+        assert!(
+            d.first().is_some_and(
+                |f| f.starts_with(&format!("the image is shifted by {words}:"))
+                    && f.contains("AGREES")
+            ),
+            "{d:#?}"
+        );
+        assert_eq!(agrees(&d), 1, "{d:#?}");
+    }
 
     // Another depth: the closed box (rung 5) rendered at max_depth 1 where the reference is
     // at depth 2, with the references at 1 and 3 beside it.
