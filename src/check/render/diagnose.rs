@@ -163,12 +163,20 @@ pub fn diagnose(
     }
     found.sort_by(|a, b| b.0.total_cmp(&a.0));
     let explained = !found.is_empty();
+    let uniform = found.iter().any(|f| f.1.starts_with("a uniform factor"));
     let mut lines: Vec<String> = found.into_iter().map(|(_, s)| s).collect();
+    if uniform && context.scene.settings.max_depth == 1 && context.scene.lights.len() == 1 {
+        lines.push(UNIFORM_ON_DIRECT_LIGHT.to_string());
+    }
     if !explained {
         lines.extend(by_material(reference, candidate, context, k, se));
     }
     lines
 }
+
+/// What a uniform factor leaves open on a rung of direct light from one light (rungs 1
+/// and 2), and the rungs that tell the causes apart.
+pub const UNIFORM_ON_DIRECT_LIGHT: &str = "this rung cannot tell these causes of a uniform factor apart: the light's power, the BRDF's 1/π and the light's pdf scale its image alike. Rung 2 (a sphere light) keeps a factor of the power or of the 1/π, not one of the quad light's pdf; rung 3 (two lights of different power) adds the choice of a light; rung 6, where the light is seen in a mirror with no BRDF and no light sampling, keeps only a factor of the power";
 
 /// The excess of the blocks' `Σ z²` over its expectation (one per block and channel), at
 /// least one.

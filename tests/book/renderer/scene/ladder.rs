@@ -95,7 +95,8 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
 /// The conformance card's diagnosis (`check::render::diagnose`) against the committed
 /// references, on four runs of 64 spp of raylemma's own render with one mistake each:
 /// - rung 1 with its light 1 % too bright: a uniform factor within 0.002 of 1.01, and no
-///   other hypothesis that explains it;
+///   other hypothesis that explains it, and the causes rung 1 cannot tell apart and the
+///   rungs that do;
 /// - the same images gamma-encoded: gamma encoding, and no other;
 /// - rung 1 seen with a field of view 0.5° wider, and 2° and 3° wider and narrower: the
 ///   camera, at a field of view within 0.15° of the one rendered (the magnification is
@@ -176,6 +177,12 @@ fn the_card_s_diagnosis_names_each_mistake() {
     // Only one hypothesis explains it.
     let agrees = |d: &[String]| d.iter().filter(|f| f.contains("AGREES")).count();
     assert_eq!(agrees(&d), 1, "{d:#?}");
+    // And the card says which causes of it rung 1 cannot tell apart.
+    assert!(
+        d.iter()
+            .any(|f| f == raylemma::check::render::diagnose::UNIFORM_ON_DIRECT_LIGHT),
+        "{d:#?}"
+    );
 
     let encode = |x: f64| {
         let a = x.abs();
