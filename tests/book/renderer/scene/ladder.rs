@@ -107,6 +107,7 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
 ///   repeated): the shift, and no other;
 /// - the closed box of rung 5 rendered at depth 1, against its depth-2 reference with the
 ///   depth-1 and depth-3 references beside it: the depth, at depth 1;
+/// - rung 7 with its glass of index 1.45: per material, and the index fitted as 1.45;
 /// - rung 1 4 % too bright in its middle rows only (a local mistake, the planted twin of
 ///   every hypothesis): no hypothesis explains it.
 ///
@@ -284,6 +285,31 @@ fn the_card_s_diagnosis_names_each_mistake() {
             .is_some_and(|f| f.starts_with("the maximum depth:")
                 && f.contains("at depth 1 ")
                 && f.contains("AGREES")),
+        "{d:#?}"
+    );
+
+    // The glass of rung 7 with index 1.45 where the scene has 1.5: the index is fitted.
+    let glass_file = SceneFile::load(&dir.join("07-glass.toml")).unwrap();
+    let glass_materials: Vec<String> = glass_file
+        .materials
+        .iter()
+        .map(|(n, _)| n.clone())
+        .collect();
+    let mut thin = glass_file.scene.clone();
+    for m in &mut thin.materials {
+        if let render::scene::Material::Dielectric { ior } = m {
+            *ior = render::scene::Ior::Constant(1.45);
+        }
+    }
+    let glass_context = Context {
+        scene: &glass_file.scene,
+        materials: &glass_materials,
+        other_depths: Vec::new(),
+    };
+    let d = diagnose(&load("07-glass"), &runs(&thin), level, &glass_context);
+    assert!(
+        d.iter()
+            .any(|f| f.contains("as if its index were 1.45, not 1.5")),
         "{d:#?}"
     );
 
