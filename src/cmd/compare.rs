@@ -7,6 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use clap::Args;
+use raylemma::check::render::diagnose;
 use raylemma::render::compare::{self, Estimate};
 use raylemma::render::image::{ExrContents, Image, ImageError};
 
@@ -162,39 +163,6 @@ fn xyz_noted(mut estimate: Estimate, from_xyz: bool) -> Estimate {
     estimate
 }
 
-/// A hint for a candidate that differs from the reference in colour the way one does
-/// whose CIE XYZ values are written as R, G, B (a spectral film's output under the wrong
-/// names), or, if it was read from X, Y, Z, whose channels were sRGB all along: the whole
-/// image's mean colour, put through the XYZ-to-sRGB matrix (or its inverse), lands within
-/// 5 % of the reference's and at least four times closer than as read.
-fn xyz_hint(reference: &Image, candidate: &Image, from_xyz: bool) -> Option<String> {
-    let mean = |i: &Image| i.mean.iter().copied().sum::<glam::DVec3>() / i.mean.len() as f64;
-    let (r, c) = (mean(reference), mean(candidate));
-    let m = raylemma::spectral::cie::xyz_to_linear_srgb_matrix();
-    let (swapped, question) = if from_xyz {
-        (
-            m.inverse() * c,
-            "once its X, Y, Z are taken as linear sRGB: are they sRGB under the names X, Y, Z?",
-        )
-    } else {
-        (
-            m * c,
-            "once its R, G, B are taken as CIE XYZ and converted to linear sRGB: are they XYZ \
-             under the names R, G, B? compare reads R, G, B as linear sRGB, as raylemma writes \
-             them, and X, Y, Z as CIE XYZ, as Mitsuba's spectral films write them",
-        )
-    };
-    let off = |x: glam::DVec3| (x - r).length() / r.length();
-    let (as_read, if_swapped) = (off(c), off(swapped));
-    (if_swapped < 0.05 && if_swapped * 4.0 < as_read).then(|| {
-        format!(
-            "hint: the candidate's mean colour is {:.1} % from the reference's, but {:.1} % {question}",
-            100.0 * as_read,
-            100.0 * if_swapped,
-        )
-    })
-}
-
 /// Candidates rendered with the same seed (a renderer's default, often) are the same
 /// image: their spread is zero, and every pixel that differs from the reference at all
 /// would fail. Two identical candidates are refused, naming them.
@@ -245,9 +213,9 @@ fn compare_files(args: &CompareArgs) -> Result<bool, ImageError> {
     let names = [args.reference.display().to_string(), name];
     print!("{}", c.report([&names[0], &names[1]]));
     if !c.agree()
-        && let Some(hint) = xyz_hint(&reference.image, &candidate.image, from_xyz)
+        && let Some(hint) = diagnose::xyz_swapped(&reference.image, &candidate.image, from_xyz)
     {
-        println!("{hint}");
+        println!("hint: {hint}");
     }
     if let Some(path) = &args.diff {
         let Image { width, height, .. } = reference.image;

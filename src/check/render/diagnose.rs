@@ -14,20 +14,25 @@
 //!   of a BRDF, a normalisation), or one factor per channel (the colour conversion);
 //! * a gamma-encoded image: the candidate through the sRGB decoding is compared;
 //! * a field of view: the reference magnified about the image's centre by `m`
-//!   (bilinear), the best `m` from 0.97 to 1.03 to 0.001, is compared; the candidate's
+//!   (bilinear), the best `m` from 0.9 to 1.1 to 0.001, is compared; the candidate's
 //!   vertical field of view is then `2 atan(tan(fov/2) / m)`;
+//! * a shift: the reference moved by whole pixels, `(dx, dy)` in `{-2, ..., 2}²`, the best
+//!   of them compared (pixel centres off by one, or the raster's y range flipped);
+//! * CIE XYZ saved as R, G, B ([`xyz_swapped`]): the candidate through the XYZ-to-sRGB
+//!   matrix is compared;
 //! * another maximum depth: the candidate against the rung's references at its other
 //!   depths;
 //! * and, as a pointer rather than a test, the factor `Σ c / Σ r` over the pixels where
 //!   the camera sees each material directly, with its standard error, for the materials
 //!   that differ by more than four of them.
 
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 
 use crate::render::camera::Camera;
 use crate::render::compare::{Comparison, Estimate, compare};
 use crate::render::image::{Image, ImageError};
 use crate::render::scene::{Scene, Surface};
+use crate::spectral::cie::xyz_to_linear_srgb_matrix;
 
 /// The fraction of the failing tests, and of the excess of the blocks' `Σ z²`, a
 /// hypothesis must remove to be reported as explaining most of a difference.
@@ -91,8 +96,24 @@ pub fn diagnose(
             "a uniform factor: the candidate is {k:.4} ± {se:.4} times the reference in all channels (a light's power, the 1/π of a BRDF, a normalisation)"
         ),
     );
+    // XYZ saved as R, G, B: fixed by the matrix, no factor fitted; when it explains the
+    // difference, the three fitted factors per channel are not tried (on a grey image they
+    // fit it too).
+    let mut xyz_agrees = false;
+    if xyz_swapped(&reference.image, &candidate.image, false).is_some() {
+        let undone = compare(
+            reference,
+            &transformed(candidate, xyz_to_linear_srgb_matrix()),
+            level,
+        );
+        xyz_agrees = undone.as_ref().is_ok_and(Comparison::agree);
+        judge(
+            undone,
+            "CIE XYZ saved as R, G, B: the candidate's channels, taken as X, Y, Z and converted to linear sRGB (write linear sRGB, or name the channels X, Y, Z)".to_string(),
+        );
+    }
     let per = DVec3::new(channel[0], channel[1], channel[2]);
-    if (per - DVec3::splat(k)).abs().max_element() > 3.0 * se {
+    if !xyz_agrees && (per - DVec3::splat(k)).abs().max_element() > 3.0 * se {
         judge(
             compare(reference, &scaled(candidate, DVec3::ONE / per), level),
             format!(
@@ -115,6 +136,22 @@ pub fn diagnose(
             ),
         );
     }
+    if let Some(((dx, dy), c)) = best_shift(reference, candidate, level) {
+        judge(
+            Ok(c),
+            format!(
+                "{}: the pixel centres (half a pixel, or a pixel, off) or the raster's {} range",
+                shift_words(dx, dy),
+                if dx != 0 && dy != 0 {
+                    "x and y"
+                } else if dx != 0 {
+                    "x"
+                } else {
+                    "y"
+                }
+            ),
+        );
+    }
     for (d, r) in &context.other_depths {
         let name = d.map_or("unbounded depth".to_string(), |d| format!("depth {d}"));
         judge(
@@ -126,12 +163,23 @@ pub fn diagnose(
     }
     found.sort_by(|a, b| b.0.total_cmp(&a.0));
     let explained = !found.is_empty();
+    let uniform = found.iter().any(|f| f.1.starts_with("a uniform factor"));
     let mut lines: Vec<String> = found.into_iter().map(|(_, s)| s).collect();
+    if uniform && context.scene.settings.max_depth == 1 && context.scene.lights.len() == 1 {
+        lines.push(UNIFORM_ON_DIRECT_LIGHT.to_string());
+    }
     if !explained {
-        lines.extend(by_material(reference, candidate, context, k, se));
+        let materials = by_material(reference, candidate, context, k, se);
+        let fit = index_fit(reference, candidate, level, context, &materials);
+        lines.extend(materials);
+        lines.extend(fit);
     }
     lines
 }
+
+/// What a uniform factor leaves open on a rung of direct light from one light (rungs 1
+/// and 2), and the rungs that tell the causes apart.
+pub const UNIFORM_ON_DIRECT_LIGHT: &str = "this rung cannot tell these causes of a uniform factor apart: the light's power, the BRDF's 1/π and the light's pdf scale its image alike. Rung 2 (a sphere light) keeps a factor of the power or of the 1/π, not one of the quad light's pdf; rung 3 (two lights of different power) adds the choice of a light; rung 6, where the light is seen in a mirror with no BRDF and no light sampling, keeps only a factor of the power";
 
 /// The excess of the blocks' `Σ z²` over its expectation (one per block and channel), at
 /// least one.
@@ -174,6 +222,56 @@ fn finite(v: DVec3) -> DVec3 {
         if v.y.is_finite() { v.y } else { 0.0 },
         if v.z.is_finite() { v.z } else { 0.0 },
     )
+}
+
+/// A candidate that differs from the reference in colour the way one does whose CIE XYZ
+/// values are written as R, G, B (a spectral film's output under the wrong names), or, if
+/// it was read from X, Y, Z (`from_xyz`), whose channels were sRGB all along: the whole
+/// image's mean colour, put through the XYZ-to-sRGB matrix (or its inverse), lands within
+/// 5 % of the reference's and at least four times closer than as read. The sentence says
+/// so; `raylemma compare` prints it as a hint, the card as a finding.
+pub fn xyz_swapped(reference: &Image, candidate: &Image, from_xyz: bool) -> Option<String> {
+    let mean = |i: &Image| i.mean.iter().copied().sum::<DVec3>() / i.mean.len() as f64;
+    let (r, c) = (mean(reference), mean(candidate));
+    let m = xyz_to_linear_srgb_matrix();
+    let (swapped, question) = if from_xyz {
+        (
+            m.inverse() * c,
+            "once its X, Y, Z are taken as linear sRGB: are they sRGB under the names X, Y, Z?",
+        )
+    } else {
+        (
+            m * c,
+            "once its R, G, B are taken as CIE XYZ and converted to linear sRGB: are they XYZ \
+             under the names R, G, B? compare reads R, G, B as linear sRGB, as raylemma writes \
+             them, and X, Y, Z as CIE XYZ, as Mitsuba's spectral films write them",
+        )
+    };
+    let off = |x: DVec3| (x - r).length() / r.length();
+    let (as_read, if_swapped) = (off(c), off(swapped));
+    (if_swapped < 0.05 && if_swapped * 4.0 < as_read).then(|| {
+        format!(
+            "the candidate's mean colour is {:.1} % from the reference's, but {:.1} % {question}",
+            100.0 * as_read,
+            100.0 * if_swapped,
+        )
+    })
+}
+
+/// The estimate with every mean put through the matrix `m`, its variance through the
+/// matrix of `m`'s squared entries (the channels taken as independent).
+fn transformed(e: &Estimate, m: DMat3) -> Estimate {
+    let sq = DMat3::from_cols(
+        m.x_axis * m.x_axis,
+        m.y_axis * m.y_axis,
+        m.z_axis * m.z_axis,
+    );
+    let mut out = e.clone();
+    for (mean, v) in out.image.mean.iter_mut().zip(out.image.var.iter_mut()) {
+        *mean = m * *mean;
+        *v = sq * *v;
+    }
+    out
 }
 
 /// The estimate with every mean multiplied by `s` (its variance by `s²`).
@@ -249,33 +347,181 @@ pub(crate) fn magnified(image: &Image, m: f64) -> Image {
     out
 }
 
-/// The magnification of the reference, from 0.97 to 1.03 (steps of 0.005, then of 0.001
-/// about the best), that leaves the least excess of the blocks' `Σ z²` against the candidate, with that comparison; `None` when 1 is best.
+/// The magnification of the reference, from 0.9 to 1.1 (steps of 0.005, then of 0.001
+/// about the best), that leaves the least excess of the blocks' `Σ z²` against the
+/// candidate away from the border (a twentieth of the image and a pixel: there the
+/// candidate's own values stand in), with that comparison; `None` when 1 is best. On rung 1 (40°) that range is a field of view from about
+/// 37° to 43.6°.
 fn best_magnification(
     reference: &Estimate,
     candidate: &Estimate,
     level: f64,
 ) -> Option<(f64, Comparison)> {
+    // Judged away from the border, where a reference made smaller (a candidate's wider
+    // view) would need what lies beyond its frame.
+    let border =
+        (0.05 * f64::from(reference.image.width.min(reference.image.height))).ceil() as u32 + 1;
     let best_of = |ms: &mut dyn Iterator<Item = f64>| {
-        let mut best: Option<(f64, f64, Comparison)> = None;
+        let mut best: Option<(f64, f64)> = None;
         for m in ms {
-            let r = Estimate {
+            let mut r = Estimate {
                 image: magnified(&reference.image, m),
                 ..reference.clone()
             };
+            interior(&mut r.image, &candidate.image, border);
             if let Ok(c) = compare(&r, candidate, level) {
                 let e = excess(&c);
-                if best.as_ref().is_none_or(|b| e < b.1) {
-                    best = Some((m, e, c));
+                if best.is_none_or(|b| e < b.1) {
+                    best = Some((m, e));
                 }
             }
         }
         best
     };
     // Steps of 0.005, then steps of 0.001 about the best of them.
-    let coarse = best_of(&mut (-6..=6).map(|i| 1.0 + f64::from(i) * 5e-3))?.0;
-    let best = best_of(&mut (-4..=4).map(|i| coarse + f64::from(i) * 1e-3));
-    best.filter(|b| b.0 != 1.0).map(|(m, _, c)| (m, c))
+    let coarse = best_of(&mut (-20..=20).map(|i| 1.0 + f64::from(i) * 5e-3))?.0;
+    let (m, _) = best_of(&mut (-4..=4).map(|i| coarse + f64::from(i) * 1e-3))?;
+    if m == 1.0 {
+        return None;
+    }
+    let mut r = Estimate {
+        image: magnified(&reference.image, m),
+        ..reference.clone()
+    };
+    interior(&mut r.image, &candidate.image, border);
+    compare(&r, candidate, level).ok().map(|c| (m, c))
+}
+
+/// `r` with the means of the pixels within `border` of the edge taken from `c`: they
+/// agree there, whatever lies beyond `r`'s frame.
+fn interior(r: &mut Image, c: &Image, border: u32) {
+    let (w, h) = (r.width, r.height);
+    for y in 0..h {
+        for x in 0..w {
+            if x < border || y < border || x + border >= w || y + border >= h {
+                let i = (y * w + x) as usize;
+                r.mean[i] = c.mean[i];
+            }
+        }
+    }
+}
+
+/// The image moved by `(dx, dy)` pixels (`y` down): the value at pixel `(x, y)` is the
+/// original's at `(x - dx, y - dy)`, edge pixels repeated beyond the border.
+pub(crate) fn shifted(image: &Image, dx: i32, dy: i32) -> Image {
+    let (w, h) = (image.width as i32, image.height as i32);
+    let at = |x: i32, y: i32| ((y - dy).clamp(0, h - 1) * w + (x - dx).clamp(0, w - 1)) as usize;
+    let mut out = image.clone();
+    for y in 0..h {
+        for x in 0..w {
+            out.mean[(y * w + x) as usize] = image.mean[at(x, y)];
+            out.var[(y * w + x) as usize] = image.var[at(x, y)];
+        }
+    }
+    out
+}
+
+/// The shifts tried: every `(dx, dy)` in `{-2, ..., 2}²` but `(0, 0)`.
+const SHIFTS: i32 = 2;
+
+/// The shift of the reference by whole pixels, `(dx, dy)` in `{-2, ..., 2}²` but
+/// `(0, 0)`, that leaves the least excess of the blocks' `Σ z²` against the candidate,
+/// with that comparison; `None` when it leaves more than no shift does.
+fn best_shift(
+    reference: &Estimate,
+    candidate: &Estimate,
+    level: f64,
+) -> Option<((i32, i32), Comparison)> {
+    let base = excess(&compare(reference, candidate, level).ok()?);
+    let mut best: Option<((i32, i32), f64, Comparison)> = None;
+    for dy in -SHIFTS..=SHIFTS {
+        for dx in -SHIFTS..=SHIFTS {
+            if (dx, dy) == (0, 0) {
+                continue;
+            }
+            let r = Estimate {
+                image: shifted(&reference.image, dx, dy),
+                ..reference.clone()
+            };
+            if let Ok(c) = compare(&r, candidate, level) {
+                let e = excess(&c);
+                if best.as_ref().is_none_or(|b| e < b.1) {
+                    best = Some(((dx, dy), e, c));
+                }
+            }
+        }
+    }
+    best.filter(|b| b.1 < base).map(|(d, _, c)| (d, c))
+}
+
+/// "the image is shifted by one pixel down", and the like (`y` down).
+fn shift_words(dx: i32, dy: i32) -> String {
+    let part = |d: i32, neg: &str, pos: &str| {
+        let n = ["", "one pixel", "two pixels"][d.unsigned_abs().min(2) as usize];
+        format!("{n} {}", if d < 0 { neg } else { pos })
+    };
+    let parts: Vec<String> = [(dx, "left", "right"), (dy, "up", "down")]
+        .into_iter()
+        .filter(|p| p.0 != 0)
+        .map(|(d, neg, pos)| part(d, neg, pos))
+        .collect();
+    format!("the image is shifted by {}", parts.join(" and "))
+}
+
+/// When the per-material step names a dielectric of one index: the index, of the scene's
+/// and four near it (±0.05, ±0.1), at which raylemma's own render (256 samples a pixel)
+/// leaves the least excess of the blocks' `Σ z²` against the candidate, if not the
+/// scene's.
+fn index_fit(
+    reference: &Estimate,
+    candidate: &Estimate,
+    level: f64,
+    context: &Context,
+    materials: &[String],
+) -> Option<String> {
+    use crate::render::scene::{Ior, Material};
+    let scene = context.scene;
+    let (m, n0) = scene
+        .materials
+        .iter()
+        .enumerate()
+        .find_map(|(i, m)| match m {
+            Material::Dielectric {
+                ior: Ior::Constant(n),
+            } => {
+                let name = format!("material {:?}", context.materials.get(i)?);
+                materials
+                    .iter()
+                    .any(|l| l.starts_with(&format!("where the camera sees {name}")))
+                    .then_some((i, *n))
+            }
+            _ => None,
+        })?;
+    let size = (reference.image.width, reference.image.height);
+    let mut best: Option<(f64, f64)> = None;
+    for dn in [-0.1, -0.05, 0.0, 0.05, 0.1] {
+        let mut s = scene.clone();
+        s.materials[m] = Material::Dielectric {
+            ior: Ior::Constant(n0 + dn),
+        };
+        let image = crate::render::render(&s, 256, crate::render::Progress::Silent);
+        if (image.width, image.height) != size {
+            return None;
+        }
+        if let Ok(c) = compare(&Estimate::from_variance(image), candidate, level) {
+            let e = excess(&c);
+            if best.is_none_or(|b| e < b.1) {
+                best = Some((n0 + dn, e));
+            }
+        }
+    }
+    let (n, _) = best.filter(|b| b.0 != n0)?;
+    Some(format!(
+        "the material {:?} behaves as if its index were {n:.2}, not {n0} (raylemma's render at indices {:.2} to {:.2} nearest the candidate)",
+        context.materials.get(m).map_or("?", String::as_str),
+        n0 - 0.1,
+        n0 + 0.1
+    ))
 }
 
 /// The material, light or background the camera sees through each pixel's centre.

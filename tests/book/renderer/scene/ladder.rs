@@ -95,12 +95,19 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
 /// The conformance card's diagnosis (`check::render::diagnose`) against the committed
 /// references, on four runs of 64 spp of raylemma's own render with one mistake each:
 /// - rung 1 with its light 1 % too bright: a uniform factor within 0.002 of 1.01, and no
-///   other hypothesis that explains it;
+///   other hypothesis that explains it, and the causes rung 1 cannot tell apart and the
+///   rungs that do;
 /// - the same images gamma-encoded: gamma encoding, and no other;
-/// - rung 1 seen with a field of view 0.5° wider: the camera, at a field of view within
-///   0.15° of 40.5° (the magnification is found to 0.001, about 0.04° here);
+/// - rung 1 seen with a field of view 0.5° wider, and 2° and 3° wider and narrower: the
+///   camera, at a field of view within 0.15° of the one rendered (the magnification is
+///   found to 0.001, about 0.04° here);
+/// - the same images with their linear sRGB put through the sRGB-to-XYZ matrix (XYZ saved
+///   as R, G, B): XYZ saved as R, G, B, and no other;
+/// - the same images shifted by one pixel down, and by one pixel left (edge pixels
+///   repeated): the shift, and no other;
 /// - the closed box of rung 5 rendered at depth 1, against its depth-2 reference with the
 ///   depth-1 and depth-3 references beside it: the depth, at depth 1;
+/// - rung 7 with its glass of index 1.45: per material, and the index fitted as 1.45;
 /// - rung 1 4 % too bright in its middle rows only (a local mistake, the planted twin of
 ///   every hypothesis): no hypothesis explains it.
 ///
@@ -171,6 +178,12 @@ fn the_card_s_diagnosis_names_each_mistake() {
     // Only one hypothesis explains it.
     let agrees = |d: &[String]| d.iter().filter(|f| f.contains("AGREES")).count();
     assert_eq!(agrees(&d), 1, "{d:#?}");
+    // And the card says which causes of it rung 1 cannot tell apart.
+    assert!(
+        d.iter()
+            .any(|f| f == raylemma::check::render::diagnose::UNIFORM_ON_DIRECT_LIGHT),
+        "{d:#?}"
+    );
 
     let encode = |x: f64| {
         let a = x.abs();
@@ -191,19 +204,57 @@ fn the_card_s_diagnosis_names_each_mistake() {
     );
     assert_eq!(agrees(&d), 1, "{d:#?}");
 
-    let mut wide = file.scene.clone();
-    wide.camera.fov_y_deg += 0.5;
-    let d = found(&runs(&wide));
-    let fov = d
-        .first()
-        .filter(|f| f.starts_with("the camera:"))
-        .and_then(|f| f.split("field of view of ").nth(1))
-        .and_then(|f| f.split('°').next())
-        .and_then(|f| f.parse::<f64>().ok());
+    // The field of view off by 0.5°, by ±2° (a common slip) and by ±3°.
+    for off in [0.5, 2.0, -2.0, 3.0, -3.0] {
+        let mut wide = file.scene.clone();
+        wide.camera.fov_y_deg += off;
+        let d = found(&runs(&wide));
+        let fov = d
+            .first()
+            .filter(|f| f.starts_with("the camera:"))
+            .and_then(|f| f.split("field of view of ").nth(1))
+            .and_then(|f| f.split('°').next())
+            .and_then(|f| f.parse::<f64>().ok());
+        assert!(
+            fov.is_some_and(|f| (f - 40.0 - off).abs() <= 0.15),
+            "{off}: {fov:?}: {d:#?}"
+        );
+    }
+
+    // CIE XYZ saved as R, G, B.
+    let d = found(&estimate(&clean_images, &|_, p| {
+        raylemma::spectral::cie::linear_srgb_to_xyz(p)
+    }));
     assert!(
-        fov.is_some_and(|f| (f - 40.5).abs() <= 0.15),
-        "{fov:?}: {d:#?}"
+        d.first()
+            .is_some_and(|f| f.starts_with("CIE XYZ saved as R, G, B") && f.contains("AGREES")),
+        "{d:#?}"
     );
+    assert_eq!(agrees(&d), 1, "{d:#?}");
+
+    // The image shifted by one pixel: down (a flipped y range), then left.
+    for ((dx, dy), words) in [((0, 1), "one pixel down"), ((-1, 0), "one pixel left")] {
+        let shifted: Vec<Vec<glam::DVec3>> = clean_images
+            .iter()
+            .map(|m| {
+                (0..64 * 64)
+                    .map(|i| {
+                        let (x, y) = (i % 64 - dx, i / 64 - dy);
+                        m[(y.clamp(0, 63) * 64 + x.clamp(0, 63)) as usize]
+                    })
+                    .collect()
+            })
+            .collect();
+        let d = found(&estimate(&shifted, &|_, p| p));
+        assert!(
+            d.first().is_some_and(
+                |f| f.starts_with(&format!("the image is shifted by {words}:"))
+                    && f.contains("AGREES")
+            ),
+            "{d:#?}"
+        );
+        assert_eq!(agrees(&d), 1, "{d:#?}");
+    }
 
     // Another depth: the closed box (rung 5) rendered at max_depth 1 where the reference is
     // at depth 2, with the references at 1 and 3 beside it.
@@ -234,6 +285,31 @@ fn the_card_s_diagnosis_names_each_mistake() {
             .is_some_and(|f| f.starts_with("the maximum depth:")
                 && f.contains("at depth 1 ")
                 && f.contains("AGREES")),
+        "{d:#?}"
+    );
+
+    // The glass of rung 7 with index 1.45 where the scene has 1.5: the index is fitted.
+    let glass_file = SceneFile::load(&dir.join("07-glass.toml")).unwrap();
+    let glass_materials: Vec<String> = glass_file
+        .materials
+        .iter()
+        .map(|(n, _)| n.clone())
+        .collect();
+    let mut thin = glass_file.scene.clone();
+    for m in &mut thin.materials {
+        if let render::scene::Material::Dielectric { ior } = m {
+            *ior = render::scene::Ior::Constant(1.45);
+        }
+    }
+    let glass_context = Context {
+        scene: &glass_file.scene,
+        materials: &glass_materials,
+        other_depths: Vec::new(),
+    };
+    let d = diagnose(&load("07-glass"), &runs(&thin), level, &glass_context);
+    assert!(
+        d.iter()
+            .any(|f| f.contains("as if its index were 1.45, not 1.5")),
         "{d:#?}"
     );
 
