@@ -398,6 +398,7 @@ fn one(args: &ConformanceArgs, suite: &Suite, rung: Rung, depth: Option<u32>, le
                 Vec::new()
             } else {
                 let context = diagnose::Context {
+                    rung: rung.number,
                     scene: &file.scene,
                     materials: &file
                         .materials

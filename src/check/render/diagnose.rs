@@ -40,6 +40,9 @@ pub(crate) const MOST: f64 = 0.8;
 
 /// What the card is given besides the two images.
 pub struct Context<'a> {
+    /// The rung's number on the ladder (`check::render::ladder::LADDER`), 0 for a scene of
+    /// no rung.
+    pub rung: u32,
     /// The rung's scene at the compared depth (its camera, its materials' names).
     pub scene: &'a Scene,
     /// The materials' names, in the order of [`Scene::materials`].
@@ -165,7 +168,7 @@ pub fn diagnose(
     let explained = !found.is_empty();
     let uniform = found.iter().any(|f| f.1.starts_with("a uniform factor"));
     let mut lines: Vec<String> = found.into_iter().map(|(_, s)| s).collect();
-    if uniform && context.scene.settings.max_depth == 1 && context.scene.lights.len() == 1 {
+    if uniform && context.rung == 1 {
         lines.push(UNIFORM_ON_DIRECT_LIGHT.to_string());
     }
     if !explained {
@@ -177,8 +180,8 @@ pub fn diagnose(
     lines
 }
 
-/// What a uniform factor leaves open on a rung of direct light from one light (rungs 1
-/// and 2), and the rungs that tell the causes apart.
+/// What a uniform factor leaves open on rung 1 (one quad light over a Lambertian floor,
+/// direct light only), and the rungs that tell the causes apart.
 pub const UNIFORM_ON_DIRECT_LIGHT: &str = "this rung cannot tell these causes of a uniform factor apart: the light's power, the BRDF's 1/π and the light's pdf scale its image alike. Rung 2 (a sphere light) keeps a factor of the power or of the 1/π, not one of the quad light's pdf; rung 3 (two lights of different power) adds the choice of a light; rung 6, where the light is seen in a mirror with no BRDF and no light sampling, keeps only a factor of the power";
 
 /// The excess of the blocks' `Σ z²` over its expectation (one per block and channel), at

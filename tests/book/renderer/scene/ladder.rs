@@ -152,6 +152,7 @@ fn the_card_s_diagnosis_names_each_mistake() {
     let clean_images = render_runs(&file.scene);
     let materials: Vec<String> = file.materials.iter().map(|(n, _)| n.clone()).collect();
     let context = Context {
+        rung: 1,
         scene: &file.scene,
         materials: &materials,
         other_depths: Vec::new(),
@@ -267,6 +268,7 @@ fn the_card_s_diagnosis_names_each_mistake() {
     let box_materials: Vec<String> = box_file.materials.iter().map(|(n, _)| n.clone()).collect();
     let at_two = box_depth(2);
     let box_context = Context {
+        rung: 5,
         scene: &at_two,
         materials: &box_materials,
         other_depths: vec![
@@ -302,6 +304,7 @@ fn the_card_s_diagnosis_names_each_mistake() {
         }
     }
     let glass_context = Context {
+        rung: 7,
         scene: &glass_file.scene,
         materials: &glass_materials,
         other_depths: Vec::new(),
