@@ -2,8 +2,9 @@
 //!
 //! To estimate `I = int f(x) dx`, draw `X_i` from a density `q` and average `f(X_i) / q(X_i)`.
 //! The estimator is unbiased when `q > 0` wherever `f != 0` (and, for an `f` of one sign,
-//! only then: it misses the integral of `f` over the set where `q = 0`); its variance is
-//! `int f^2 / q dx - I^2`, zero when `q` is proportional to `|f|` (and `f` has one sign).
+//! only then, up to a set of zero length: it misses the integral of `f` over the set where
+//! `q = 0`); its variance is `int f^2 / q dx - I^2`, zero when `q` is proportional to `|f|`
+//! (and `f` has one sign).
 
 use crate::rng::{self, Rng};
 use crate::stats::ttest::Summary;
