@@ -470,7 +470,8 @@ pub struct PiecewiseLinear1D {
 ///
 /// Written as `t = xi (a + b) / (a + sqrt((1 - xi) a^2 + xi b^2))`, the root of the
 /// quadratic that involves no cancellation (every term is non-negative), is exact for
-/// `a = b` (`t = xi`) and for `a = 0` (`t = sqrt(xi)`), and needs no special case for a
+/// `a = b` (`t = xi`, bit for bit), gives `sqrt(xi)` to one ulp for `a = 0` (`xi / sqrt(xi)`
+/// rounds twice: 0.7071067811865475 at `xi = 0.5`), and needs no special case for a
 /// constant segment. `a` and `b` are first scaled by their maximum so that their squares
 /// neither overflow nor underflow.
 pub fn segment_inverse(a: f64, b: f64, xi: f64) -> f64 {
