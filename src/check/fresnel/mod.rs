@@ -91,9 +91,9 @@ pub(crate) fn independent_transmittance(cos_i: f64, n1: f64, n2: f64) -> Option<
 /// cosine on the less dense side (computing `cos_t` is ill-conditioned near the critical
 /// angle): orders of operations, `powi(5)` or products agree far within it; the fourth
 /// power differs by up to about `(1 - R0) / 4`, some `1e14` of these units.
-pub(crate) const SCHLICK_BOUND: f64 = 64.0;
+pub const SCHLICK_BOUND: f64 = 64.0;
 /// Bound of [`schlick`]'s `exponent` claim: the exponent read from the curve, absolute.
-pub(crate) const EXPONENT_BOUND: f64 = 1e-6;
+pub const EXPONENT_BOUND: f64 = 1e-6;
 
 /// The claims that tell Schlick's approximation from another curve with the same ends
 /// (the chapter *Fresnel and Schlick*): `R0 + (1 - R0)(1 - cos)^5` with `cos` on the less
