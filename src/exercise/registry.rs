@@ -113,10 +113,26 @@ pub const LATER: &[Later] = &[
         command: "cargo test --test book checking::external",
         needs: &["cosine_pdf", "refract", "amplitudes"],
     },
+    // The command line's tests run `raylemma render` (the conformance card renders the
+    // ladder), so they need the renderer's exercises too.
     Later {
         name: "command line",
         command: "cargo test --test book cli",
-        needs: &["hemisphere_flip", "srgb_encode", "Sellmeier::index"],
+        needs: &[
+            "intersect_stable",
+            "disc_concentric",
+            "cosine_malley",
+            "reflect",
+            "refract",
+            "amplitudes",
+            "roulette",
+            "area_to_solid_angle",
+            "Sellmeier::index",
+            "Piecewise1D::sample",
+            "hero_uniform",
+            "srgb_encode",
+            "hemisphere_flip",
+        ],
     },
     Later {
         name: "coursework chapter",
@@ -128,6 +144,7 @@ pub const LATER: &[Later] = &[
             "Piecewise1D::sample",
             "reflect",
             "amplitudes",
+            "schlick",
             "narrow_lobe_brdf",
             "Sellmeier::index",
             "airy_r",
