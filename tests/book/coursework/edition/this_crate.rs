@@ -67,7 +67,12 @@ fn every_marker_of_this_crate_is_well_formed_and_has_its_checks() {
     }
     assert_eq!(
         registry::unlocks("disc_concentric"),
-        ["cosine_malley", "renderer", "cosine chapter", "command line"]
+        [
+            "cosine_malley",
+            "renderer",
+            "cosine chapter",
+            "command line"
+        ]
     );
     // Roulette's tests draw their bounces with hemisphere_flip (issue: the card did not say).
     assert!(registry::unlocks("hemisphere_flip").contains(&"roulette chapter"));
