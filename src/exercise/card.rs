@@ -18,6 +18,7 @@ use std::time::Duration;
 use serde::{Deserialize, Serialize};
 
 use super::marker::Marker;
+use super::mistakes;
 use super::registry::{self, LATER};
 use super::section::{self, Section};
 use crate::check::Verdict;
@@ -129,6 +130,12 @@ pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) ->
         crate::check::pictures::with_failure_dir(dir, || judge(&owned, &check))
     });
     let status = match judged {
+        Ok(Status::Failing(mut lines)) => {
+            if let Some(line) = recognised(name) {
+                lines.insert(0, line);
+            }
+            Status::Failing(lines)
+        }
         Ok(status) => status,
         Err(why) => Status::Failing(vec![why]),
     };
@@ -137,6 +144,25 @@ pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) ->
         let _ = std::fs::remove_dir_all(results_dir(name));
     }
     status
+}
+
+/// The card's first line under a failing exercise `name` whose function behaves like one
+/// of its typical mistakes ([`mistakes::recognise`]): run as its checks are, quietly and
+/// within [`LIMIT`] (only after they returned, so a loop is never run twice).
+fn recognised(name: &str) -> Option<String> {
+    let owned = name.to_string();
+    let mistake = within(name, LIMIT, move || {
+        quiet_hook();
+        QUIET.with(|q| q.set(true));
+        let m = mistakes::recognise(&owned);
+        QUIET.with(|q| q.set(false));
+        m
+    })
+    .ok()??;
+    Some(format!(
+        "this behaves like a typical mistake: {} (reread the section below)",
+        mistake.words
+    ))
 }
 
 /// `f` on a thread named for the exercise `name`, given at most `limit`; why not, if the

@@ -19,6 +19,7 @@ pub mod disc_rows;
 pub mod edition;
 pub mod grade;
 pub mod marker;
+pub mod mistakes;
 pub mod registry;
 pub mod scrub;
 pub mod section;

@@ -8,7 +8,7 @@
 //! [`LATER`] lists the chapter tests that need exercises (the renderer uses nearly all of
 //! them). The card ([`super::card`]) reads both to say what each exercise unlocks.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use crate::check::warp::{self, Domain, RngWarp, SquareWarp};
 use crate::check::{self, Options, Verdict};
@@ -209,6 +209,14 @@ pub fn only(mut verdict: Verdict, keep: &[&str], why: &str) -> Verdict {
     verdict
 }
 
+/// The checks of `disc_polar`, run on the map `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn disc_polar_checks(f: fn(DVec2) -> DVec3) -> Vec<Verdict> {
+    let w = SquareWarp::new("disc polar", Domain::Disc, f, disc::disc_pdf)
+        .inverse(disc::disc_polar_invert);
+    vec![warp::check(&w, &warp_options())]
+}
+
 /// Every exercise, by name (the card orders them as the markers are, in the book's order).
 pub const EXERCISES: &[Exercise] = &[
     Exercise {
@@ -270,11 +278,7 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "disc_polar",
         needs: &[],
-        check: || {
-            let w = SquareWarp::new("disc polar", Domain::Disc, disc::disc_polar, disc::disc_pdf)
-                .inverse(disc::disc_polar_invert);
-            vec![warp::check(&w, &warp_options())]
-        },
+        check: || disc_polar_checks(disc::disc_polar),
     },
     Exercise {
         name: "disc_concentric",

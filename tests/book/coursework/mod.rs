@@ -8,6 +8,7 @@ mod checkers;
 mod edition;
 /// The chapter's test file of one's own, shown by anchor.
 mod mine;
+mod mistakes;
 
 use raylemma::check::reflect::{self, REFLECTION_SEED, REFRACTION_SEED};
 use raylemma::check::{Finding, Options, Verdict, max_abs};
