@@ -30,28 +30,51 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Cmd {
     /// Regenerate every figure and generated table into figures/.
+    ///
+    /// The figure job (tools/figures/) writes every output together or not at all, with a
+    /// progress bar and each output's time. The outputs that take seconds to minutes and
+    /// depend only on the code (the calibrations and power tables) are kept while the code
+    /// is what they record (a hash of src/, data/, scenes/, tools/examples/,
+    /// tools/figures/src/ and Cargo.lock, in a comment at their end): delete one to remake
+    /// it. The timing tables are kept as committed, each naming the machine it was
+    /// measured on; --timings measures them on this one.
+    #[command(after_help = "Example:\n  raylemma figures --only sphere_speed")]
     Figures(cmd::figures::FiguresArgs),
     /// Render the canonical scenes whose references in figures/reference/ are out of date
     /// (each records what it was made from), with the noise-level table and the cornell
     /// scene's RMSE against time.
+    #[command(after_help = "Example:\n  raylemma references --check")]
     References(cmd::figures::ReferencesArgs),
     /// Build the HTML book from chapters/ into book/ (mdBook as a library, math as MathML).
+    #[command(after_help = "Example:\n  raylemma book   (then open book/index.html)")]
     Book,
     /// Render a scene file: SCENE.exr (linear sRGB and the variance of each pixel's mean),
     /// SCENE.png (display) and SCENE.json (scene hash, spp, seed, time, version) in --out.
+    #[command(
+        after_help = "Example:\n  raylemma render scenes/cornell.toml --spp 64 --seed 1 --out renders"
+    )]
     Render(cmd::render::RenderArgs),
     /// Pool independent renders of one scene (different seeds) into one render, exactly:
     /// means, variances and samples per pixel. Exit status 2 for renders of different
     /// scenes, settings or builds, or two with one seed.
+    #[command(
+        after_help = "Example:\n  raylemma merge a/cornell.exr b/cornell.exr --out merged/cornell.exr"
+    )]
     Merge(cmd::merge::MergeArgs),
     /// Check another renderer on the conformance ladder (scenes/conformance/): each rung
     /// written in its format, rendered several times with different seeds and compared
     /// with its reference; a card per rung and depth (text, JSON, JUnit XML). Exit status
     /// 0 if every rung agrees, 1 if one differs or the renderer failed on it, 2 for usage.
+    #[command(
+        after_help = "Example:\n  raylemma conformance --format mitsuba --renderer \"python3 render.py {scene} {out} {spp} {seed}\""
+    )]
     Conformance(cmd::conformance::ConformanceArgs),
     /// Does a candidate agree with a reference render within their noise? The candidate is
     /// one EXR with variance channels or several independent plain RGB EXRs. Exit status 0
     /// if they agree, 1 if they differ, 2 for bad input.
+    #[command(
+        after_help = "Example:\n  raylemma compare figures/reference/cornell.exr mine-1.exr mine-2.exr mine-3.exr mine-4.exr --spp 64"
+    )]
     Compare(cmd::compare::CompareArgs),
     /// Run the book's checkers on an implementation outside Rust: a program that answers
     /// questions on stdin/stdout, or a file of values. Prints the verdict; exit status 0
@@ -63,18 +86,28 @@ enum Cmd {
     /// Write the student edition into DIR: a crate in which every exercise's body is a
     /// stub, whose `cargo test` ends with a report card (--solutions: the solutions in
     /// place).
+    #[command(
+        after_help = "Example:\n  raylemma exercises ~/handout   (then: cd ~/handout && cargo test)"
+    )]
     Exercises(cmd::exercises::ExercisesArgs),
     /// Print the report card of this crate's exercises (in the hand-out: where each one
     /// stands), without building the tests. Exit status 0 if every exercise passes, 1 if
     /// one does not.
+    #[command(after_help = "Example:\n  cargo run -- card disc_polar   (inside a hand-out)")]
     Card(cmd::card::CardArgs),
     /// Grade a worked hand-out: its exercise bodies in the edition's own code, judged by the
     /// card, scored with the teacher's weights; writes grade.txt, grade.json, junit.xml and
     /// Gradescope's results.json. Exit status 0 full marks, 1 less, 2 bad input.
+    #[command(
+        after_help = "Example:\n  raylemma grade submissions/alice --weights tools/grade/weights.toml --out grades/alice"
+    )]
     Grade(cmd::grade::GradeArgs),
     /// Write a scene for other renderers: a Mitsuba 3 XML file, a pbrt-v4 scene file, or
     /// fully resolved JSON (defaults filled in, spectra on the 1 nm grid, transforms
     /// explicit).
+    #[command(
+        after_help = "Example:\n  raylemma export scenes/cornell.toml --to mitsuba --out cornell.xml"
+    )]
     Export(cmd::export::ExportArgs),
 }
 

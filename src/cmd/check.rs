@@ -22,17 +22,29 @@ use super::{CmdResult, Failure, Outcome, done};
 pub enum CheckCmd {
     /// A sampler: its samples in a CSV file (chi-squared), or a program that answers
     /// `warp u1 u2` with `x y z` (chi-squared, Jacobian, and with --inverse the round trip).
+    #[command(
+        after_help = "Example:\n  raylemma check sampler --target cosine-hemisphere --inverse --program \"python3 tools/examples/cosine.py\""
+    )]
     Sampler(SamplerArgs),
     /// An unpolarised Fresnel reflectance: a program that answers `fresnel cos_i n1 n2`
     /// with `R`, or a table of rows `cos_i,n1,n2,R`.
+    #[command(
+        after_help = "Example:\n  raylemma check fresnel --program \"python3 tools/examples/fresnel.py\""
+    )]
     Fresnel(FresnelArgs),
     /// A refraction: a program that answers `refract wi_x wi_y wi_z n_x n_y n_z n1 n2`
     /// with `t_x t_y t_z` or `tir`, or a table of those rows.
+    #[command(
+        after_help = "Example:\n  raylemma check refraction --program \"python3 tools/examples/refract.py\""
+    )]
     Refraction(RefractionArgs),
     /// Accuracy on the corpora of hard inputs (data/corpus/*.txt): a program answers each
     /// case's question (`fresnel 0.5 1.0 1.5`) with `none` or its outputs, and every error
     /// must be at most 8 ulps times the problem's condition number. Without --program, the
     /// crate's own routines are checked.
+    #[command(
+        after_help = "Example:\n  raylemma check corpus data/corpus/fresnel.txt --verbs fresnel --program \"python3 tools/examples/fresnel.py\""
+    )]
     Corpus(CorpusArgs),
 }
 

@@ -56,6 +56,10 @@ mod renderer {
     mod testing;
 }
 
+mod appendix {
+    mod command_line;
+}
+
 /// The command line: subcommands end to end, their errors and exit statuses.
 mod cli;
 

@@ -1,0 +1,108 @@
+//! Tests of the appendix *The command line* (`chapters/appendix/command-line.md`): the page
+//! is every subcommand's `--help`, as the binary prints it, so it cannot drift from the
+//! program. When a subcommand's help changes, this test fails and says how to write the
+//! page again.
+
+use std::process::Command;
+
+use super::super::support::root;
+
+/// The page's path, from the crate's root.
+const PAGE: &str = "chapters/appendix/command-line.md";
+/// Set to write the page instead of checking it.
+const WRITE: &str = "RAYLEMMA_WRITE_COMMAND_LINE";
+
+/// What `raylemma ARGS --help` prints.
+fn help(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_raylemma"))
+        .args(args)
+        .arg("--help")
+        .output()
+        .expect("raylemma runs");
+    assert!(out.status.success(), "raylemma {args:?} --help failed");
+    String::from_utf8(out.stdout).expect("help is UTF-8")
+}
+
+/// The subcommands a help text lists under `Commands:` (without `help`).
+fn subcommands(help: &str) -> Vec<String> {
+    help.lines()
+        .skip_while(|l| l.trim() != "Commands:")
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|name| *name != "help")
+        .map(str::to_string)
+        .collect()
+}
+
+/// The page: an introduction, then each command's help in the order `--help` lists them,
+/// a subcommand's own subcommands after it.
+fn page() -> String {
+    let mut text = String::from(
+        "# The command line\n\n\
+         <!-- Written by `RAYLEMMA_WRITE_COMMAND_LINE=1 cargo test --test book appendix::command_line`\n\
+         from the binary's own help; do not edit: edit the doc comments in src/main.rs and src/cmd/. -->\n\n\
+         Every subcommand of `raylemma`, as `raylemma SUBCOMMAND --help` prints it (`cargo run\n\
+         --release -- SUBCOMMAND --help` in a clone). This page is that text: `cargo test` fails\n\
+         when it is not. Every subcommand ends by one rule: exit status **0** for success (agree,\n\
+         pass, done), **1** for a negative verdict or a job that failed on good input, **2** for bad\n\
+         input or usage, with the file, the line and the problem.\n",
+    );
+    let mut queue: Vec<Vec<String>> = vec![Vec::new()];
+    while let Some(args) = queue.pop() {
+        let argv: Vec<&str> = args.iter().map(String::as_str).collect();
+        let text_of = help(&argv);
+        let title = std::iter::once("raylemma")
+            .chain(argv.iter().copied())
+            .collect::<Vec<_>>()
+            .join(" ");
+        text.push_str(&format!(
+            "\n## `{title}`\n\n```text\n{}\n```\n",
+            text_of.trim_end()
+        ));
+        // Depth first, in the listed order.
+        for sub in subcommands(&text_of).into_iter().rev() {
+            let mut next = args.clone();
+            next.push(sub);
+            queue.push(next);
+        }
+    }
+    text
+}
+
+#[test]
+fn the_command_line_page_is_every_subcommand_s_help() {
+    let want = page();
+    let path = root().join(PAGE);
+    if std::env::var_os(WRITE).is_some() {
+        std::fs::write(&path, &want).expect("the page is written");
+        return;
+    }
+    let have = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        have == want,
+        "{PAGE} is not the binary's help: write it again with `{WRITE}=1 cargo test --test book appendix::command_line`"
+    );
+}
+
+#[test]
+fn every_subcommand_s_help_ends_with_an_example() {
+    let top = help(&[]);
+    let mut missing = Vec::new();
+    for sub in subcommands(&top) {
+        let text = help(&[&sub]);
+        let nested = subcommands(&text);
+        if nested.is_empty() {
+            if !text.contains("Example") {
+                missing.push(sub);
+            }
+        } else {
+            for n in nested {
+                if !help(&[&sub, &n]).contains("Example") {
+                    missing.push(format!("{sub} {n}"));
+                }
+            }
+        }
+    }
+    assert!(missing.is_empty(), "no example in the help of: {missing:?}");
+}
