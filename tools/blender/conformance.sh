@@ -10,33 +10,23 @@
 #
 # Work files: ${TMPDIR:-/tmp}/raylemma-conformance-cycles. About 10 minutes on 2 cores.
 set -euo pipefail
-table_only=0
-if [ "${1:-}" = "--table" ]; then
-    table_only=1
-    shift
-fi
 root="$(cd "$(dirname "$0")/../.." && pwd)"
-spp="${1:-256}"
-runs="${2:-4}"
+source "$root/tools/adapters.sh"
+ladder_options 256 "$@"
 work="${TMPDIR:-/tmp}/raylemma-conformance-cycles"
 venv="${RAYLEMMA_BLENDER_VENV:-/root/.cache/raylemma-blender-venv}"
 bash "$root/tools/blender/setup.sh" --no-test >&2
 py="$venv/bin/python"
-(cd "$root" && cargo build --release --quiet -p raylemma)
-export RAYLEMMA="${CARGO_TARGET_DIR:-$root/target}/release/raylemma"
+RAYLEMMA="$(raylemma_release "$root")"
+export RAYLEMMA
 
 t0=$(date +%s)
 if [ "$table_only" = 0 ]; then
-    rm -rf "$work"
-    mkdir -p "$work"
-    (cd "$root" && "$RAYLEMMA" conformance --format json --spp "$spp" --runs "$runs" \
-        --work "$work" --json "$work/card.json" \
-        --renderer "$py -W ignore $root/tools/blender/candidate.py {scene} {out} --spp {spp} --seed {seed}" \
-        > "$work/card.txt" 2> "$work/card.log") || true
-    tail -n 3 "$work/card.txt" >&2
+    json_card "$root" "$work" \
+        "$py -W ignore $root/tools/blender/candidate.py {scene} {out} --spp {spp} --seed {seed}"
 fi
 version="$("$py" -c 'import bpy; print(bpy.app.version_string)' 2>/dev/null | tail -n 1)"
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+cpu="$(machine_cpu)"
 caption="*\`tools/blender/conformance.sh $spp $runs\` on $(date -u +%Y-%m-%d), $cpu, $(nproc) cores: \
 Cycles $version (\`bpy\` from PyPI, CPU) through \`raylemma conformance --format json\` with $runs runs of \
 $spp spp per rung and depth, each rung exported and built by \`tools/blender/candidate.py\` (box filter of \

@@ -30,19 +30,11 @@ if [ ! -x "$py" ]; then
         3.11) ;;
         *) echo "setup.sh: bpy $BPY_VERSION needs Python 3.11; $python is not" >&2; exit 1 ;;
     esac
-    echo "creating venv $venv" >&2
-    "$python" -m venv "$venv"
 fi
-have="$("$py" -c 'import importlib.metadata as m
-try:
-    print(m.version("bpy"), m.version("numpy"), m.version("OpenEXR"))
-except m.PackageNotFoundError:
-    print("")' 2>/dev/null || true)"
-if [ "$have" != "$BPY_VERSION $NUMPY_VERSION $OPENEXR_VERSION" ]; then
-    echo "installing bpy==$BPY_VERSION numpy==$NUMPY_VERSION OpenEXR==$OPENEXR_VERSION into $venv (about 400 MB)" >&2
-    "$py" -m pip install --quiet --disable-pip-version-check \
-        "bpy==$BPY_VERSION" "numpy==$NUMPY_VERSION" "OpenEXR==$OPENEXR_VERSION"
-fi
+source "$(dirname "$0")/../adapters.sh"
+# bpy is about 400 MB.
+pinned_venv "$venv" "$python" \
+    "bpy==$BPY_VERSION" "numpy==$NUMPY_VERSION" "OpenEXR==$OPENEXR_VERSION"
 [ "$mode" = notest ] && exit 0
 
 "$py" - <<'PY'

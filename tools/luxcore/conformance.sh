@@ -11,34 +11,24 @@
 # Work files: ${TMPDIR:-/tmp}/raylemma-conformance-luxcore. The caption gives the wall time.
 # The table and predictions run in the LuxCore venv's Python (they need numpy and OpenEXR only).
 set -euo pipefail
-table_only=0
-if [ "${1:-}" = "--table" ]; then
-    table_only=1
-    shift
-fi
 root="$(cd "$(dirname "$0")/../.." && pwd)"
-spp="${1:-256}"
-runs="${2:-4}"
+source "$root/tools/adapters.sh"
+ladder_options 256 "$@"
 work="${TMPDIR:-/tmp}/raylemma-conformance-luxcore"
 venv="${RAYLEMMA_LUXCORE_VENV:-/root/.cache/raylemma-luxcore-venv}"
 bash "$root/tools/luxcore/setup.sh" >&2
 py="$venv/bin/python"
-(cd "$root" && cargo build --release --quiet -p raylemma)
-export RAYLEMMA="${CARGO_TARGET_DIR:-$root/target}/release/raylemma"
+RAYLEMMA="$(raylemma_release "$root")"
+export RAYLEMMA
 
 t0=$(date +%s)
 if [ "$table_only" = 0 ]; then
-    rm -rf "$work"
-    mkdir -p "$work"
-    (cd "$root" && "$RAYLEMMA" conformance --format json --spp "$spp" --runs "$runs" \
-        --work "$work" --json "$work/card.json" \
-        --renderer "$py $root/tools/luxcore/candidate.py {scene} {out} --spp {spp} --seed {seed}" \
-        > "$work/card.txt" 2> "$work/card.log") || true
+    json_card "$root" "$work" \
+        "$py $root/tools/luxcore/candidate.py {scene} {out} --spp {spp} --seed {seed}"
     echo "$(( $(date +%s) - t0 ))" > "$work/seconds.txt"
-    tail -n 3 "$work/card.txt" >&2
 fi
 version="$("$py" -c 'import importlib.metadata as m; print(m.version("pyluxcore"))')"
-cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+cpu="$(machine_cpu)"
 minutes=$(( ($(cat "$work/seconds.txt") + 59) / 60 ))
 caption="*\`tools/luxcore/conformance.sh $spp $runs\` on $(date -u +%Y-%m-%d), $cpu, $(nproc) cores, \
 $minutes minutes for the card: LuxCoreRender $version (\`pyluxcore\` from PyPI, PATHCPU) through \

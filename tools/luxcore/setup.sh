@@ -19,17 +19,6 @@ case "${1:-}" in
     '') ;;
     *) echo "setup.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
 esac
-if [ ! -x "$py" ]; then
-    echo "creating venv $venv" >&2
-    python3 -m venv "$venv"
-fi
-have="$("$py" -c 'import importlib.metadata as m
-try:
-    print(m.version("pyluxcore"), m.version("numpy"), m.version("OpenEXR"))
-except m.PackageNotFoundError:
-    print("")' 2>/dev/null || true)"
-if [ "$have" != "$PYLUXCORE_VERSION $NUMPY_VERSION $OPENEXR_VERSION" ]; then
-    echo "installing pyluxcore==$PYLUXCORE_VERSION numpy==$NUMPY_VERSION OpenEXR==$OPENEXR_VERSION into $venv" >&2
-    "$py" -m pip install --quiet --disable-pip-version-check \
-        "pyluxcore==$PYLUXCORE_VERSION" "numpy==$NUMPY_VERSION" "OpenEXR==$OPENEXR_VERSION"
-fi
+source "$(dirname "$0")/../adapters.sh"
+pinned_venv "$venv" python3 \
+    "pyluxcore==$PYLUXCORE_VERSION" "numpy==$NUMPY_VERSION" "OpenEXR==$OPENEXR_VERSION"

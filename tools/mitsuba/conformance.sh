@@ -11,20 +11,14 @@
 # The correct renderers run every rung; the faults run rungs 1-5, where each shows first.
 # Work files: ${TMPDIR:-/tmp}/raylemma-conformance. The caption gives the wall time.
 set -euo pipefail
-table_only=0
-if [ "${1:-}" = "--table" ]; then
-    table_only=1
-    shift
-fi
 root="$(cd "$(dirname "$0")/../.." && pwd)"
-spp="${1:-256}"
-runs="${2:-4}"
+source "$root/tools/adapters.sh"
+ladder_options 256 "$@"
 work="${TMPDIR:-/tmp}/raylemma-conformance"
 venv="${RAYLEMMA_MITSUBA_VENV:-/root/.cache/raylemma-mitsuba-venv}"
 bash "$root/tools/mitsuba/setup.sh" --no-test >&2
 py="$venv/bin/python"
-(cd "$root" && cargo build --release --quiet -p raylemma)
-raylemma="${CARGO_TARGET_DIR:-$root/target}/release/raylemma"
+raylemma="$(raylemma_release "$root")"
 if [ "$table_only" = 0 ]; then
 rm -rf "$work"
 mkdir -p "$work"

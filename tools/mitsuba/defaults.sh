@@ -13,21 +13,15 @@
 # Needs tools/mitsuba/setup.sh --pip-only and tools/blender/setup.sh. Work files:
 # ${TMPDIR:-/tmp}/raylemma-conformance-defaults.
 set -euo pipefail
-table_only=0
-if [ "${1:-}" = "--table" ]; then
-    table_only=1
-    shift
-fi
 root="$(cd "$(dirname "$0")/../.." && pwd)"
-spp="${1:-64}"
-runs="${2:-4}"
+source "$root/tools/adapters.sh"
+ladder_options 64 "$@"
 work="${TMPDIR:-/tmp}/raylemma-conformance-defaults"
 mpy="${RAYLEMMA_MITSUBA_VENV:-/root/.cache/raylemma-mitsuba-venv}/bin/python"
 bpy="${RAYLEMMA_BLENDER_VENV:-/root/.cache/raylemma-blender-venv}/bin/python"
 bash "$root/tools/mitsuba/setup.sh" --pip-only >&2
 bash "$root/tools/blender/setup.sh" --no-test >&2
-(cd "$root" && cargo build --release --quiet -p raylemma)
-raylemma="${CARGO_TARGET_DIR:-$root/target}/release/raylemma"
+raylemma="$(raylemma_release "$root")"
 
 card() { # NAME FORMAT RENDERER
     local name=$1 format=$2 renderer=$3 t0

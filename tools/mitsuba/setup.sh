@@ -30,20 +30,9 @@ case "${1:-}" in
 esac
 
 # ---- 1. the venv with the pinned packages
-if [ ! -x "$py" ]; then
-    echo "creating venv $venv" >&2
-    python3 -m venv "$venv"
-fi
-have="$("$py" -c 'import importlib.metadata as m
-try:
-    print(m.version("mitsuba"), m.version("drjit"), m.version("numpy"))
-except m.PackageNotFoundError:
-    print("")' 2>/dev/null || true)"
-if [ "$have" != "$MITSUBA_VERSION $DRJIT_VERSION $NUMPY_VERSION" ]; then
-    echo "installing mitsuba==$MITSUBA_VERSION drjit==$DRJIT_VERSION numpy==$NUMPY_VERSION into $venv" >&2
-    "$py" -m pip install --quiet --disable-pip-version-check \
-        "mitsuba==$MITSUBA_VERSION" "drjit==$DRJIT_VERSION" "numpy==$NUMPY_VERSION"
-fi
+source "$(dirname "$0")/../adapters.sh"
+pinned_venv "$venv" python3 \
+    "mitsuba==$MITSUBA_VERSION" "drjit==$DRJIT_VERSION" "numpy==$NUMPY_VERSION"
 [ "$mode" = pip ] && exit 0
 
 # ---- 2. libLLVM for Dr.Jit's LLVM backend (llvm_* variants)
