@@ -99,8 +99,34 @@ class Record:
             entry["values"] = dict(sorted(self.values.items()))
         if self.claims:
             entry["claims"] = dict(sorted(self.claims.items()))
-        values[self.file.rsplit(".", 1)[0]] = entry
+        key = self.file.rsplit(".", 1)[0]
+        try:
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+        except FileNotFoundError:
+            text = "{}\n"
         tmp = path + ".tmp"
         with open(tmp, "w", encoding="utf-8") as f:
-            f.write(json.dumps(dict(sorted(values.items())), indent=2, ensure_ascii=False) + "\n")
+            f.write(splice(text, key, entry))
         os.replace(tmp, path)
+
+
+def splice(text, key, entry):
+    """values.json's TEXT with the top-level entry KEY replaced by (or given) ENTRY, every
+    other entry kept to the byte: Python writes floats otherwise than serde_json (1e-05 for
+    1e-5), so rewriting the whole file would change numbers of outputs it never touched."""
+    blocks = {}
+    current = None
+    for line in text.split("\n"):
+        m = re.match(r'^  ("(?:[^"\\]|\\.)*"): ', line)
+        if m:
+            current = json.loads(m.group(1))
+            blocks[current] = [line]
+        elif current is not None and line.startswith("  "):
+            blocks[current].append(line)
+        else:
+            current = None
+    blocks = {k: "\n".join(v).rstrip(",") for k, v in blocks.items()}
+    body = json.dumps(entry, indent=2, ensure_ascii=False).replace("\n", "\n  ")
+    blocks[key] = f"  {json.dumps(key)}: {body}"
+    return "{\n" + ",\n".join(blocks[k] for k in sorted(blocks)) + "\n}\n"
