@@ -46,6 +46,16 @@ pub const SHIPPED: &[&str] = &[
     "Cargo.toml", // not shipped as it is: the edition's is made from it by `manifest`
 ];
 
+/// What the hand-out leaves out of [`SHIPPED`]: the typical mistakes' twins and the
+/// correct alternatives (each is an answer, or one with one thing changed) and their tests,
+/// all behind the `twins` feature, which the hand-out's manifest turns off
+/// ([`manifest`]). The hand-out keeps what the card needs to name a mistake
+/// (`src/exercise/mistakes/known.rs`).
+pub const TEACHERS_ONLY: &[&str] = &[
+    "src/exercise/mistakes/twins/",
+    "tests/book/coursework/mistakes.rs",
+];
+
 /// The file that says a folder is an edition (and which).
 pub const STAMP: &str = ".raylemma-edition";
 
@@ -261,6 +271,9 @@ pub fn make(sources: Vec<File>, kind: Kind) -> Result<Edition, EditionError> {
         .into_iter()
         .partition(|f| f.path == "Cargo.toml" || f.path == "README.md");
     for mut file in sources {
+        if kind == Kind::HandOut && TEACHERS_ONLY.iter().any(|t| file.path.starts_with(t)) {
+            continue;
+        }
         let mine = markers_of(exercises.as_slice(), &file.path);
         if kind == Kind::HandOut && !mine.is_empty() {
             let text = String::from_utf8_lossy(&file.bytes).into_owned();
@@ -350,7 +363,9 @@ pub fn manifest(original: &str, with_book: bool, kind: Kind) -> String {
                 ));
             }
         }
-        if section == "[package]" && t.starts_with("name =") {
+        if kind == Kind::HandOut && section == "[features]" && t.starts_with("default =") {
+            out.push_str("default = [] # the twins are not in the hand-out\n");
+        } else if section == "[package]" && t.starts_with("name =") {
             out.push_str(&format!(
                 "name = \"raylemma-{}\" # its own name; the library and the binary are `raylemma`\n",
                 kind.name()

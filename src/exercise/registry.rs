@@ -41,25 +41,49 @@ pub struct Later {
     pub needs: &'static [&'static str],
 }
 
+/// The exercises the renderer calls (`raylemma render`, the renderer's tests).
+const RENDERER: &[&str] = &[
+    "intersect_stable",
+    "disc_concentric",
+    "cosine_malley",
+    "reflect",
+    "refract",
+    "amplitudes",
+    "roulette",
+    "area_to_solid_angle",
+    "Sellmeier::index",
+    "Piecewise1D::sample",
+    "hero_uniform",
+    "srgb_encode",
+];
+
+/// The command line's tests: the renderer's exercises, and the hemisphere's.
+const COMMAND_LINE: [&str; 13] = joined(RENDERER, &["hemisphere_flip"]);
+
+/// `a` then `b`, as one array of `N` names (`N` must be their total: checked at compile
+/// time).
+const fn joined<const N: usize>(a: &[&'static str], b: &[&'static str]) -> [&'static str; N] {
+    assert!(a.len() + b.len() == N, "N must be the two lists' total");
+    let mut out = [""; N];
+    let mut i = 0;
+    while i < a.len() {
+        out[i] = a[i];
+        i += 1;
+    }
+    let mut j = 0;
+    while j < b.len() {
+        out[i + j] = b[j];
+        j += 1;
+    }
+    out
+}
+
 /// The chapters' tests that call exercises of other chapters.
 pub const LATER: &[Later] = &[
     Later {
         name: "renderer",
         command: "cargo test --test book renderer",
-        needs: &[
-            "intersect_stable",
-            "disc_concentric",
-            "cosine_malley",
-            "reflect",
-            "refract",
-            "amplitudes",
-            "roulette",
-            "area_to_solid_angle",
-            "Sellmeier::index",
-            "Piecewise1D::sample",
-            "hero_uniform",
-            "srgb_encode",
-        ],
+        needs: RENDERER,
     },
     Later {
         name: "specular furnace",
@@ -118,21 +142,7 @@ pub const LATER: &[Later] = &[
     Later {
         name: "command line",
         command: "cargo test --test book cli",
-        needs: &[
-            "intersect_stable",
-            "disc_concentric",
-            "cosine_malley",
-            "reflect",
-            "refract",
-            "amplitudes",
-            "roulette",
-            "area_to_solid_angle",
-            "Sellmeier::index",
-            "Piecewise1D::sample",
-            "hero_uniform",
-            "srgb_encode",
-            "hemisphere_flip",
-        ],
+        needs: &COMMAND_LINE,
     },
     Later {
         name: "coursework chapter",

@@ -117,3 +117,19 @@ pub fn read_png(path: &Path) -> Rgb8 {
         bytes,
     }
 }
+
+/// A file the tests write from the code (`path`, from the root): with the environment
+/// variable `write` set, writes `want` there; otherwise fails unless the file is `want`,
+/// saying how to write it again. One rule for every generated file the tests hold current.
+pub fn generated(path: &str, want: &str, write: &str) {
+    let full = root().join(path);
+    if std::env::var_os(write).is_some() {
+        std::fs::write(&full, want).unwrap_or_else(|e| panic!("{path}: {e}"));
+        return;
+    }
+    let have = std::fs::read_to_string(&full).unwrap_or_default();
+    assert!(
+        have == want,
+        "{path} is not what the code makes: write it again with `{write}=1 cargo test --test book`"
+    );
+}

@@ -5,7 +5,7 @@
 
 use std::process::Command;
 
-use super::super::support::root;
+use super::super::support::generated;
 
 /// The page's path, from the crate's root.
 const PAGE: &str = "chapters/appendix/command-line.md";
@@ -72,17 +72,7 @@ fn page() -> String {
 
 #[test]
 fn the_command_line_page_is_every_subcommand_s_help() {
-    let want = page();
-    let path = root().join(PAGE);
-    if std::env::var_os(WRITE).is_some() {
-        std::fs::write(&path, &want).expect("the page is written");
-        return;
-    }
-    let have = std::fs::read_to_string(&path).unwrap_or_default();
-    assert!(
-        have == want,
-        "{PAGE} is not the binary's help: write it again with `{WRITE}=1 cargo test --test book appendix::command_line`"
-    );
+    generated(PAGE, &page(), WRITE);
 }
 
 #[test]

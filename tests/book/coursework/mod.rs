@@ -8,6 +8,7 @@ mod checkers;
 mod edition;
 /// The chapter's test file of one's own, shown by anchor.
 mod mine;
+#[cfg(feature = "twins")]
 mod mistakes;
 
 use raylemma::check::reflect::{self, REFLECTION_SEED, REFRACTION_SEED};

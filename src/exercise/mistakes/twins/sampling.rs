@@ -1,52 +1,50 @@
 //! The typical mistakes and correct alternatives of the exercises of the book's sampling
-//! and geometry chapters and of *Reflection and refraction* (see [`super`]).
+//! and geometry chapters and of *Reflection and refraction* (see [`super`] and [`crate::exercise::mistakes`]).
 
-use glam::{DVec2, DVec3};
-
-use super::{Alternative, Mistake, Source, Table};
+use super::{Alternative, Mistake, Table};
+use crate::exercise::mistakes::Source;
+use crate::exercise::mistakes::probes::square;
 use crate::exercise::registry::disc_polar_checks;
-use crate::sampling::disc;
 
 /// This part's tables, in the book's order.
 pub const TABLES: &[Table] = &[Table {
     exercise: "disc_polar",
-    probe: || square_probe(disc::disc_polar),
     mistakes: &[
         Mistake {
             words: "r = u1: the radius without its square root (the radial CDF r^2 forgotten)",
             source: Source::Chapter,
             check: || disc_polar_checks(polar::r_equals_u1),
-            probe: || square_probe(polar::r_equals_u1),
+            probe: || square(polar::r_equals_u1),
         },
         Mistake {
             words: "phi = pi u2: half the turn (pi where 2 pi belongs)",
             source: Source::Constant,
             check: || disc_polar_checks(polar::half_turn),
-            probe: || square_probe(polar::half_turn),
+            probe: || square(polar::half_turn),
         },
         Mistake {
             words: "r = u1^2: the radius squared where its square root belongs",
             source: Source::Power,
             check: || disc_polar_checks(polar::r_squared),
-            probe: || square_probe(polar::r_squared),
+            probe: || square(polar::r_squared),
         },
         Mistake {
             words: "r = sqrt(u2), phi = 2 pi u1: u1 and u2 swapped",
             source: Source::Swapped,
             check: || disc_polar_checks(polar::swapped),
-            probe: || square_probe(polar::swapped),
+            probe: || square(polar::swapped),
         },
         Mistake {
             words: "(r cos phi, sin phi): the radius left off y",
             source: Source::Factor,
             check: || disc_polar_checks(polar::y_without_r),
-            probe: || square_probe(polar::y_without_r),
+            probe: || square(polar::y_without_r),
         },
         Mistake {
             words: "(r sin phi, r cos phi): sine and cosine swapped, a uniform disc but not the polar map (phi runs clockwise from the y axis, so the map's inverse is not the chapter's)",
             source: Source::Swapped,
             check: || disc_polar_checks(polar::sin_cos_swapped),
-            probe: || square_probe(polar::sin_cos_swapped),
+            probe: || square(polar::sin_cos_swapped),
         },
     ],
     alternatives: &[
@@ -60,14 +58,6 @@ pub const TABLES: &[Table] = &[Table {
         },
     ],
 }];
-
-/// Probe inputs on the unit square: a 7 x 7 grid inside it and its four corners; the
-/// outputs are every coordinate of every point, in order.
-fn square_probe(f: fn(DVec2) -> DVec3) -> Vec<f64> {
-    let grid = (1..=7).flat_map(|i| (1..=7).map(move |j| DVec2::new(i as f64, j as f64) / 8.0));
-    let corners = [DVec2::ZERO, DVec2::X, DVec2::Y, DVec2::ONE];
-    grid.chain(corners).flat_map(|u| f(u).to_array()).collect()
-}
 
 /// Twins and alternatives of `disc_polar`.
 mod polar {
