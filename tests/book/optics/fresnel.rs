@@ -485,7 +485,8 @@ fn both_forms_of_cos_t_squared_can_round_below_zero_leaving_a_denser_medium() {
     let m: u64 = 0x1c_04ff_24f2_087f;
     let cos_i = m as f64 / 2f64.powi(53);
     let eta = 265.0 / 128.0;
-    let exact_positive = (1u128 << 120) > 265u128 * 265 * ((1u128 << 106) - u128::from(m) * u128::from(m));
+    let exact_positive =
+        (1u128 << 120) > 265u128 * 265 * ((1u128 << 106) - u128::from(m) * u128::from(m));
     assert!(exact_positive, "the incidence is below the critical angle");
     let textbook = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
     let rearranged = (1.0 - eta * eta) + (eta * cos_i) * (eta * cos_i);
