@@ -474,6 +474,27 @@ fn total_internal_reflection_past_the_critical_angle() {
     }
 }
 
+/// What the rearranged `cos^2 theta_t = (1 - eta^2) + (eta cos_i)^2` does not buy leaving a
+/// denser medium: just inside the critical angle, where the exact value is a few times
+/// 1e-17, the textbook `1 - eta^2 (1 - cos_i^2)` and the rearranged sum both round below 0,
+/// and `cos_transmitted` reports total internal reflection. `eta = 265/128` and
+/// `cos_i = m 2^-53` are chosen so that the exact sign is an integer comparison:
+/// `1 - eta^2 (1 - cos_i^2) > 0` iff `2^120 > 265^2 (2^106 - m^2)`.
+#[test]
+fn both_forms_of_cos_t_squared_can_round_below_zero_leaving_a_denser_medium() {
+    let m: u64 = 0x1c_04ff_24f2_087f;
+    let cos_i = m as f64 / 2f64.powi(53);
+    let eta = 265.0 / 128.0;
+    let exact_positive =
+        (1u128 << 120) > 265u128 * 265 * ((1u128 << 106) - u128::from(m) * u128::from(m));
+    assert!(exact_positive, "the incidence is below the critical angle");
+    let textbook = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    let rearranged = (1.0 - eta * eta) + (eta * cos_i) * (eta * cos_i);
+    assert!(textbook < 0.0, "textbook {textbook:e}");
+    assert!(rearranged < 0.0, "rearranged {rearranged:e}");
+    assert!(cos_transmitted(cos_i, eta, 1.0).is_none());
+}
+
 /// Every input of the domain, and some outside it: no NaN, R in [0, 1].
 #[test]
 fn sweep_of_the_domain_gives_no_nan() {

@@ -9,6 +9,7 @@ use glam::{DVec2, DVec3};
 use raylemma::rng;
 use raylemma::sampling::cosine::{cosine_malley, cosine_pdf};
 use raylemma::sampling::sphere::{hemisphere_flip, sphere_inverse_cdf};
+use raylemma::stats::ks;
 use raylemma::stats::test_alpha;
 use raylemma::stats::ttest::{self, Summary};
 use raylemma::transport::lambert::*;
@@ -131,6 +132,42 @@ fn environments_exact_answers_match_quadrature() {
         let q = FRAC_1_PI * hemisphere_quadrature(|w| (env.radiance)(w) * w.z, 512);
         assert!((q - env.reflected_white).abs() < 1e-5, "{}: {q}", env.name);
     }
+}
+
+/// The source notes: "an equal chance to scatter light in all directions". Light arriving from
+/// one direction leaves in direction `wo` in proportion to `f_r cos(theta_o)`. Outgoing
+/// directions drawn that way (uniform on the hemisphere, kept with probability
+/// `f_r cos / (rho / pi)`) follow the density `cos / pi`, whose `cos theta` has the CDF
+/// `mu^2`, and not the uniform `1 / (2 pi)` the sentence implies, whose `cos theta` is
+/// uniform (KS test on `cos theta` for both).
+#[test]
+fn scattered_light_leaves_with_density_cos_over_pi_not_uniformly() {
+    let mut r = rng::seeded(18);
+    let wi = DVec3::new(0.6, 0.0, 0.8);
+    let mut mus = Vec::new();
+    while mus.len() < 100_000 {
+        let u = DVec2::new(
+            rng::uniform(&mut r, 0.0, 1.0),
+            rng::uniform(&mut r, 0.0, 1.0),
+        );
+        let wo = hemisphere_flip(sphere_inverse_cdf(u), DVec3::Z);
+        let keep = lambert_brdf(RHO, wi, wo) * wo.z / (RHO * FRAC_1_PI);
+        if rng::uniform(&mut r, 0.0, 1.0) < keep {
+            mus.push(wo.z);
+        }
+    }
+    let cosine = ks::one_sample(&mus, |mu| mu * mu).unwrap();
+    assert!(
+        cosine.p_value > test_alpha(),
+        "cos / pi: p = {}",
+        cosine.p_value
+    );
+    let uniform = ks::one_sample(&mus, |mu| mu).unwrap();
+    assert!(
+        uniform.p_value < test_alpha(),
+        "1 / (2 pi): p = {}",
+        uniform.p_value
+    );
 }
 
 /// The source notes take L_i out of the integral, which is only right for a constant L_i. Under
