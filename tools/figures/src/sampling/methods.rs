@@ -167,7 +167,7 @@ pub(super) fn methods_md(settings: &Settings, r: &mut Record) -> anyhow::Result<
     );
     writeln!(
         md,
-        "\n*{}; one sample = two uniform numbers from PCG-64 plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples. f32 columns: the same formulas in single precision (`single` modules) at 200 000 random f32 points of the square plus its corners and edges at 0, 1/2 and the largest f32 below 1; z is compared with the f64 formula at the same point (for the Gaussian and rejection methods, the f32 normalisation of 200 000 vectors of lengths 1e-30 to 1e30).*",
+        "\n*{}; one sample = the uniform numbers it draws from PCG-64 (two for a warp of the square; the Gaussian method four, for two Box-Muller pairs; rejection three a try, 18/pi = 5.7 on average) plus the warp, through a `dyn Warp` call; Jacobian by central differences at 10 000 points; norms over 100 000 samples. f32 columns: the same formulas in single precision (`single` modules) at 200 000 random f32 points of the square plus its corners and edges at 0, 1/2 and the largest f32 below 1; z is compared with the f64 formula at the same point (for the Gaussian and rejection methods, the f32 normalisation of 200 000 vectors of lengths 1e-30 to 1e30).*",
         timing::machine()
     )?;
     Ok(md.into_bytes())
