@@ -269,11 +269,38 @@ pub fn hemisphere_flip_checks(f: fn(DVec3, DVec3) -> DVec3) -> Vec<Verdict> {
 }
 
 /// The checks of `disc_concentric`, run on the map `f` (the crate's, or a twin of
-/// [`super::mistakes`]), with the crate's inverse for the round trip.
+/// [`super::mistakes`]), with the crate's inverse for the round trip, and the square's
+/// special points (`square_special_points`).
 pub fn disc_concentric_checks(f: fn(DVec2) -> DVec3) -> Vec<Verdict> {
     let w = SquareWarp::new("disc concentric", Domain::Disc, f, disc::disc_pdf)
         .inverse(disc::disc_concentric_invert);
-    vec![warp::check(&w, &warp_options())]
+    vec![
+        warp::check(&w, &warp_options()),
+        square_special_points("disc concentric", f),
+    ]
+}
+
+/// The points of the unit square that random draws never hit but a map of it to the disc
+/// must take in: its centre, the midpoints of its sides and its corners (`1 - eps/2` for
+/// 1), each mapped to a finite point of the closed unit disc. The two-wedge concentric map
+/// divides 0 by 0 at the centre without its guard.
+fn square_special_points(name: &str, f: fn(DVec2) -> DVec3) -> Verdict {
+    let mut finding = check::Finding::new(
+        "special_points",
+        "the centre, the sides' midpoints and the corners map to finite points of the disc",
+    );
+    let coordinates = [0.0, 0.5, 1.0 - f64::EPSILON / 2.0];
+    for x in coordinates {
+        for y in coordinates {
+            let u = DVec2::new(x, y);
+            let p = f(u);
+            let inside = p.is_finite() && p.z == 0.0 && p.x.hypot(p.y) <= 1.0 + 1e-12;
+            finding.record(inside, || format!("u = {u}: f(u) = {p}"));
+        }
+    }
+    let mut verdict = Verdict::new(format!("{name}: the square's special points"));
+    verdict.findings.push(finding);
+    verdict
 }
 
 /// The checks of `cosine_malley`, run on the sampler `f` (the crate's, or a twin of

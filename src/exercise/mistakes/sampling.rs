@@ -342,6 +342,12 @@ const DISC_CONCENTRIC: Table = Table {
             check: || disc_concentric_checks(concentric::swapped),
             probe: || square_probe(concentric::swapped),
         },
+        Mistake {
+            words: "no case for the centre a = 0: psi = 0 / 0, a NaN point at u = (1/2, 1/2)",
+            source: Source::Branch,
+            check: || disc_concentric_checks(concentric::unguarded),
+            probe: || square_probe(concentric::unguarded),
+        },
     ],
     alternatives: &[
         Alternative {
@@ -593,7 +599,8 @@ fn estimate_probe(f: EstimateFn) -> Vec<f64> {
         sample: |u| u,
         pdf: importance::HALF_SUPPORT.pdf,
     };
-    let cases: [(&dyn Fn(f64) -> f64, importance::Proposal, usize); 4] = [
+    type Case<'a> = (&'a dyn Fn(f64) -> f64, importance::Proposal, usize); // f, q, n
+    let cases: [Case; 4] = [
         (&importance::square, importance::UNIFORM, 8),
         (&plus_one, importance::LINEAR, 8),
         (&importance::square, importance::MATCHED, 4),
@@ -994,6 +1001,17 @@ mod concentric {
             DVec3::new(a.x * phi.cos(), a.x * phi.sin(), 0.0)
         } else {
             map(a)
+        }
+    }
+
+    pub fn unguarded(u: DVec2) -> DVec3 {
+        let a = 2.0 * u - DVec2::ONE;
+        if a.x.abs() > a.y.abs() {
+            let phi = FRAC_PI_4 * (a.y / a.x);
+            DVec3::new(a.x * phi.cos(), a.x * phi.sin(), 0.0)
+        } else {
+            let psi = FRAC_PI_4 * (a.x / a.y);
+            DVec3::new(a.y * psi.sin(), a.y * psi.cos(), 0.0)
         }
     }
 
