@@ -167,13 +167,12 @@ pub const LATER: &[Later] = &[
     },
 ];
 
-/// The claim on rejection's cost: the mean number of draws per direction is the cube's
-/// volume over the ball's, `6 / pi` (one-sample t-test at the suite's level).
-fn acceptance() -> Verdict {
+/// The claim on rejection's cost: the mean number of draws per direction that the sampler
+/// `f` reports is the cube's volume over the ball's, `6 / pi` (one-sample t-test at the
+/// suite's level).
+fn acceptance(f: fn(&mut crate::rng::Rng) -> (DVec3, u32)) -> Verdict {
     let mut rng = crate::rng::seeded(warp::SEED);
-    let tries = crate::stats::ttest::Summary::of(
-        (0..200_000).map(|_| f64::from(sphere::sphere_rejection(&mut rng).1)),
-    );
+    let tries = crate::stats::ttest::Summary::of((0..200_000).map(|_| f64::from(f(&mut rng).1)));
     let want = 6.0 / std::f64::consts::PI;
     let p = crate::stats::ttest::one_sample(&tries, want).map_or(0.0, |t| t.p_value);
     let mut finding = check::Finding::new("draws", "the mean number of draws is 6 / pi");
@@ -219,6 +218,136 @@ pub fn only(mut verdict: Verdict, keep: &[&str], why: &str) -> Verdict {
     verdict
 }
 
+/// The checks of `intersect_stable`, run on the `f64` intersector `f` (the crate's, or a
+/// twin of [`super::mistakes`]). The `f32` routine they also judge
+/// (`single::geometry::sphere::intersect_stable`) is always the crate's: a twin replaces
+/// only the `f64` one.
+pub fn intersect_stable_checks(
+    f: fn(&crate::geometry::Ray, &crate::geometry::Sphere, f64) -> Option<f64>,
+) -> Vec<Verdict> {
+    let o = Options::default();
+    vec![
+        check::sphere::intersection(&f, &o),
+        check::sphere::intersection(&single::geometry::sphere::intersect_stable, &o),
+        check::sphere::far(&single::geometry::sphere::intersect_stable, &o),
+    ]
+}
+
+/// An importance-sampling estimator with the signature of `estimate`, its integrand taken
+/// as a trait object.
+pub type EstimateFn = fn(
+    &dyn Fn(f64) -> f64,
+    &importance::Proposal,
+    usize,
+    &mut crate::rng::Rng,
+) -> crate::stats::ttest::Summary;
+
+/// The checks of `estimate`, run on the estimator `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn estimate_checks(f: EstimateFn) -> Vec<Verdict> {
+    vec![check::importance::estimator(&f, &Options::default())]
+}
+
+/// The checks of `sphere_rejection`, run on the sampler `f` (the crate's, or a twin of
+/// [`super::mistakes`]): its directions, and the number of draws it reports.
+pub fn sphere_rejection_checks(f: fn(&mut crate::rng::Rng) -> (DVec3, u32)) -> Vec<Verdict> {
+    let w = RngWarp {
+        name: "sphere by rejection".to_string(),
+        domain: Domain::Sphere,
+        sample: move |rng: &mut _| f(rng).0,
+        pdf: sphere::sphere_pdf,
+    };
+    vec![warp::check(&w, &warp_options()), acceptance(f)]
+}
+
+/// The checks of `hemisphere_flip`, run on the flip `f` (the crate's, or a twin of
+/// [`super::mistakes`]): Gaussian sphere samples flipped around `+z` and a tilted normal.
+pub fn hemisphere_flip_checks(f: fn(DVec3, DVec3) -> DVec3) -> Vec<Verdict> {
+    let tilted = DVec3::new(0.3, -0.5, 0.8).normalize();
+    [DVec3::Z, tilted]
+        .into_iter()
+        .map(|n| {
+            let w = RngWarp {
+                name: format!("hemisphere around {n:.3}"),
+                domain: Domain::Sphere,
+                sample: move |rng: &mut _| f(sphere::sphere_gaussian(rng), n),
+                pdf: move |w| sphere::hemisphere_pdf(w, n),
+            };
+            warp::check(&w, &warp_options())
+        })
+        .collect()
+}
+
+/// The checks of `disc_concentric`, run on the map `f` (the crate's, or a twin of
+/// [`super::mistakes`]), with the crate's inverse for the round trip, and the square's
+/// special points (`square_special_points`).
+pub fn disc_concentric_checks(f: fn(DVec2) -> DVec3) -> Vec<Verdict> {
+    let w = SquareWarp::new("disc concentric", Domain::Disc, f, disc::disc_pdf)
+        .inverse(disc::disc_concentric_invert);
+    vec![
+        warp::check(&w, &warp_options()),
+        square_special_points("disc concentric", f),
+    ]
+}
+
+/// The points of the unit square that random draws never hit but a map of it to the disc
+/// must take in: its centre, the midpoints of its sides and its corners (`1 - eps/2` for
+/// 1), each mapped to a finite point of the closed unit disc. The two-wedge concentric map
+/// divides 0 by 0 at the centre without its guard.
+fn square_special_points(name: &str, f: fn(DVec2) -> DVec3) -> Verdict {
+    let mut finding = check::Finding::new(
+        "special_points",
+        "the centre, the sides' midpoints and the corners map to finite points of the disc",
+    );
+    let coordinates = [0.0, 0.5, 1.0 - f64::EPSILON / 2.0];
+    for x in coordinates {
+        for y in coordinates {
+            let u = DVec2::new(x, y);
+            let p = f(u);
+            let inside = p.is_finite() && p.z == 0.0 && p.x.hypot(p.y) <= 1.0 + 1e-12;
+            finding.record(inside, || format!("u = {u}: f(u) = {p}"));
+        }
+    }
+    let mut verdict = Verdict::new(format!("{name}: the square's special points"));
+    verdict.findings.push(finding);
+    verdict
+}
+
+/// The checks of `cosine_malley`, run on the sampler `f` (the crate's, or a twin of
+/// [`super::mistakes`]) with the crate's cosine density.
+pub fn cosine_malley_checks(f: fn(DVec2) -> DVec3) -> Vec<Verdict> {
+    let w = SquareWarp::new("cosine Malley", Domain::Sphere, f, cosine::cosine_pdf);
+    vec![warp::check(&w, &warp_options())]
+}
+
+/// The checks of `cosine_pdf`, run on the density `f` (the crate's, or a twin of
+/// [`super::mistakes`]) as the claimed density of the seed's Cartesian sampler.
+pub fn cosine_pdf_checks(f: fn(DVec3) -> f64) -> Vec<Verdict> {
+    let w = SquareWarp::new(
+        "cosine pdf (the seed's Cartesian sampler)",
+        Domain::Sphere,
+        cosine::cosine_seed_cartesian,
+        f,
+    );
+    vec![warp::check(&w, &warp_options())]
+}
+
+/// The checks of `Piecewise1D::sample`, run on the sampler `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn piecewise1d_sample_checks(
+    f: fn(&tabulated::Piecewise1D, f64) -> tabulated::Sample,
+) -> Vec<Verdict> {
+    vec![check::tabulated::sampler(&f, &Options::default())]
+}
+
+/// The checks of `PiecewiseLinear1D::sample`, run on the sampler `f` (the crate's, or a
+/// twin of [`super::mistakes`]).
+pub fn piecewise_linear1d_sample_checks(
+    f: fn(&tabulated::PiecewiseLinear1D, f64) -> tabulated::Sample,
+) -> Vec<Verdict> {
+    vec![check::tabulated::linear_sampler(&f, &Options::default())]
+}
+
 /// The checks of `disc_polar`, run on the map `f` (the crate's, or a twin of
 /// [`super::mistakes`]).
 pub fn disc_polar_checks(f: fn(DVec2) -> DVec3) -> Vec<Verdict> {
@@ -232,58 +361,22 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "intersect_stable",
         needs: &[],
-        check: || {
-            let o = Options::default();
-            vec![
-                check::sphere::intersection(&sphere64::intersect_stable, &o),
-                check::sphere::intersection(&single::geometry::sphere::intersect_stable, &o),
-                check::sphere::far(&single::geometry::sphere::intersect_stable, &o),
-            ]
-        },
+        check: || intersect_stable_checks(sphere64::intersect_stable),
     },
     Exercise {
         name: "estimate",
         needs: &[],
-        check: || {
-            let estimate = |f: &dyn Fn(f64) -> f64, q: &importance::Proposal, n, rng: &mut _| {
-                importance::estimate(f, q, n, rng)
-            };
-            vec![check::importance::estimator(&estimate, &Options::default())]
-        },
+        check: || estimate_checks(|f, q, n, rng| importance::estimate(f, q, n, rng)),
     },
     Exercise {
         name: "sphere_rejection",
         needs: &[],
-        check: || {
-            let w = RngWarp {
-                name: "sphere by rejection".to_string(),
-                domain: Domain::Sphere,
-                sample: |rng: &mut _| sphere::sphere_rejection(rng).0,
-                pdf: sphere::sphere_pdf,
-            };
-            vec![warp::check(&w, &warp_options()), acceptance()]
-        },
+        check: || sphere_rejection_checks(sphere::sphere_rejection),
     },
     Exercise {
         name: "hemisphere_flip",
         needs: &[],
-        check: || {
-            let tilted = DVec3::new(0.3, -0.5, 0.8).normalize();
-            [DVec3::Z, tilted]
-                .into_iter()
-                .map(|n| {
-                    let w = RngWarp {
-                        name: format!("hemisphere around {n:.3}"),
-                        domain: Domain::Sphere,
-                        sample: move |rng: &mut _| {
-                            sphere::hemisphere_flip(sphere::sphere_gaussian(rng), n)
-                        },
-                        pdf: move |w| sphere::hemisphere_pdf(w, n),
-                    };
-                    warp::check(&w, &warp_options())
-                })
-                .collect()
-        },
+        check: || hemisphere_flip_checks(sphere::hemisphere_flip),
     },
     Exercise {
         name: "disc_polar",
@@ -293,61 +386,27 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "disc_concentric",
         needs: &[],
-        check: || {
-            let w = SquareWarp::new(
-                "disc concentric",
-                Domain::Disc,
-                disc::disc_concentric,
-                disc::disc_pdf,
-            )
-            .inverse(disc::disc_concentric_invert);
-            vec![warp::check(&w, &warp_options())]
-        },
+        check: || disc_concentric_checks(disc::disc_concentric),
     },
     Exercise {
         name: "cosine_malley",
         needs: &["disc_concentric", "cosine_pdf"],
-        check: || {
-            let w = SquareWarp::new(
-                "cosine Malley",
-                Domain::Sphere,
-                cosine::cosine_malley,
-                cosine::cosine_pdf,
-            );
-            vec![warp::check(&w, &warp_options())]
-        },
+        check: || cosine_malley_checks(cosine::cosine_malley),
     },
     Exercise {
         name: "cosine_pdf",
         needs: &[],
-        check: || {
-            let w = SquareWarp::new(
-                "cosine pdf (the seed's Cartesian sampler)",
-                Domain::Sphere,
-                cosine::cosine_seed_cartesian,
-                cosine::cosine_pdf,
-            );
-            vec![warp::check(&w, &warp_options())]
-        },
+        check: || cosine_pdf_checks(cosine::cosine_pdf),
     },
     Exercise {
         name: "Piecewise1D::sample",
         needs: &[],
-        check: || {
-            let sample = |t: &tabulated::Piecewise1D, u| t.sample(u);
-            vec![check::tabulated::sampler(&sample, &Options::default())]
-        },
+        check: || piecewise1d_sample_checks(tabulated::Piecewise1D::sample),
     },
     Exercise {
         name: "PiecewiseLinear1D::sample",
         needs: &[],
-        check: || {
-            let sample = |t: &tabulated::PiecewiseLinear1D, u| t.sample(u);
-            vec![check::tabulated::linear_sampler(
-                &sample,
-                &Options::default(),
-            )]
-        },
+        check: || piecewise_linear1d_sample_checks(tabulated::PiecewiseLinear1D::sample),
     },
     Exercise {
         name: "reflect",

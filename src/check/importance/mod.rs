@@ -6,7 +6,8 @@
 //! * `unbiased`: the mean of `f(X)/q(X)` is `∫ f` for proposals positive wherever `f` is
 //!   (t-tests at the options' level);
 //! * `zero_variance`: a proposal proportional to `f` gives every term equal to `∫ f`;
-//! * `zero_density`: a draw where `q(X) = 0` adds a finite term (0), never NaN or ∞.
+//! * `zero_density`: a draw where `q(X) = 0` adds a term of 0: counted (a draw skipped
+//!   leaves fewer than `n` terms, a biased mean), never NaN or ∞.
 //!
 //! Planted bugs that it must reject are in [`planted`].
 
@@ -123,22 +124,28 @@ pub fn estimator(estimate: &Estimator, options: &Options) -> Verdict {
 
     let mut zero = Finding::new(
         "zero_density",
-        "a draw where q(X) = 0 adds a finite term, never NaN or infinity",
+        "a draw where q(X) = 0 adds a term of 0: counted, never skipped, never NaN or infinity",
     );
     let wrong_half = Proposal {
         name: "uniform draws, density 2 on [0, 1/2] and 0 above",
         sample: |u| u,
         pdf: HALF_SUPPORT.pdf,
     };
-    let s = estimate(&square, &wrong_half, n.min(20_000), &mut rng);
-    zero.record(s.first_non_finite().is_none() && s.mean.is_finite(), || {
-        format!(
-            "{}: the summary holds {:?} (mean {})",
-            wrong_half.name,
-            s.first_non_finite(),
-            s.mean
-        )
-    });
+    let draws = n.min(20_000);
+    let s = estimate(&square, &wrong_half, draws, &mut rng);
+    let counted = s.n == draws as u64;
+    zero.record(
+        counted && s.first_non_finite().is_none() && s.mean.is_finite(),
+        || {
+            format!(
+                "{}: {draws} draws gave {} terms; the summary holds {:?} (mean {})",
+                wrong_half.name,
+                s.n,
+                s.first_non_finite(),
+                s.mean
+            )
+        },
+    );
 
     verdict.findings.extend([count, unbiased, matched, zero]);
     verdict

@@ -22,3 +22,17 @@ pub fn density_of_u(f: &dyn Fn(f64) -> f64, q: &Proposal, n: usize, r: &mut Rng)
         }
     }))
 }
+
+/// Skips a draw where `q(X) = 0` instead of adding a term of 0: fewer than `n` terms, and
+/// their mean is `int f` over the set where `q > 0` divided by the share of draws there.
+pub fn skips_zero_density(f: &dyn Fn(f64) -> f64, q: &Proposal, n: usize, r: &mut Rng) -> Summary {
+    let mut summary = Summary::default();
+    for _ in 0..n {
+        let x = (q.sample)(rng::uniform(r, 0.0, 1.0));
+        let q_x = (q.pdf)(x);
+        if q_x > 0.0 {
+            summary.push(f(x) / q_x);
+        }
+    }
+    summary
+}

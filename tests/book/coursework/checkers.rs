@@ -33,6 +33,10 @@ fn importance_estimator() {
         &check::importance::estimator(&planted::density_of_u, &o),
         &["unbiased"],
     );
+    failed(
+        &check::importance::estimator(&planted::skips_zero_density, &o),
+        &["zero_density"],
+    );
 }
 
 /// A biased estimator's failure comes with a picture of its convergence: the error
