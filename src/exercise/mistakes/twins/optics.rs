@@ -100,8 +100,8 @@ pub const TABLES: &[Table] = &[
             Mistake {
                 words: "eta = n2 / n1: the ratio of indices upside down (refraction bends the wrong way, total reflection entering the denser medium)",
                 source: Source::Swapped,
-                check: || refract_checks(reflect_planted::refract_swapped_indices),
-                probe: || refract_probe(reflect_planted::refract_swapped_indices),
+                check: || refract_checks(snell::swapped_ratio),
+                probe: || refract_probe(snell::swapped_ratio),
             },
             Mistake {
                 words: "w_t = w_i + (eta cos_i - cos_t) m: the factor eta left off w_i",
@@ -688,6 +688,17 @@ mod snell {
         Refraction::Transmitted(w_i + (ratio * cos_i - cos2_t.sqrt()) * m)
     }
 
+    pub fn swapped_ratio(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
+        let m = if w_i.dot(n) > 0.0 { -n } else { n };
+        let cos_i = -w_i.dot(m);
+        let ratio = n2 / n1;
+        let cos2_t = 1.0 - ratio * ratio * (1.0 - cos_i * cos_i);
+        if cos2_t < 0.0 {
+            return Refraction::TotalInternalReflection;
+        }
+        Refraction::Transmitted(ratio * w_i + (ratio * cos_i - cos2_t.sqrt()) * m)
+    }
+
     pub fn abs_cosine(w_i: DVec3, n: DVec3, n1: f64, n2: f64) -> Refraction {
         let cos_i = w_i.dot(n).abs();
         let ratio = n1 / n2;
@@ -730,7 +741,10 @@ mod snell {
 
 /// Twins and alternatives of `amplitudes`.
 mod amp {
-    use crate::optics::fresnel::{Amplitudes, amplitudes};
+    use crate::optics::fresnel::Amplitudes;
+
+    // The right amplitudes computed here, not the crate's (a stub in the hand-out).
+    use via_sines as amplitudes;
 
     /// Born & Wolf's amplitudes from the two cosines.
     fn from_cosines(c: f64, cos_t: f64, n1: f64, n2: f64) -> Amplitudes {
@@ -860,7 +874,8 @@ mod amp {
 
 /// Twins and alternatives of `fresnel_transmittance`.
 mod trans {
-    use crate::optics::fresnel::{Polarized, amplitudes, cos_transmitted};
+    use super::amp::via_sines as amplitudes;
+    use crate::optics::fresnel::{Polarized, cos_transmitted};
 
     /// Everything transmitted.
     const ALL: Polarized = Polarized { s: 1.0, p: 1.0 };
@@ -920,11 +935,21 @@ mod trans {
     }
 
     pub fn tir_transmits(cos_i: f64, n1: f64, n2: f64) -> Polarized {
-        let ci = cos_i.abs().min(1.0);
-        if cos_transmitted(ci, n1, n2).is_none() {
+        if n1 == n2 {
             return ALL;
         }
-        crate::optics::fresnel::fresnel_transmittance(cos_i, n1, n2)
+        let ci = cos_i.abs().min(1.0);
+        let Some(cos_t) = cos_transmitted(ci, n1, n2) else {
+            return ALL;
+        };
+        let (a, b, d, e) = (n1 * ci, n2 * cos_t, n2 * ci, n1 * cos_t);
+        if a + b == 0.0 {
+            return NOTHING;
+        }
+        Polarized {
+            s: (4.0 * a * b / ((a + b) * (a + b))).min(1.0),
+            p: (4.0 * a * b / ((d + e) * (d + e))).min(1.0),
+        }
     }
 
     pub fn no_matched_case(cos_i: f64, n1: f64, n2: f64) -> Polarized {
@@ -1072,7 +1097,7 @@ mod lobe {
     use glam::DVec3;
 
     pub fn keeps_cosine(albedo: f64, pdf: f64, w_i: DVec3, _divide_by_cos: bool) -> f64 {
-        crate::optics::specular::narrow_lobe_brdf(albedo, pdf, w_i, false)
+        if w_i.z <= 0.0 { 0.0 } else { albedo * pdf }
     }
 
     pub fn cos_squared(albedo: f64, pdf: f64, w_i: DVec3, divide_by_cos: bool) -> f64 {
