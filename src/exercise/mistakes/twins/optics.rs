@@ -3,35 +3,34 @@
 //!
 //! Twins already planted beside a chapter's checker (`src/check/*/planted.rs`) are reused
 //! where their signature is the exercise's; the others are in one private module per
-//! exercise. `amplitudes` is judged through the reflectance built from it, as the card
+//! exercise. Every twin is self-contained: none calls an exercise's function (a stub in a
+//! hand-out). `amplitudes` is judged through the reflectance built from it, as the card
 //! judges the crate's through `fresnel_dielectric`
-//! ([`crate::exercise::registry::amplitudes_checks`]); its probe reads the amplitudes
+//! ([`crate::exercise::registry::amplitudes_checks`]); its probe
+//! ([`crate::exercise::mistakes::probes::amplitude_probe`]) reads the amplitudes
 //! themselves.
 
-use glam::DVec3;
-use num_complex::Complex64;
-
-use super::{Alternative, Mistake, Source, Table};
+use super::{Alternative, Mistake, Table};
 use crate::check::dispersion::planted as dispersion_planted;
-use crate::check::dispersion::{fused_silica, material, n_bk7};
 use crate::check::fresnel::planted as fresnel_planted;
 use crate::check::reflect::planted as reflect_planted;
 use crate::check::specular::planted as specular_planted;
 use crate::check::thinfilm::planted as thinfilm_planted;
+use crate::exercise::mistakes::Source;
+use crate::exercise::mistakes::probes::{
+    airy_probe, amplitude_probe, lobe_probe, reflect_probe, refract_probe, scalar_probe,
+    sellmeier_probe, transmittance_probe,
+};
 use crate::exercise::registry::{
     airy_r_checks, amplitudes_checks, fresnel_transmittance_checks, narrow_lobe_brdf_checks,
     reflect_checks, refract_checks, schlick_verdict, sellmeier_index_checks,
 };
-use crate::optics::dispersion::{self, Sellmeier};
-use crate::optics::fresnel::{self, Amplitudes, Polarized};
-use crate::optics::reflect::{self, Refraction};
-use crate::optics::{specular, thinfilm};
+use crate::optics::fresnel::{self, Amplitudes};
 
 /// This part's tables, in the book's order.
 pub const TABLES: &[Table] = &[
     Table {
         exercise: "reflect",
-        probe: || reflect_probe(reflect::reflect),
         mistakes: &[
             Mistake {
                 words: "w_o = 2n + w_i: the source notes' mirror, right only at normal incidence (the factor cos theta_i dropped, |w_o| = sqrt(5 - 4 cos theta_i))",
@@ -77,7 +76,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "refract",
-        probe: || refract_probe(reflect::refract),
         mistakes: &[
             Mistake {
                 words: "the normal taken as given (the source notes' outward normal assumption): a ray leaving the glass, n facing away from the light, refracts the wrong way",
@@ -129,7 +127,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "amplitudes",
-        probe: || amplitude_probe(fresnel::amplitudes),
         mistakes: &[
             Mistake {
                 words: "the source notes' equations as written: cos_t = sqrt(1 - eta^2 sin^2) with no total-internal-reflection case (NaN past the critical angle) and no matched-indices case (0/0 at grazing incidence)",
@@ -183,7 +180,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "fresnel_transmittance",
-        probe: || transmittance_probe(fresnel::fresnel_transmittance),
         mistakes: &[
             Mistake {
                 words: "T = t^2: the beam factor (n2 cos_t) / (n1 cos_i) forgotten (1 - R = 0.96 but t_s^2 = 0.64 at normal incidence on glass)",
@@ -235,7 +231,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "schlick",
-        probe: || scalar_probe(fresnel::schlick),
         mistakes: &[
             Mistake {
                 words: "R0 + (1 - R0)(1 - cos)^4: the fourth power where Schlick has the fifth (every claim of a reflectance kept, only the formula tells)",
@@ -293,7 +288,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "narrow_lobe_brdf",
-        probe: || lobe_probe(specular::narrow_lobe_brdf),
         mistakes: &[
             Mistake {
                 words: "rho lobe(w_i): the lobe without its 1 / |cos theta_i| (the mirror that keeps the cosine, the chapter's planted bug)",
@@ -345,7 +339,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "Sellmeier::index",
-        probe: || sellmeier_probe(dispersion::Sellmeier::index),
         mistakes: &[
             Mistake {
                 words: "lambda squared in nm while C is in um^2: every term about B, n flat at about sqrt(1 + sum B)",
@@ -397,7 +390,6 @@ pub const TABLES: &[Table] = &[
     },
     Table {
         exercise: "airy_r",
-        probe: || airy_probe(thinfilm::airy_r),
         mistakes: &[
             Mistake {
                 words: "the source notes' denominator 1 - r12 r23 e^(2 i delta): the sign of r21 = -r12 lost",
@@ -449,116 +441,6 @@ pub const TABLES: &[Table] = &[
     },
 ];
 
-/// Unit directions of incidence `(w_i, n)`: at 0, 30, 45, 60, 75 and 89.9 degrees and
-/// grazing, about the normal `+z` and a tilted one, with the normal facing the light and
-/// facing away.
-fn incidences() -> Vec<(DVec3, DVec3)> {
-    let tilted = DVec3::new(0.3, -0.5, 0.8).normalize();
-    let mut cases = Vec::new();
-    for m in [DVec3::Z, tilted] {
-        let t = m.any_orthonormal_vector();
-        for degrees in [0.0_f64, 30.0, 45.0, 60.0, 75.0, 89.9, 90.0] {
-            let (sin, cos) = degrees.to_radians().sin_cos();
-            let w_i = t * sin - m * cos;
-            cases.push((w_i, m));
-            cases.push((w_i, -m));
-        }
-    }
-    cases
-}
-
-/// `f` on [`incidences`]: every coordinate of every direction.
-fn reflect_probe(f: fn(DVec3, DVec3) -> DVec3) -> Vec<f64> {
-    incidences()
-        .into_iter()
-        .flat_map(|(w_i, n)| f(w_i, n).to_array())
-        .collect()
-}
-
-/// Index pairs of the refraction probe: into and out of glass and diamond (past their
-/// critical angles at 45 degrees and beyond), water to air, matched.
-const REFRACT_PAIRS: [(f64, f64); 6] = [
-    (1.0, 1.5),
-    (1.5, 1.0),
-    (1.0, 2.4),
-    (2.4, 1.0),
-    (1.33, 1.0),
-    (1.2, 1.2),
-];
-
-/// `f` on [`incidences`] and [`REFRACT_PAIRS`]: per case `1` and the direction when
-/// transmitted, `0` and three NaNs under total internal reflection.
-fn refract_probe(f: fn(DVec3, DVec3, f64, f64) -> Refraction) -> Vec<f64> {
-    let mut out = Vec::new();
-    for (w_i, n) in incidences() {
-        for (n1, n2) in REFRACT_PAIRS {
-            match f(w_i, n, n1, n2) {
-                Refraction::Transmitted(w) => out.extend([1.0, w.x, w.y, w.z]),
-                Refraction::TotalInternalReflection => {
-                    out.extend([0.0, f64::NAN, f64::NAN, f64::NAN])
-                }
-            }
-        }
-    }
-    out
-}
-
-/// Cosines of the Fresnel probes: normal, 30, 45, 60 and 80 degrees, near grazing,
-/// grazing, and a negative cosine.
-fn probe_cosines() -> Vec<f64> {
-    let mut c: Vec<f64> = [0.0_f64, 30.0, 45.0, 60.0, 80.0]
-        .iter()
-        .map(|d| d.to_radians().cos())
-        .collect();
-    c.extend([0.01, 0.0, -0.5]);
-    c
-}
-
-/// Index pairs of the Fresnel probes: into and out of glass (critical angle 41.8
-/// degrees), water, glass under water, out of diamond, matched.
-const FRESNEL_PAIRS: [(f64, f64); 7] = [
-    (1.0, 1.5),
-    (1.5, 1.0),
-    (1.0, 1.33),
-    (1.33, 1.5),
-    (1.5, 1.33),
-    (2.4, 1.0),
-    (1.5, 1.5),
-];
-
-/// Every input `(cos_i, n1, n2)` of the Fresnel probes.
-fn fresnel_inputs() -> impl Iterator<Item = (f64, f64, f64)> {
-    FRESNEL_PAIRS
-        .into_iter()
-        .flat_map(|(n1, n2)| probe_cosines().into_iter().map(move |c| (c, n1, n2)))
-}
-
-/// An amplitude routine `f` on the Fresnel probes: `1, r_s, r_p, t_s, t_p, cos_t`, or `0`
-/// and five NaNs for `None`.
-fn amplitude_probe(f: fn(f64, f64, f64) -> Option<Amplitudes>) -> Vec<f64> {
-    fresnel_inputs()
-        .flat_map(|(c, n1, n2)| match f(c, n1, n2) {
-            Some(a) => [1.0, a.r_s, a.r_p, a.t_s, a.t_p, a.cos_t],
-            None => [0.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN],
-        })
-        .collect()
-}
-
-/// A transmittance routine `f` on the Fresnel probes: `T_s, T_p`.
-fn transmittance_probe(f: fn(f64, f64, f64) -> Polarized) -> Vec<f64> {
-    fresnel_inputs()
-        .flat_map(|(c, n1, n2)| {
-            let t = f(c, n1, n2);
-            [t.s, t.p]
-        })
-        .collect()
-}
-
-/// A reflectance routine `f` on the Fresnel probes.
-fn scalar_probe(f: fn(f64, f64, f64) -> f64) -> Vec<f64> {
-    fresnel_inputs().map(|(c, n1, n2)| f(c, n1, n2)).collect()
-}
-
 /// The unpolarised reflectance of amplitudes, as `fresnel_dielectric` builds it from
 /// `amplitudes` (`1` under total internal reflection).
 fn reflectance(a: Option<Amplitudes>) -> f64 {
@@ -566,76 +448,6 @@ fn reflectance(a: Option<Amplitudes>) -> f64 {
         Some(a) => 0.5 * (a.r_s * a.r_s + a.r_p * a.r_p),
         None => 1.0,
     }
-}
-
-/// A lobe BRDF `f` (its `divide_by_cos` set) at two albedos, two lobe densities and the
-/// directions: normal, 60 degrees, near grazing, grazing and below the surface; each
-/// value, then `1` if it is finite and `0` if not.
-fn lobe_probe(f: fn(f64, f64, DVec3, bool) -> f64) -> Vec<f64> {
-    let (s, c) = 60f64.to_radians().sin_cos();
-    let directions = [
-        DVec3::Z,
-        DVec3::new(s, 0.0, c),
-        DVec3::new(0.0, (1.0 - 1e-6f64).sqrt(), 1e-3),
-        DVec3::X,
-        DVec3::new(0.6, 0.0, -0.8),
-    ];
-    let mut out = Vec::new();
-    for rho in [0.3, 0.9] {
-        for pdf in [0.5, 1e3] {
-            for &w in &directions {
-                // Each value and whether it is finite: `same_outputs` takes an infinite
-                // value for a match of any other (`inf - y <= 1e-9 inf`).
-                let value = f(rho, pdf, w, true);
-                out.extend([value, f64::from(u8::from(value.is_finite()))]);
-            }
-        }
-    }
-    out
-}
-
-/// An index routine `f` on N-BK7, fused silica and a pole at 500 nm, from 360 to 1500 nm.
-fn sellmeier_probe(f: fn(&Sellmeier, f64) -> f64) -> Vec<f64> {
-    let glasses = [
-        n_bk7(),
-        fused_silica(),
-        material("pole at 500 nm", &[(1.0, 0.25)]),
-    ];
-    let nms = [360.0, 486.1, 550.0, 656.3, 830.0, 1000.0, 1500.0];
-    glasses
-        .iter()
-        .flat_map(|g| nms.iter().map(move |&nm| f(g, nm)))
-        .collect()
-}
-
-/// An Airy sum `f` on real and complex coefficients and on real and evanescent (complex)
-/// phases: the real and imaginary parts.
-fn airy_probe(f: fn(Complex64, Complex64, Complex64) -> Complex64) -> Vec<f64> {
-    let coefficients = [
-        (Complex64::new(0.2, 0.0), Complex64::new(-0.3, 0.0)),
-        (Complex64::new(-0.5, 0.0), Complex64::new(0.4, 0.0)),
-        (Complex64::new(0.3, 0.0), Complex64::new(0.0, 0.0)),
-        (Complex64::new(0.0, 0.0), Complex64::new(0.6, 0.0)),
-        (
-            Complex64::from_polar(0.4, 0.7),
-            Complex64::from_polar(0.7, -1.9),
-        ),
-    ];
-    let deltas = [
-        Complex64::new(0.0, 0.0),
-        Complex64::new(0.3, 0.0),
-        Complex64::new(std::f64::consts::FRAC_PI_2, 0.0),
-        Complex64::new(2.0, 0.0),
-        Complex64::new(0.5, 0.7),
-    ];
-    let mut out = Vec::new();
-    for (r12, r23) in coefficients {
-        for delta in deltas {
-            let r = f(r12, r23, delta);
-            out.extend([r.re, r.im]);
-        }
-    }
-    out
 }
 
 /// Twins and alternatives of `reflect`.
