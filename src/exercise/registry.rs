@@ -9,10 +9,13 @@
 //! them). The card ([`super::card`]) reads both to say what each exercise unlocks.
 
 use glam::{DVec2, DVec3};
+use num_complex::Complex64;
 
 use crate::check::warp::{self, Domain, RngWarp, SquareWarp};
 use crate::check::{self, Options, Verdict};
 use crate::geometry::sphere as sphere64;
+use crate::optics::fresnel::Polarized;
+use crate::optics::reflect::Refraction;
 use crate::optics::{dispersion, fresnel, reflect, specular, thinfilm};
 use crate::sampling::{cosine, disc, importance, sphere, tabulated};
 use crate::single;
@@ -411,44 +414,22 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "reflect",
         needs: &[],
-        check: || {
-            vec![check::reflect::reflection(
-                &reflect::reflect,
-                &Options::default(),
-            )]
-        },
+        check: || reflect_checks(reflect::reflect),
     },
     Exercise {
         name: "refract",
         needs: &[],
-        check: || {
-            vec![check::reflect::refraction(
-                &reflect::refract,
-                &Options::default(),
-            )]
-        },
+        check: || refract_checks(reflect::refract),
     },
     Exercise {
         name: "amplitudes",
         needs: &[],
-        check: || {
-            vec![check::fresnel::reflectance(
-                &fresnel::fresnel_dielectric,
-                &Options::default(),
-            )]
-        },
+        check: || amplitudes_checks(fresnel::fresnel_dielectric),
     },
     Exercise {
         name: "fresnel_transmittance",
         needs: &[],
-        check: || {
-            // Judged as a reflectance, R = 1 - T: the energy claim compares T with the
-            // checker's own transmittance, and the others hold R to its exact values.
-            let r = |c, n1, n2| 1.0 - fresnel::fresnel_transmittance(c, n1, n2).unpolarized();
-            let mut v = check::fresnel::reflectance(&r, &Options::default());
-            v.subject = "transmittance, as R = 1 - T".to_string();
-            vec![v]
-        },
+        check: || fresnel_transmittance_checks(fresnel::fresnel_transmittance),
     },
     Exercise {
         name: "schlick",
@@ -458,28 +439,17 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "narrow_lobe_brdf",
         needs: &[],
-        check: || {
-            let f = |rho, pdf, w_i: DVec3| specular::narrow_lobe_brdf(rho, pdf, w_i, true);
-            vec![check::specular::delta(&f, &Options::default())]
-        },
+        check: || narrow_lobe_brdf_checks(specular::narrow_lobe_brdf),
     },
     Exercise {
         name: "Sellmeier::index",
         needs: &[],
-        check: || {
-            let f = |m: &dispersion::Sellmeier, nm| m.index(nm);
-            vec![check::dispersion::sellmeier(&f, &Options::default())]
-        },
+        check: || sellmeier_index_checks(dispersion::Sellmeier::index),
     },
     Exercise {
         name: "airy_r",
         needs: &[],
-        check: || {
-            vec![check::thinfilm::airy(
-                &thinfilm::airy_r,
-                &Options::default(),
-            )]
-        },
+        check: || airy_r_checks(thinfilm::airy_r),
     },
     Exercise {
         name: "lambert_brdf",
@@ -546,6 +516,60 @@ pub const EXERCISES: &[Exercise] = &[
 /// The entry of the exercise `name`.
 pub fn find(name: &str) -> Option<&'static Exercise> {
     EXERCISES.iter().find(|e| e.name == name)
+}
+
+/// The checks of `reflect`, run on the reflection `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn reflect_checks(f: fn(DVec3, DVec3) -> DVec3) -> Vec<Verdict> {
+    vec![check::reflect::reflection(&f, &Options::default())]
+}
+
+/// The checks of `refract`, run on the refraction `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn refract_checks(f: fn(DVec3, DVec3, f64, f64) -> Refraction) -> Vec<Verdict> {
+    vec![check::reflect::refraction(&f, &Options::default())]
+}
+
+/// The checks of `amplitudes`, run on the reflectance `r` built from them as
+/// [`fresnel::fresnel_dielectric`] builds it, `R = (r_s^2 + r_p^2) / 2` and `1` for
+/// `None` (the crate's `fresnel_dielectric` itself, or [`super::mistakes`]' reflectance of
+/// a twin). The card judges `amplitudes` through the edition's own `fresnel_dielectric`,
+/// not through [`check::fresnel::amplitudes`] on the function itself: the grader's escape
+/// case (chapter *Coursework*) needs it so, and the chapter *Fresnel and Schlick* says so.
+/// So a mistake that keeps every `r^2` (the other sign of `r_p`, wrong transmission
+/// amplitudes) passes here; the chapter's tests catch it.
+pub fn amplitudes_checks(r: fn(f64, f64, f64) -> f64) -> Vec<Verdict> {
+    vec![check::fresnel::reflectance(&r, &Options::default())]
+}
+
+/// The checks of `fresnel_transmittance`, run on the transmittance `f` (the crate's, or a
+/// twin of [`super::mistakes`]): judged as a reflectance, `R = 1 - T`; the energy claim
+/// compares `T` with the checker's own transmittance, and the others hold `R` to its exact
+/// values.
+pub fn fresnel_transmittance_checks(f: fn(f64, f64, f64) -> Polarized) -> Vec<Verdict> {
+    let r = |c, n1, n2| 1.0 - f(c, n1, n2).unpolarized();
+    let mut v = check::fresnel::reflectance(&r, &Options::default());
+    v.subject = "transmittance, as R = 1 - T".to_string();
+    vec![v]
+}
+
+/// The checks of `narrow_lobe_brdf`, run on the BRDF `f` with its `divide_by_cos` set (the
+/// crate's, or a twin of [`super::mistakes`]).
+pub fn narrow_lobe_brdf_checks(f: fn(f64, f64, DVec3, bool) -> f64) -> Vec<Verdict> {
+    let g = |rho, pdf, w_i: DVec3| f(rho, pdf, w_i, true);
+    vec![check::specular::delta(&g, &Options::default())]
+}
+
+/// The checks of `Sellmeier::index`, run on the index `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn sellmeier_index_checks(f: fn(&dispersion::Sellmeier, f64) -> f64) -> Vec<Verdict> {
+    vec![check::dispersion::sellmeier(&f, &Options::default())]
+}
+
+/// The checks of `airy_r`, run on the Airy sum `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn airy_r_checks(f: fn(Complex64, Complex64, Complex64) -> Complex64) -> Vec<Verdict> {
+    vec![check::thinfilm::airy(&f, &Options::default())]
 }
 
 /// What finishing `name` unlocks: the exercises that need it, then the later checks.

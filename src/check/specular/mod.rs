@@ -7,11 +7,15 @@
 //! * `reflected_radiance`: in a unit environment, every sample `f |cos θ_i| / pdf` of the
 //!   reflected radiance, `w_i` drawn from the lobe itself, is exactly `ρ`: the BRDF's
 //!   `1 / |cos θ_i|` cancels the rendering equation's cosine, whatever the lobe's width;
-//! * `below`: `f = 0` for `w_i` below the surface;
+//! * `below`: `f = 0` for `w_i` below the surface, and on it (`w_i.z = 0`, where
+//!   `1 / |cos θ_i|` is infinite and a sample `f |cos θ_i| / pdf` would be `∞ · 0`, NaN);
 //! * `finite`: `f` is finite and non-negative above it.
 //!
 //! The planted bug is the chapter's own: the lobe without the `1 / |cos θ_i|`
-//! (`narrow_lobe_brdf(.., false)`), which returns `ρ cos θ_i` instead.
+//! (`narrow_lobe_brdf(.., false)`), which returns `ρ cos θ_i` instead. Another, which
+//! divides by a grazing cosine of 0, is in [`planted`].
+
+pub mod planted;
 
 use glam::{DVec2, DVec3};
 
@@ -39,7 +43,7 @@ pub fn delta(f: &dyn Fn(f64, f64, DVec3) -> f64, options: &Options) -> Verdict {
         "every sample f |cos theta_i| / pdf of a unit environment's reflection is rho",
     )
     .in_unit("relative error in machine epsilons");
-    let mut below = Finding::new("below", "f = 0 for w_i below the surface");
+    let mut below = Finding::new("below", "f = 0 for w_i below the surface and on it");
     let mut finite = Finding::new("finite", "f is finite and >= 0 above the surface");
     for kappa in KAPPAS {
         for _ in 0..cases {
@@ -71,6 +75,16 @@ pub fn delta(f: &dyn Fn(f64, f64, DVec3) -> f64, options: &Options) -> Verdict {
                 )
             });
         }
+    }
+    // Exactly grazing directions, which the lobes almost never draw: `f = 0` there too.
+    for k in 0..8 {
+        let phi = std::f64::consts::TAU * k as f64 / 8.0;
+        let w_i = DVec3::new(phi.cos(), phi.sin(), 0.0);
+        let (rho, pdf) = (0.5, 1.0);
+        let value = f(rho, pdf, w_i);
+        below.record(value == 0.0, || {
+            format!("rho = {rho}, lobe pdf = {pdf:e}, w_i = {w_i:?} (on the surface): f = {value}")
+        });
     }
     let mut verdict = Verdict::new("specular lobe BRDF");
     verdict.findings.extend([radiance, below, finite]);

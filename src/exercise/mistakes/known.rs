@@ -291,4 +291,244 @@ pub const KNOWN: &[Known] = &[
         words: "pdf = the segment's mean density (its probability over its width): the slope left out",
         fingerprint: 0x306a2c1ae9f546c0,
     },
+    Known {
+        exercise: "reflect",
+        words: "w_o = 2n + w_i: the source notes' mirror, right only at normal incidence (the factor cos theta_i dropped, |w_o| = sqrt(5 - 4 cos theta_i))",
+        fingerprint: 0xa692da03420fc7d3,
+    },
+    Known {
+        exercise: "reflect",
+        words: "w_o = 2 (w_i . n) n - w_i: the formula of the other convention (w_i towards the light) used with w_i travelling towards the surface, so the mirror direction comes out reversed, into the surface",
+        fingerprint: 0xa79f4cce210ccc07,
+    },
+    Known {
+        exercise: "reflect",
+        words: "w_o = w_i - (w_i . n) n: 1 where 2 belongs, the incident direction projected onto the surface instead of mirrored",
+        fingerprint: 0xb1c0e3f818984ed3,
+    },
+    Known {
+        exercise: "reflect",
+        words: "w_o = w_i - 2n: the dot product w_i . n left out of the normal component",
+        fingerprint: 0x1a165982365732eb,
+    },
+    Known {
+        exercise: "reflect",
+        words: "w_o = w_i - 2 |w_i . n| n: the cosine folded with abs() but the normal not flipped, right only when n faces away from the light",
+        fingerprint: 0xc527c34b0e993ae5,
+    },
+    Known {
+        exercise: "refract",
+        words: "the normal taken as given (the source notes' outward normal assumption): a ray leaving the glass, n facing away from the light, refracts the wrong way",
+        fingerprint: 0x744deb2b1c75bca9,
+    },
+    Known {
+        exercise: "refract",
+        words: "no total-internal-reflection test: past the critical angle the square root of a negative number, a NaN direction returned as transmitted",
+        fingerprint: 0xb73b1d4dc50e9cb7,
+    },
+    Known {
+        exercise: "refract",
+        words: "cos_t^2 used where cos_t belongs: the square root forgotten",
+        fingerprint: 0x5b8b585e7ffc6e9d,
+    },
+    Known {
+        exercise: "refract",
+        words: "eta = n2 / n1: the ratio of indices upside down (refraction bends the wrong way, total reflection entering the denser medium)",
+        fingerprint: 0x047762473f2cc56b,
+    },
+    Known {
+        exercise: "refract",
+        words: "w_t = w_i + (eta cos_i - cos_t) m: the factor eta left off w_i",
+        fingerprint: 0x5608f2e84fb2a09f,
+    },
+    Known {
+        exercise: "refract",
+        words: "cos_i = |w_i . n| but the normal not flipped with it: right only when n faces the light",
+        fingerprint: 0x338b7684755f0bd7,
+    },
+    Known {
+        exercise: "amplitudes",
+        words: "the source notes' equations as written: cos_t = sqrt(1 - eta^2 sin^2) with no total-internal-reflection case (NaN past the critical angle) and no matched-indices case (0/0 at grazing incidence)",
+        fingerprint: 0x0cbe270b4ab4b19e,
+    },
+    Known {
+        exercise: "amplitudes",
+        words: "r_p with n1 and n2 paired as in r_s, so r_p = r_s: no Brewster angle, the s reflectance for all light",
+        fingerprint: 0x490b28ddd62065bd,
+    },
+    Known {
+        exercise: "amplitudes",
+        words: "cos_t from eta = n2 / n1: Snell's ratio upside down (total reflection entering the denser medium, none leaving it)",
+        fingerprint: 0x7aa5b40e95ba90d4,
+    },
+    Known {
+        exercise: "amplitudes",
+        words: "cos_t = 1 - eta^2 sin^2 theta_i: the square root forgotten",
+        fingerprint: 0x6c3704560884c0cc,
+    },
+    Known {
+        exercise: "amplitudes",
+        words: "r_s = (n1 cos_i - cos_t) / (n1 cos_i + cos_t): the index n2 left off the s terms",
+        fingerprint: 0x2e68916d89a2925e,
+    },
+    Known {
+        exercise: "amplitudes",
+        words: "cos_i used as given: a negative cosine (the light on the normal's other side) not folded with abs(), so |r| > 1",
+        fingerprint: 0xccf3115fe4f9d73d,
+    },
+    Known {
+        exercise: "fresnel_transmittance",
+        words: "T = t^2: the beam factor (n2 cos_t) / (n1 cos_i) forgotten (1 - R = 0.96 but t_s^2 = 0.64 at normal incidence on glass)",
+        fingerprint: 0x64aa2098acee8e47,
+    },
+    Known {
+        exercise: "fresnel_transmittance",
+        words: "T = (n1 cos_i) / (n2 cos_t) t^2: the beam factor upside down",
+        fingerprint: 0x71c31b71c400a0df,
+    },
+    Known {
+        exercise: "fresnel_transmittance",
+        words: "T_s = 4ab / (a + b): the denominator's square forgotten",
+        fingerprint: 0x17b3c69426ab93f6,
+    },
+    Known {
+        exercise: "fresnel_transmittance",
+        words: "T_s = 2ab / (a + b)^2: 2 where 4 belongs",
+        fingerprint: 0x19b1b89d0ffc91ac,
+    },
+    Known {
+        exercise: "fresnel_transmittance",
+        words: "T = 1 past the critical angle: the total-internal-reflection case returns the matched-indices answer (nothing is transmitted there)",
+        fingerprint: 0x22f81c1b3898b08a,
+    },
+    Known {
+        exercise: "fresnel_transmittance",
+        words: "no matched-indices case: at grazing incidence with n1 = n2 both cosines are 0 and T = 0 where it is 1",
+        fingerprint: 0x21778c3dda4347d2,
+    },
+    Known {
+        exercise: "schlick",
+        words: "R0 + (1 - R0)(1 - cos)^4: the fourth power where Schlick has the fifth (every claim of a reflectance kept, only the formula tells)",
+        fingerprint: 0x3cf219ddc40a1944,
+    },
+    Known {
+        exercise: "schlick",
+        words: "the source notes' Schlick, always with cos theta_i: inside the denser medium the wrong cosine, and no total internal reflection",
+        fingerprint: 0x926b5f9446e4f696,
+    },
+    Known {
+        exercise: "schlick",
+        words: "R0 = ((n1 - 1)/(n1 + 1))^2: the second medium taken to be air",
+        fingerprint: 0x9ba72240d7a06053,
+    },
+    Known {
+        exercise: "schlick",
+        words: "R0 + (1 - cos)^5: the factor (1 - R0) left out (R > 1 at grazing incidence)",
+        fingerprint: 0xdd48c7077ceb481b,
+    },
+    Known {
+        exercise: "schlick",
+        words: "the cosine on the denser side: cos_t entering the denser medium and cos_i leaving it (the test n1 <= n2 the wrong way round)",
+        fingerprint: 0xa40e36660d54b84b,
+    },
+    Known {
+        exercise: "schlick",
+        words: "cos_t computed with n1 and n2 swapped: inside the denser medium never a total internal reflection, and the wrong cosine",
+        fingerprint: 0x3264e05bb15c8134,
+    },
+    Known {
+        exercise: "schlick",
+        words: "R = 0 past the critical angle: the total-internal-reflection branch returns nothing reflected",
+        fingerprint: 0x270803de4fbf3eda,
+    },
+    Known {
+        exercise: "narrow_lobe_brdf",
+        words: "rho lobe(w_i): the lobe without its 1 / |cos theta_i| (the mirror that keeps the cosine, the chapter's planted bug)",
+        fingerprint: 0x7d79b6724b0f7414,
+    },
+    Known {
+        exercise: "narrow_lobe_brdf",
+        words: "rho lobe(w_i) / cos^2 theta_i: the cosine divided out twice",
+        fingerprint: 0xd841457f7725efc4,
+    },
+    Known {
+        exercise: "narrow_lobe_brdf",
+        words: "lobe(w_i) / cos theta_i: the albedo rho left out",
+        fingerprint: 0x5d70c30cb8c1dc8b,
+    },
+    Known {
+        exercise: "narrow_lobe_brdf",
+        words: "rho lobe(w_i) / (pi cos theta_i): Lambert's 1 / pi carried over to the mirror",
+        fingerprint: 0x16630c3fa8914c1b,
+    },
+    Known {
+        exercise: "narrow_lobe_brdf",
+        words: "rho lobe(w_i) / |cos theta_i| below the surface too: the case w_i.z <= 0 left out",
+        fingerprint: 0x6960e14a03a2573b,
+    },
+    Known {
+        exercise: "narrow_lobe_brdf",
+        words: "the surface test w_i.z < 0 where <= 0 belongs: on the surface it divides by a cosine of 0 and returns infinity (a NaN sample in the renderer)",
+        fingerprint: 0xca9f2229214ffbe1,
+    },
+    Known {
+        exercise: "Sellmeier::index",
+        words: "lambda squared in nm while C is in um^2: every term about B, n flat at about sqrt(1 + sum B)",
+        fingerprint: 0xb2b2a288a35cf8c8,
+    },
+    Known {
+        exercise: "Sellmeier::index",
+        words: "returns n^2: the square root forgotten",
+        fingerprint: 0xdaca0c51b425e44e,
+    },
+    Known {
+        exercise: "Sellmeier::index",
+        words: "B lambda / (lambda - C): lambda where lambda^2 belongs",
+        fingerprint: 0xd7981281255d0d6a,
+    },
+    Known {
+        exercise: "Sellmeier::index",
+        words: "lambda^2 = nm^2 / 1000: the conversion to um applied once, not squared",
+        fingerprint: 0xd4a132cb5982251c,
+    },
+    Known {
+        exercise: "Sellmeier::index",
+        words: "C lambda^2 / (lambda^2 - B): B and C swapped in each term",
+        fingerprint: 0x0b67fcfc60e324e3,
+    },
+    Known {
+        exercise: "Sellmeier::index",
+        words: "n^2 = sum B lambda^2 / (lambda^2 - C): the 1 (the vacuum's n^2) left out",
+        fingerprint: 0x4cc85f0051c2bc6a,
+    },
+    Known {
+        exercise: "airy_r",
+        words: "the source notes' denominator 1 - r12 r23 e^(2 i delta): the sign of r21 = -r12 lost",
+        fingerprint: 0xa5e8c81af2a11788,
+    },
+    Known {
+        exercise: "airy_r",
+        words: "e^(i delta) where the round trip needs e^(2 i delta): one crossing's phase",
+        fingerprint: 0x33ed1b5362e475b9,
+    },
+    Known {
+        exercise: "airy_r",
+        words: "(r23 + r12 z) / (1 + r12 r23 z): r12 and r23 swapped in the numerator",
+        fingerprint: 0x5f3217561e39a20d,
+    },
+    Known {
+        exercise: "airy_r",
+        words: "r12 + r23 z / (1 + r12 r23 z): the factor t12 t21 = 1 - r12^2 of the multiply reflected waves left out",
+        fingerprint: 0x3923ba7f5ce73cff,
+    },
+    Known {
+        exercise: "airy_r",
+        words: "r12 + r23 z: two waves, the multiple reflections' denominator left out",
+        fingerprint: 0xa2c1abf60098eecb,
+    },
+    Known {
+        exercise: "airy_r",
+        words: "z = e^(-2 i delta): the phase's other sign, which for an evanescent film (complex delta) grows instead of decaying",
+        fingerprint: 0xb96e4a6b83e95172,
+    },
 ];

@@ -138,6 +138,16 @@ fn specular_lobe() {
     );
     failed(&v, &["reflected_radiance"]);
     assert!(!v.failed("below") && !v.failed("finite"), "{v}");
+    // Dividing by a grazing cosine of 0: only the exactly grazing directions see it.
+    let v = check::specular::delta(
+        &|r, p, w: DVec3| check::specular::planted::horizon_included(r, p, w, true),
+        &o,
+    );
+    failed(&v, &["below"]);
+    assert!(
+        !v.failed("reflected_radiance") && !v.failed("finite"),
+        "{v}"
+    );
 }
 
 #[test]

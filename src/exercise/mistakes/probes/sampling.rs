@@ -1,41 +1,11 @@
-//! Each exercise's probe: its function run on fixed inputs, the outputs flattened (see
-//! [`super`]). The probe of the crate's own function is in [`PROBES`]; the twins run the
-//! same probe functions on themselves.
+//! The probes of the sampling and geometry chapters' exercises (see [`super`]).
 
 use glam::{DVec2, DVec3};
 
 use crate::exercise::registry::EstimateFn;
 use crate::geometry::{Ray, Sphere};
 use crate::sampling::tabulated::{Piecewise1D, PiecewiseLinear1D, Sample};
-use crate::sampling::{cosine, disc, importance, sphere};
-
-/// A probe: a function run on fixed inputs, its outputs flattened.
-pub type Probe = fn() -> Vec<f64>;
-
-/// The probe of the crate's own function (the student's, in a hand-out), by exercise.
-pub const PROBES: &[(&str, Probe)] = &[
-    ("intersect_stable", || {
-        rays(crate::geometry::sphere::intersect_stable)
-    }),
-    ("estimate", || {
-        estimates(|f, q, n, rng| importance::estimate(f, q, n, rng))
-    }),
-    ("sphere_rejection", || rejections(sphere::sphere_rejection)),
-    ("hemisphere_flip", || flips(sphere::hemisphere_flip)),
-    ("disc_polar", || square(disc::disc_polar)),
-    ("disc_concentric", || square(disc::disc_concentric)),
-    ("cosine_malley", || square(cosine::cosine_malley)),
-    ("cosine_pdf", || directions(cosine::cosine_pdf)),
-    ("Piecewise1D::sample", || table(Piecewise1D::sample)),
-    ("PiecewiseLinear1D::sample", || {
-        linear_table(PiecewiseLinear1D::sample)
-    }),
-];
-
-/// The probe of exercise `name`'s function in this crate.
-pub fn of(name: &str) -> Option<Probe> {
-    PROBES.iter().find(|(n, _)| *n == name).map(|(_, p)| *p)
-}
+use crate::sampling::{importance, sphere};
 
 /// Probe inputs on the unit square: a 7 x 7 grid inside it and its four corners; the
 /// outputs are every coordinate of every point, in order.
