@@ -217,6 +217,57 @@ fn an_exercise_that_does_not_return_fails_and_the_card_goes_on() {
     }
 }
 
+/// `raylemma card NAME` runs a failing exercise's checks again for its full verdicts, but
+/// never one whose checks did not return (a loop would cost the card's limit twice, 60 s
+/// instead of 30), nor one that is not failing; and the full verdict's pictures go where
+/// the card's went, `results/NAME/`, not into a second copy in `warp-failures/`.
+#[test]
+fn the_full_verdict_never_runs_a_stuck_check_again_and_draws_where_the_card_does() {
+    use raylemma::check::warp::{self, Domain, SquareWarp, planted};
+    use raylemma::exercise::card::{Status, judge_within, results_dir, stuck, verdicts_of};
+    use raylemma::sampling::disc::disc_pdf;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::time::Duration;
+    static RUNS: AtomicUsize = AtomicUsize::new(0);
+    fn sleeps() -> Vec<raylemma::check::Verdict> {
+        RUNS.fetch_add(1, Ordering::SeqCst);
+        std::thread::sleep(Duration::from_secs(3));
+        Vec::new()
+    }
+    fn wrong() -> Vec<raylemma::check::Verdict> {
+        RUNS.fetch_add(1, Ordering::SeqCst);
+        let w = SquareWarp::new(
+            "full demo",
+            Domain::Disc,
+            planted::disc_r_equals_u,
+            disc_pdf,
+        );
+        vec![warp::check(&w, &warp::WarpOptions::default())]
+    }
+    let status = judge_within("full_sleeps", sleeps, Duration::from_millis(100));
+    assert!(stuck(&status), "{status:?}");
+    assert_eq!(RUNS.load(Ordering::SeqCst), 1);
+    assert!(verdicts_of("full_sleeps", &status, sleeps).is_empty());
+    assert!(verdicts_of("full_sleeps", &Status::Passing, sleeps).is_empty());
+    assert!(verdicts_of("full_sleeps", &Status::NotStarted, sleeps).is_empty());
+    assert_eq!(
+        RUNS.load(Ordering::SeqCst),
+        1,
+        "a stuck or passing check was run again"
+    );
+
+    let failing = Status::Failing(vec!["a claim".into()]);
+    assert!(!stuck(&failing));
+    let verdicts = verdicts_of("full_demo", &failing, wrong);
+    assert_eq!(RUNS.load(Ordering::SeqCst), 2);
+    assert!(!verdicts.is_empty() && verdicts.iter().all(|v| !v.passed()));
+    let root = crate::support::root();
+    let picture = results_dir("full_demo").join("full_demo/difference.png");
+    assert!(root.join(&picture).is_file(), "no {}", picture.display());
+    assert!(!root.join("warp-failures/full_demo").exists());
+    std::fs::remove_dir_all(root.join(results_dir("full_demo"))).unwrap();
+}
+
 /// A failing sampler's pictures go into the exercise's own folder, `results/NAME/`, which
 /// the card's line names; once the exercise passes, the folder is removed (a picture of a
 /// fixed mistake would mislead). The book's own planted-bug tests draw into
