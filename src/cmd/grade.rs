@@ -64,7 +64,15 @@ pub fn run(args: &GradeArgs) -> CmdResult {
         }
         None => Weights::default(),
     };
-    let (files, notes) = grade::splice(sources, &exercises, &chapters, &args.submission);
+    let (files, mut notes) = grade::splice(sources, &exercises, &chapters, &args.submission);
+    let stamp = std::fs::read_to_string(args.submission.join(STAMP)).unwrap_or_default();
+    if let Some(note) = grade::commit_note(
+        edition::stamped_commit(&stamp),
+        edition::commit_of(&root).as_deref(),
+    ) {
+        eprintln!("raylemma: {note}");
+        notes.insert(0, note);
+    }
     let graded = edition::make(files, Kind::Graded)?;
     let work = args.work.clone().unwrap_or_else(default_work);
     let copy = work.join("crate");

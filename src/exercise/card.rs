@@ -92,6 +92,9 @@ thread_local! {
     /// True while this thread runs an exercise's checks: its panics are the card's to
     /// report, not the panic hook's to print.
     static QUIET: Cell<bool> = const { Cell::new(false) };
+    /// Where the last quiet panic of this thread happened (`src/sampling/disc.rs:21:5`):
+    /// the card names it under the exercise.
+    static PANICKED_AT: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
 }
 
 /// Installs, once, a panic hook that stays silent on a thread running the card's checks
@@ -101,7 +104,12 @@ fn quiet_hook() {
     ONCE.call_once(|| {
         let previous = panic::take_hook();
         panic::set_hook(Box::new(move |info| {
-            if !QUIET.with(Cell::get) {
+            if QUIET.with(Cell::get) {
+                let at = info
+                    .location()
+                    .map(|l| format!("{}:{}:{}", l.file(), l.line(), l.column()));
+                PANICKED_AT.with(|p| *p.borrow_mut() = at);
+            } else {
                 previous(info);
             }
         }));
@@ -239,7 +247,12 @@ pub fn judge(name: &str, check: &dyn Fn() -> Vec<Verdict>) -> Status {
             match super::not_started(&message) {
                 Some(n) if n == name => Status::NotStarted,
                 Some(other) => Status::Waiting(other.to_string()),
-                None => Status::Failing(vec![format!("panicked: {}", first_line(&message))]),
+                None => {
+                    let at = PANICKED_AT
+                        .with(|p| p.borrow_mut().take())
+                        .map_or_else(String::new, |at| format!(" at {at}"));
+                    Status::Failing(vec![format!("panicked{at}: {}", first_line(&message))])
+                }
             }
         }
     }

@@ -249,6 +249,32 @@ pub fn splice(
     (out, notes)
 }
 
+/// The grade's note when the submission's hand-out was made from commit `stamped` (its
+/// stamp's, `None` if it records none) and the grader's code is at `ours` (`None` if the
+/// grader is not a git clone): the bodies are judged by the grader's checks and spliced
+/// into its code, so they should be the hand-out's. `None` when the two are the same
+/// commit, unmodified.
+pub fn commit_note(stamped: Option<&str>, ours: Option<&str>) -> Option<String> {
+    match (stamped, ours) {
+        (Some(s), Some(o)) if s == o && !o.ends_with("-modified") => None,
+        (Some(s), Some(o)) => Some(format!(
+            "the hand-out was made from commit {s}; this grader's code is {o}: its checks and \
+             the code around the bodies may differ from the hand-out's (grade with a build of \
+             the hand-out's commit, `git checkout {}`)",
+            s.trim_end_matches("-modified")
+        )),
+        (None, _) => Some(
+            "the hand-out's stamp records no commit (made by an older raylemma, or not from a \
+             git clone): the grader cannot check that its code is the hand-out's"
+                .into(),
+        ),
+        (Some(s), None) => Some(format!(
+            "the hand-out was made from commit {s}; this grader is not a git clone, so it \
+             cannot check that its code is that commit's"
+        )),
+    }
+}
+
 /// Points per exercise, from the teacher's weights file (see the module's documentation).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Weights {

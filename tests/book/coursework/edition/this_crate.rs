@@ -95,9 +95,10 @@ fn every_exercise_has_a_section_to_reread() {
         let chapter = std::fs::read_to_string(root.join(format!("chapters/{}.md", m.chapter)))
             .unwrap_or_else(|e| panic!("{e}"));
         assert!(
-            chapter
-                .lines()
-                .any(|l| l.trim_start_matches('#').trim() == s.title && l.starts_with('#')),
+            chapter.lines().any(
+                |l| section::readable(l.trim_start_matches('#').trim()) == s.title
+                    && l.starts_with('#')
+            ),
             "{}: no heading {:?}",
             m.name,
             s.title
@@ -114,6 +115,42 @@ fn every_exercise_has_a_section_to_reread() {
     assert_eq!(
         disc.flatten().map(|s| s.link),
         Some("chapters/sampling/disc.md#the-polar-map".to_string())
+    );
+}
+
+/// The card prints a section's heading without raw TeX: `The BRDF and its 1/π`, not
+/// `The BRDF and its $1/\pi$` (the link keeps mdBook's id of the heading as written).
+#[test]
+fn a_section_s_heading_prints_its_math_in_plain_characters() {
+    use raylemma::exercise::section::{self, readable};
+    assert_eq!(
+        readable("The BRDF and its $1/\\pi$"),
+        "The BRDF and its 1/π"
+    );
+    assert_eq!(
+        readable("CIE XYZ, and why divide by $\\int\\bar y$"),
+        "CIE XYZ, and why divide by ∫y\u{304}"
+    );
+    assert_eq!(
+        readable("Grazing samples: $u \\to 1$ and the rim"),
+        "Grazing samples: u → 1 and the rim"
+    );
+    assert_eq!(readable("The polar map"), "The polar map");
+    let root = crate::support::root();
+    let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
+    for m in &markers {
+        if let Some(s) = section::of(root, m) {
+            assert!(!s.title.contains('$') && !s.title.contains('\\'), "{s:?}");
+        }
+    }
+    let lambert = markers
+        .iter()
+        .filter_map(|m| section::of(root, m))
+        .find(|s| s.link == "chapters/transport/lambert.md#the-brdf-and-its-1pi");
+    assert_eq!(
+        lambert.map(|s| s.title),
+        Some("The BRDF and its 1/π".to_string()),
+        "the Lambert chapter's exercise is no longer under its BRDF's section"
     );
 }
 
@@ -213,6 +250,36 @@ fn an_exercise_that_does_not_return_fails_and_the_card_goes_on() {
                 "{lines:?}"
             )
         }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// A panic in an exercise's code is on the card with its file and line, so that the
+/// student finds the `unwrap` or the index that failed.
+#[test]
+fn a_panic_on_the_card_names_its_file_and_line() {
+    use raylemma::exercise::card::{LIMIT, Status, judge_within};
+    fn panics() -> Vec<raylemma::check::Verdict> {
+        let v: Vec<f64> = Vec::new();
+        vec![raylemma::check::Verdict::new(&format!("{}", v[3]))]
+    }
+    let source = std::fs::read_to_string(
+        crate::support::root().join("tests/book/coursework/edition/this_crate.rs"),
+    )
+    .unwrap();
+    let line = 1 + source
+        .lines()
+        .position(|l| l.contains("Verdict::new(&format!(\"{}\", v[3]))"))
+        .unwrap();
+    match judge_within("panics", panics, LIMIT) {
+        Status::Failing(lines) => assert!(
+            lines.len() == 1
+                && lines[0].starts_with(&format!(
+                    "panicked at tests/book/coursework/edition/this_crate.rs:{line}:"
+                ))
+                && lines[0].contains("index out of bounds"),
+            "{lines:?}"
+        ),
         other => panic!("{other:?}"),
     }
 }
