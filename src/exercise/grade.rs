@@ -83,7 +83,7 @@ fn body_of(m: &Marker, text: &str, theirs: &[Marker]) -> Result<Vec<String>, Str
 ///   (`macro_rules!`, which `#[macro_export]` would put at the crate's root), or uses
 ///   `unsafe` or `extern` (memory, symbols and linking outside the language's rules).
 ///
-/// - it names, as a path, a module that reaches outside the computation ([`REACHES`]:
+/// - it names, as a path, a module that reaches outside the computation (`REACHES`:
 ///   `std::process`, `std::fs`, `std::env`, `std::net`, `std::os`, `std::thread`, the
 ///   crate's file writer and its runner of other programs): a body that writes a card of
 ///   its own to the card's JSON file and calls `std::process::exit(0)` would otherwise

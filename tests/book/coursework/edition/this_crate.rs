@@ -261,7 +261,7 @@ fn a_panic_on_the_card_names_its_file_and_line() {
     use raylemma::exercise::card::{LIMIT, Status, judge_within};
     fn panics() -> Vec<raylemma::check::Verdict> {
         let v: Vec<f64> = Vec::new();
-        vec![raylemma::check::Verdict::new(&format!("{}", v[3]))]
+        vec![raylemma::check::Verdict::new(format!("{}", v[3]))]
     }
     let source = std::fs::read_to_string(
         crate::support::root().join("tests/book/coursework/edition/this_crate.rs"),
@@ -269,7 +269,7 @@ fn a_panic_on_the_card_names_its_file_and_line() {
     .unwrap();
     let line = 1 + source
         .lines()
-        .position(|l| l.contains("Verdict::new(&format!(\"{}\", v[3]))"))
+        .position(|l| l.contains("Verdict::new(format!(\"{}\", v[3]))"))
         .unwrap();
     match judge_within("panics", panics, LIMIT) {
         Status::Failing(lines) => assert!(
