@@ -57,8 +57,10 @@ pub fn run(args: &CardArgs) -> CmdResult {
     .with_sections(&root, &markers);
     println!("{card}");
     for row in card.rows.iter().filter(|_| !args.only.is_empty()) {
-        let verdicts = card::failed_verdicts(&row.name);
-        if verdicts.is_empty() {
+        // A loop is waited for once: the card's line is its whole verdict.
+        let stuck = card::stuck(&row.status);
+        let verdicts = card::failed_verdicts(&row.name, &row.status);
+        if verdicts.is_empty() && !stuck {
             continue;
         }
         let section = row.section.as_ref().map_or_else(String::new, |s| {
@@ -72,6 +74,12 @@ pub fn run(args: &CardArgs) -> CmdResult {
             row.chapter,
             row.chapter
         );
+        if stuck {
+            println!(
+                "its checks did not return within {} s above, so they are not run again for a full verdict: look for a loop that never ends",
+                card::LIMIT.as_secs()
+            );
+        }
         for v in verdicts {
             print!("{v}");
         }

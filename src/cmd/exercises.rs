@@ -45,7 +45,10 @@ pub fn run(args: &ExercisesArgs) -> CmdResult {
     let result = edition::check_destination(&args.dir, &root, args.overwrite)
         .and_then(|()| Ok(edition::read_sources(&root)?))
         .and_then(|sources| edition::make(sources, kind))
-        .and_then(|e| edition::write(&e, &args.dir).map(|dir| (e, dir)));
+        .and_then(|mut e| {
+            edition::stamp_commit(&mut e, edition::commit_of(&root).as_deref());
+            edition::write(&e, &args.dir).map(|dir| (e, dir))
+        });
     match result {
         Ok((e, dir)) => {
             eprintln!(

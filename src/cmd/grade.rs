@@ -64,7 +64,15 @@ pub fn run(args: &GradeArgs) -> CmdResult {
         }
         None => Weights::default(),
     };
-    let (files, notes) = grade::splice(sources, &exercises, &chapters, &args.submission);
+    let (files, mut notes) = grade::splice(sources, &exercises, &chapters, &args.submission);
+    let stamp = std::fs::read_to_string(args.submission.join(STAMP)).unwrap_or_default();
+    if let Some(note) = grade::commit_note(
+        edition::stamped_commit(&stamp),
+        edition::commit_of(&root).as_deref(),
+    ) {
+        eprintln!("raylemma: {note}");
+        notes.insert(0, note);
+    }
     let graded = edition::make(files, Kind::Graded)?;
     let work = args.work.clone().unwrap_or_else(default_work);
     let copy = work.join("crate");
@@ -77,7 +85,21 @@ pub fn run(args: &GradeArgs) -> CmdResult {
         copy.display()
     );
     let limit = Duration::from_secs(args.limit);
-    let grade = match judge(&copy, &work, limit) {
+    let judged = judge(&copy, &work, limit).and_then(|report| {
+        // Every exercise, in the book's order, and nothing else: a card with other rows
+        // was not written by the card.
+        let names = |r: &Report| r.rows.iter().map(|e| e.name.clone()).collect::<Vec<_>>();
+        let want: Vec<String> = exercises.iter().map(|m| m.name.clone()).collect();
+        if names(&report) == want {
+            Ok(report)
+        } else {
+            Err(format!(
+                "the card's JSON does not list the edition's {} exercises in order: it is not trusted",
+                want.len()
+            ))
+        }
+    });
+    let grade = match judged {
         Ok(report) => grade::score(&report, &weights, notes),
         Err(why) => grade::unbuilt(&exercises, &weights, &why, notes),
     };
@@ -157,6 +179,13 @@ fn judge(copy: &Path, work: &Path, limit: Duration) -> Result<Report, String> {
         }
     };
     match std::fs::read_to_string(&json) {
+        // The card ends with 0 or 1 after writing its JSON: a JSON file with any other end
+        // (a signal, an abort, an exit of a status of the body's choosing) is not the card's.
+        Ok(_) if !matches!(status.code(), Some(0 | 1)) => Err(format!(
+            "the graded copy's card ended with {status} after its JSON was written, not as the card ends (0 or 1): the JSON is not trusted; the end of {}:\n{}",
+            log.display(),
+            tail(&std::fs::read_to_string(&log).unwrap_or_default(), 20)
+        )),
         Ok(text) => serde_json::from_str(&text)
             .map_err(|e| format!("the card's JSON ({}) cannot be read: {e}", json.display())),
         Err(_) => {

@@ -92,6 +92,9 @@ thread_local! {
     /// True while this thread runs an exercise's checks: its panics are the card's to
     /// report, not the panic hook's to print.
     static QUIET: Cell<bool> = const { Cell::new(false) };
+    /// Where the last quiet panic of this thread happened (`src/sampling/disc.rs:21:5`):
+    /// the card names it under the exercise.
+    static PANICKED_AT: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
 }
 
 /// Installs, once, a panic hook that stays silent on a thread running the card's checks
@@ -101,7 +104,12 @@ fn quiet_hook() {
     ONCE.call_once(|| {
         let previous = panic::take_hook();
         panic::set_hook(Box::new(move |info| {
-            if !QUIET.with(Cell::get) {
+            if QUIET.with(Cell::get) {
+                let at = info
+                    .location()
+                    .map(|l| format!("{}:{}:{}", l.file(), l.line(), l.column()));
+                PANICKED_AT.with(|p| *p.borrow_mut() = at);
+            } else {
                 previous(info);
             }
         }));
@@ -181,26 +189,50 @@ fn within<T: Send + 'static>(
         .map_err(|e| format!("its checks could not start a thread: {e}"))?;
     result.recv_timeout(limit).map_err(|_| {
         format!(
-            "its checks did not return within {} s: a loop that never ends (a rejection loop that never accepts, a `while` whose condition never changes); the other exercises were judged on",
+            "{STUCK} {} s: a loop that never ends (a rejection loop that never accepts, a `while` whose condition never changes); the other exercises were judged on",
             limit.as_secs()
         )
     })
 }
 
+/// How the card's line under an exercise whose checks did not return within the limit
+/// begins.
+const STUCK: &str = "its checks did not return within";
+
+/// True iff `status` says that the checks did not return within the limit: running them
+/// again would wait as long again, for nothing.
+pub fn stuck(status: &Status) -> bool {
+    matches!(status, Status::Failing(lines) if lines.iter().any(|l| l.starts_with(STUCK)))
+}
+
 /// The full verdicts of the exercise `name`'s checks that fail (each with its claim in
-/// words and its first and worst failing inputs), run as [`run`] runs them; empty if they
-/// all pass, the exercise is not registered, or its checks panic or do not return within
-/// [`LIMIT`] (the card's line says which).
-pub fn failed_verdicts(name: &str) -> Vec<Verdict> {
-    let Some(e) = registry::find(name) else {
+/// words and its first and worst failing inputs), run as [`run`] runs them, given the
+/// `status` the card gave it ([`verdicts_of`]); empty if the exercise is not registered.
+pub fn failed_verdicts(name: &str, status: &Status) -> Vec<Verdict> {
+    match registry::find(name) {
+        Some(e) => verdicts_of(name, status, e.check),
+        None => Vec::new(),
+    }
+}
+
+/// The failing verdicts of `check`, the checks of the exercise `name` whose card gave it
+/// `status`: run again only if it is failing and its checks returned, so that a loop is
+/// never waited for twice (`raylemma card disc_polar` on a looping `disc_polar` takes the
+/// card's 30 s, not 60); empty if it is not failing, or if the checks are stuck, panic or
+/// do not return within [`LIMIT`] this time (the card's line says which).
+pub fn verdicts_of(name: &str, status: &Status, check: fn() -> Vec<Verdict>) -> Vec<Verdict> {
+    if !matches!(status, Status::Failing(_)) || stuck(status) {
         return Vec::new();
-    };
-    let check = e.check;
-    within(name, LIMIT, move || quietly(&check).unwrap_or_default())
-        .unwrap_or_default()
-        .into_iter()
-        .filter(|v| !v.passed())
-        .collect()
+    }
+    // Its pictures go where the card's went (`results/NAME/`), not into `warp-failures/`.
+    let dir = results_dir(name);
+    within(name, LIMIT, move || {
+        crate::check::pictures::with_failure_dir(dir, || quietly(&check).unwrap_or_default())
+    })
+    .unwrap_or_default()
+    .into_iter()
+    .filter(|v| !v.passed())
+    .collect()
 }
 
 /// The status of the exercise `name` from running `check` (with panics caught).
@@ -215,7 +247,12 @@ pub fn judge(name: &str, check: &dyn Fn() -> Vec<Verdict>) -> Status {
             match super::not_started(&message) {
                 Some(n) if n == name => Status::NotStarted,
                 Some(other) => Status::Waiting(other.to_string()),
-                None => Status::Failing(vec![format!("panicked: {}", first_line(&message))]),
+                None => {
+                    let at = PANICKED_AT
+                        .with(|p| p.borrow_mut().take())
+                        .map_or_else(String::new, |at| format!(" at {at}"));
+                    Status::Failing(vec![format!("panicked{at}: {}", first_line(&message))])
+                }
             }
         }
     }

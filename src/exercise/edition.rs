@@ -384,6 +384,53 @@ pub fn manifest(original: &str, with_book: bool, kind: Kind) -> String {
     out
 }
 
+/// The commit of the git clone at `root` (`git rev-parse HEAD`), with `-modified` if its
+/// tracked files differ from it; `None` if `root` is not a clone or git cannot run.
+pub fn commit_of(root: &Path) -> Option<String> {
+    let git = |args: &[&str]| {
+        std::process::Command::new("git")
+            .arg("-C")
+            .arg(root)
+            .args(args)
+            .output()
+            .ok()
+            .filter(|o| o.status.success())
+            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+    };
+    // Only a clone whose top is `root` itself: a crate copied inside another clone is not
+    // that clone's commit.
+    let top = git(&["rev-parse", "--show-toplevel"])?;
+    if fs::canonicalize(&top).ok()? != fs::canonicalize(root).ok()? {
+        return None;
+    }
+    let head = git(&["rev-parse", "HEAD"])?;
+    let clean = git(&["status", "--porcelain", "--untracked-files=no"])?.is_empty();
+    Some(if clean {
+        head
+    } else {
+        format!("{head}-modified")
+    })
+}
+
+/// Records in the edition's stamp the commit it was made from (`commit: SHA`, or
+/// `commit: unknown` when the crate is not a git clone), which `raylemma grade` compares
+/// with its own ([`stamped_commit`]).
+pub fn stamp_commit(edition: &mut Edition, commit: Option<&str>) {
+    if let Some(f) = edition.files.iter_mut().find(|f| f.path == STAMP) {
+        let line = format!("commit: {}\n", commit.unwrap_or("unknown"));
+        f.bytes.extend_from_slice(line.as_bytes());
+    }
+}
+
+/// The commit an edition's stamp `text` records (`None` for a stamp without one, or with
+/// `commit: unknown`).
+pub fn stamped_commit(text: &str) -> Option<&str> {
+    text.lines()
+        .find_map(|l| l.strip_prefix("commit: "))
+        .map(str::trim)
+        .filter(|c| *c != "unknown")
+}
+
 /// The edition's `README.md`: what it is, the two commands, and every exercise.
 pub fn readme(exercises: &[Marker], kind: Kind) -> String {
     let mut rows = String::new();
@@ -478,6 +525,9 @@ pub fn check_judged_crate(built_from: &Path, cwd: &Path) -> Result<(), String> {
         Some(c) if c.join(STAMP).is_file() => {
             let kind = fs::read_to_string(c.join(STAMP)).unwrap_or_default();
             let kind = kind
+                .lines()
+                .next()
+                .unwrap_or("")
                 .trim()
                 .rsplit(": ")
                 .next()

@@ -11,7 +11,8 @@
 //! `fn`). An exercise whose markers the submission lost or broke is graded as its stub,
 //! with a note that says why, and so is one whose body could reach outside its function
 //! ([`refused`]: read by a tokenizer, its brackets must balance outside strings and
-//! comments; no `include!`, `mod`, `macro_rules!`, `unsafe` or `extern`).
+//! comments; no `include!`, `mod`, `macro_rules!`, `unsafe` or `extern`, and no path
+//! through `std::process`, `std::fs`, `std::env` and the like).
 //!
 //! **Points.** [`Weights`] come from one TOML file the teacher writes:
 //!
@@ -82,8 +83,15 @@ fn body_of(m: &Marker, text: &str, theirs: &[Marker]) -> Result<Vec<String>, Str
 ///   (`macro_rules!`, which `#[macro_export]` would put at the crate's root), or uses
 ///   `unsafe` or `extern` (memory, symbols and linking outside the language's rules).
 ///
-/// What a body does when it runs (`std::process::exit`, writing the card's JSON file,
-/// reading files) no reading of its text stops: that needs a sandbox.
+/// - it names, as a path, a module that reaches outside the computation (`REACHES`:
+///   `std::process`, `std::fs`, `std::env`, `std::net`, `std::os`, `std::thread`, the
+///   crate's file writer and its runner of other programs): a body that writes a card of
+///   its own to the card's JSON file and calls `std::process::exit(0)` would otherwise
+///   score every exercise.
+///
+/// This is a reading of the text, not a sandbox: what a body does when it runs through
+/// a path this list does not name (a dependency's file writer, a process ended by a panic
+/// inside a panic) no reading of its text stops. Chapter *Coursework* says which need one.
 pub fn refused(body: &[String]) -> Option<(usize, String)> {
     if let Some(i) = body.iter().position(|l| marker::is_marker_line(l)) {
         return Some((i + 1, "a line of it is an exercise marker".into()));
@@ -99,30 +107,81 @@ pub fn refused(body: &[String]) -> Option<(usize, String)> {
     }
 }
 
+/// The modules a body may not name as a path (`std::process::exit`, `use std::fs;`,
+/// `crate::output::write_file`), with what they reach: an exercise computes, and what it
+/// would do with these is the grader's to fear (exit the card early, write the card's JSON
+/// file, rewrite it from another thread or process).
+const REACHES: [(&str, &str); 10] = [
+    ("process", "the process (exiting it, starting others)"),
+    ("fs", "files"),
+    ("env", "the command line and the environment"),
+    ("net", "the network"),
+    ("os", "the operating system"),
+    ("thread", "threads"),
+    ("output", "files (the crate's writer, `output`)"),
+    ("raylemma_output", "files (the crate's writer)"),
+    ("external", "other programs (the crate's `check::external`)"),
+    (
+        "exercise",
+        "the card and the grader (the crate's `exercise`; only the stub's `crate::exercise::todo` may name it)",
+    ),
+];
+
 /// The first token of `tokens` (at any depth) that [`refused`] does not allow, with its
 /// line and why.
 fn forbidden(tokens: proc_macro2::TokenStream) -> Option<(usize, String)> {
+    forbidden_in(tokens, false)
+}
+
+/// [`forbidden`] of `tokens`, `in_use` when they are inside a `use` item (each name in
+/// them a path's).
+fn forbidden_in(tokens: proc_macro2::TokenStream, in_use: bool) -> Option<(usize, String)> {
     use proc_macro2::TokenTree;
     let trees: Vec<TokenTree> = tokens.into_iter().collect();
+    let colon = |k: usize| matches!(trees.get(k), Some(TokenTree::Punct(p)) if p.as_char() == ':');
+    let mut using = in_use;
     for (i, tree) in trees.iter().enumerate() {
         let ident = match tree {
-            TokenTree::Group(g) => match forbidden(g.stream()) {
+            TokenTree::Group(g) => match forbidden_in(g.stream(), using) {
                 Some(found) => return Some(found),
                 None => continue,
             },
-            TokenTree::Ident(ident) => ident,
-            _ => continue,
-        };
-        let bang = matches!(trees.get(i + 1), Some(TokenTree::Punct(p)) if p.as_char() == '!');
-        let why = match ident.to_string().as_str() {
-            "include" | "include_str" | "include_bytes" if bang => {
-                "it reads a file into the code when it is compiled"
+            TokenTree::Punct(p) if p.as_char() == ';' => {
+                using = in_use;
+                continue;
             }
-            "macro_rules" if bang => "it defines a macro",
-            "mod" => "it declares a module",
-            "unsafe" => "it uses `unsafe`",
-            "extern" => "it declares or links outside code (`extern`)",
-            _ => continue,
+            TokenTree::Ident(ident) => ident,
+            TokenTree::Punct(_) | TokenTree::Literal(_) => continue,
+        };
+        let word = ident.to_string();
+        if word == "use" {
+            using = true;
+        }
+        let bang = matches!(trees.get(i + 1), Some(TokenTree::Punct(p)) if p.as_char() == '!');
+        let why = match word.as_str() {
+            "include" | "include_str" | "include_bytes" if bang => {
+                "it reads a file into the code when it is compiled".to_string()
+            }
+            "macro_rules" if bang => "it defines a macro".into(),
+            "mod" => "it declares a module".into(),
+            "unsafe" => "it uses `unsafe`".into(),
+            "extern" => "it declares or links outside code (`extern`)".into(),
+            _ => {
+                // A name is a path's when `::` is before or after it, or in a `use`.
+                let in_path = using
+                    || (i >= 2 && colon(i - 1) && colon(i - 2))
+                    || (colon(i + 1) && colon(i + 2));
+                let stub = word == "exercise"
+                    && !using
+                    && matches!(trees.get(i + 3), Some(TokenTree::Ident(t)) if t == "todo");
+                match REACHES.iter().find(|(m, _)| *m == word) {
+                    Some((_, what)) if in_path && !stub => format!(
+                        "it reaches {what}, which an exercise has no need of and the grader cannot \
+                         let a body touch"
+                    ),
+                    _ => continue,
+                }
+            }
         };
         return Some((ident.span().start().line, format!("{why} (`{ident}`)")));
     }
@@ -188,6 +247,32 @@ pub fn splice(
         out.push(file);
     }
     (out, notes)
+}
+
+/// The grade's note when the submission's hand-out was made from commit `stamped` (its
+/// stamp's, `None` if it records none) and the grader's code is at `ours` (`None` if the
+/// grader is not a git clone): the bodies are judged by the grader's checks and spliced
+/// into its code, so they should be the hand-out's. `None` when the two are the same
+/// commit, unmodified.
+pub fn commit_note(stamped: Option<&str>, ours: Option<&str>) -> Option<String> {
+    match (stamped, ours) {
+        (Some(s), Some(o)) if s == o && !o.ends_with("-modified") => None,
+        (Some(s), Some(o)) => Some(format!(
+            "the hand-out was made from commit {s}; this grader's code is {o}: its checks and \
+             the code around the bodies may differ from the hand-out's (grade with a build of \
+             the hand-out's commit, `git checkout {}`)",
+            s.trim_end_matches("-modified")
+        )),
+        (None, _) => Some(
+            "the hand-out's stamp records no commit (made by an older raylemma, or not from a \
+             git clone): the grader cannot check that its code is the hand-out's"
+                .into(),
+        ),
+        (Some(s), None) => Some(format!(
+            "the hand-out was made from commit {s}; this grader is not a git clone, so it \
+             cannot check that its code is that commit's"
+        )),
+    }
 }
 
 /// Points per exercise, from the teacher's weights file (see the module's documentation).

@@ -14,10 +14,87 @@ use super::marker::Marker;
 /// A chapter's section: its heading and where it is.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Section {
-    /// The heading's text, `The polar map`.
+    /// The heading's text, `The polar map`, its math in plain characters ([`readable`]):
+    /// `The BRDF and its 1/π`, not `The BRDF and its $1/\pi$`.
     pub title: String,
     /// The chapter's file and the heading's id, `chapters/sampling/disc.md#the-polar-map`.
     pub link: String,
+}
+
+/// The TeX commands a heading's math uses, in plain characters.
+const TEX: [(&str, &str); 24] = [
+    ("pi", "π"),
+    ("theta", "θ"),
+    ("phi", "φ"),
+    ("omega", "ω"),
+    ("lambda", "λ"),
+    ("rho", "ρ"),
+    ("mu", "μ"),
+    ("sigma", "σ"),
+    ("alpha", "α"),
+    ("beta", "β"),
+    ("gamma", "γ"),
+    ("delta", "δ"),
+    ("eta", "η"),
+    ("int", "∫"),
+    ("sum", "Σ"),
+    ("to", "→"),
+    ("le", "≤"),
+    ("ge", "≥"),
+    ("cdot", "·"),
+    ("times", "×"),
+    ("infty", "∞"),
+    ("propto", "∝"),
+    ("approx", "≈"),
+    ("sqrt", "√"),
+];
+
+/// A heading as a terminal shows it: its math (`$…$`) without the dollars and TeX, each
+/// command above in its character (`\pi` π, `\to` →), `\bar y` as `ȳ`, other commands
+/// as their names, braces and `\,` spacing dropped. `The BRDF and its $1/\pi$` is
+/// `The BRDF and its 1/π`.
+pub fn readable(heading: &str) -> String {
+    let mut out = String::new();
+    for (k, part) in heading.split('$').enumerate() {
+        if k % 2 == 0 {
+            out.push_str(part);
+            continue;
+        }
+        let mut chars = part.chars().peekable();
+        let mut bar = false;
+        while let Some(c) = chars.next() {
+            match c {
+                '\\' => {
+                    let mut name = String::new();
+                    while let Some(&n) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
+                        name.push(n);
+                        chars.next();
+                    }
+                    if name.is_empty() {
+                        chars.next(); // `\,`, `\;`: spacing
+                    } else if name == "bar" {
+                        bar = true;
+                        while chars.peek().is_some_and(|n| *n == ' ' || *n == '{') {
+                            chars.next();
+                        }
+                    } else if name != "text" && name != "mathrm" && name != "mathbf" {
+                        match TEX.iter().find(|(t, _)| *t == name) {
+                            Some((_, sym)) => out.push_str(sym),
+                            None => out.push_str(&name),
+                        }
+                    }
+                }
+                '{' | '}' => {}
+                _ => {
+                    out.push(c);
+                    if std::mem::take(&mut bar) {
+                        out.push('\u{304}');
+                    }
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The anchor of `source` that holds line `line` (1-based): the last `// ANCHOR: name`
@@ -99,7 +176,7 @@ pub fn of(root: &Path, marker: &Marker) -> Option<Section> {
         .or_else(|| heading_above(&chapter, |line| names.iter().any(|n| line.contains(n))))
         .or_else(|| heading_above(&chapter, |_| true))?;
     Some(Section {
-        title: title.to_string(),
+        title: readable(title),
         link: format!("{chapter_file}#{}", heading_id(title)),
     })
 }

@@ -37,7 +37,9 @@ extern "C" fn print_card() {
     if let Some(text) = CARD.get() {
         let mut out = std::io::stdout();
         let _ = writeln!(out, "\n{text}");
-        if let Some(note) = stub_note() {
+        let passed = PASSED.load(std::sync::atomic::Ordering::Relaxed);
+        let n = STUB_PANICS.load(std::sync::atomic::Ordering::Relaxed);
+        if let Some(note) = stub_note(n, passed) {
             let _ = writeln!(out, "{note}");
         }
         let _ = out.flush();
@@ -149,10 +151,14 @@ pub fn deliberate<R>(f: impl FnOnce() -> R + std::panic::UnwindSafe) -> std::thr
 /// How many panics [`silent_stubs`] kept quiet.
 static STUB_PANICS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
-/// The line the card ends with when stubs panicked: what the silent failures were.
-fn stub_note() -> Option<String> {
-    let n = STUB_PANICS.load(std::sync::atomic::Ordering::Relaxed);
-    (n > 0).then(|| {
+/// True once the card's test found every exercise passing.
+static PASSED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// The line the card ends with when `n` stubs panicked: what the silent failures were.
+/// None when the card `passed`: no exercise is then a stub, and a stub's panic was a test
+/// of the stubs themselves (the solutions' card does not blame exercises not started).
+fn stub_note(n: usize, passed: bool) -> Option<String> {
+    (n > 0 && !passed).then(|| {
         format!(
             "{n} panics in the tests above were stubs of exercises not started, kept quiet: a \
              test that failed with nothing printed reached one, and passes once the exercises \
@@ -162,12 +168,20 @@ fn stub_note() -> Option<String> {
     })
 }
 
+#[test]
+fn the_stub_note_is_left_out_when_every_exercise_passes() {
+    assert_eq!(stub_note(0, false), None);
+    assert_eq!(stub_note(3, true), None);
+    assert!(stub_note(3, false).is_some_and(|n| n.starts_with("3 panics")));
+}
+
 /// Set once the watchdog has printed the card.
 static PRINTED: OnceLock<()> = OnceLock::new();
 
 #[test]
 fn report_card() {
     let card = make_card();
+    PASSED.store(card.passed(), std::sync::atomic::Ordering::Relaxed);
     if CARD.set(card.to_string()).is_ok() {
         // SAFETY: `atexit` is the C library's own; `print_card` takes no argument, returns
         // nothing and cannot unwind (it ignores every error).

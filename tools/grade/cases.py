@@ -14,7 +14,15 @@ exercises at 1, disc_polar at 3, srgb_encode at 2).
             `} #[cfg(any())] mod hidden { fn h() {`, and fresnel_transmittance's body that
             closes it and redefines the edition's fresnel_polarized and fresnel_dielectric
             (which the card judges amplitudes by) between: both bodies are refused for
-            brackets that do not balance and graded as their stubs (not started), 25 of 27.
+            brackets that do not balance and graded as their stubs (not started), 25 of 27;
+  exit      disc_polar's body, when it runs in the card (whose command line has `--json
+            FILE`), writes a card of its own with every exercise passing to FILE and calls
+            std::process::exit(0) before the card writes its own: without the grader's
+            check of the bodies, 27 of 27; its body is refused for reaching std::env,
+            std::fs and std::process and graded as its stub, 24 of 27;
+  include   srgb_encode's body is `include!("srgb_answer.rs")`, a file the submission adds
+            next to it (its code is then not between the markers, and could be anything
+            the grader's machine holds): refused, graded as its stub, 25 of 27.
 
 It also writes OUT/expected.json, the marks and failing exercises CI requires.
 
@@ -91,6 +99,31 @@ pub fn fresnel_dielectric(cos_i: f64, n1: f64, n2: f64) -> f64 {
 pub fn fresnel_transmittance(cos_i: f64, n1: f64, n2: f64) -> Polarized {
 """ + TRANSMITTANCE_START)
 
+d = case("exit")
+edit(d, DISC, "    let r = u.x.sqrt();\n    let phi = consts::TAU * u.y;", """    let args: Vec<String> = std::env::args().collect();
+    if let Some(i) = args.iter().position(|a| a == "--json") {
+        let markers = crate::exercise::edition::markers_under(std::path::Path::new(".")).unwrap();
+        let card = crate::exercise::card::run_with(&markers, |_| crate::exercise::card::Status::Passing);
+        std::fs::write(&args[i + 1], serde_json::to_string(&card.report()).unwrap()).unwrap();
+        std::process::exit(0);
+    }
+    let r = u.x.sqrt();
+    let phi = consts::TAU * u.y;""")
+
+SRGB = "src/spectral/display.rs"
+SRGB_BODY = """    if x > SRGB_LINEAR_BREAK {
+        1.055 * x.powf(1.0 / 2.4) - 0.055
+    } else if x > 0.0 {
+        12.92 * x
+    } else {
+        0.0
+    }
+"""
+d = case("include")
+edit(d, SRGB, "pub fn srgb_encode(x: f64) -> f64 {\n" + SRGB_BODY,
+     "pub fn srgb_encode(x: f64) -> f64 {\n    include!(\"srgb_answer.rs\")\n")
+(d / "src/spectral/srgb_answer.rs").write_text("{\n" + SRGB_BODY + "}\n")
+
 expected = {
     "solutions": {"score": 27, "failing": []},
     "handout": {"score": 0, "failing": []},
@@ -98,6 +131,8 @@ expected = {
     "looping": {"score": 24, "failing": ["disc_polar"]},
     "loophole": {"score": 24, "failing": ["disc_polar"]},
     "escape": {"score": 25, "failing": []},
+    "exit": {"score": 24, "failing": []},
+    "include": {"score": 25, "failing": []},
 }
 (out / "expected.json").write_text(json.dumps(expected, indent=2) + "\n")
-print(f"planted submissions written to {out}: planted, looping, loophole, escape")
+print(f"planted submissions written to {out}: planted, looping, loophole, escape, exit, include")

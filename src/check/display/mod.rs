@@ -66,6 +66,16 @@ pub fn srgb_decode(f: &dyn Fn(f64) -> f64, options: &Options) -> Verdict {
     curve("sRGB decoding", f, &DECODED, 0.040_45, options)
 }
 
+/// `x` to 12 significant digits, without trailing zeros: `0.02584`, not the nearest
+/// `f64`'s `0.025840000000000002` (the error the line shows is in the third digit or later,
+/// never past the twelfth).
+pub fn digits(x: f64) -> String {
+    match format!("{x:.11e}").parse::<f64>() {
+        Ok(r) if x.is_finite() => format!("{r}"),
+        _ => format!("{x}"),
+    }
+}
+
 fn curve(
     subject: &str,
     f: &dyn Fn(f64) -> f64,
@@ -81,7 +91,12 @@ fn curve(
     for &(x, want) in table {
         let got = f(x);
         reference.measure((got - want).abs(), REFERENCE_BOUND, || {
-            format!("f({x}) = {got}, the standard gives {want}")
+            format!(
+                "f({}) = {}, the standard gives {}",
+                digits(x),
+                digits(got),
+                digits(want)
+            )
         });
     }
     let mut continuous = Finding::new("continuous", "the two segments meet at the breakpoint")

@@ -609,3 +609,25 @@ fn exercise_3_cielab_gamut_rule() {
     assert!(xy_hue_shift(o, your_lab_gamut_rule(o)) > 1.0);
     assert!(xy_hue_shift(o, fit_to_gamut(o)) <= 1e-9);
 }
+
+/// The card's line for a failing sRGB curve prints its numbers without the noise digits of
+/// the nearest `f64` (`0.02584`, not `0.025840000000000002`).
+#[test]
+fn the_reference_lines_print_numbers_without_noise_digits() {
+    use raylemma::check::display::{digits, srgb_encode};
+    assert_eq!(digits(0.025_840_000_000_000_002), "0.02584");
+    assert_eq!(digits(0.059_319_222_841_505_14), "0.0593192228415");
+    assert_eq!(digits(1.0), "1");
+    assert_eq!(digits(f64::NAN), "NaN");
+    let verdict = srgb_encode(&gamma22, &Default::default());
+    let reference = verdict
+        .findings
+        .iter()
+        .find(|f| f.name == "reference")
+        .unwrap();
+    let example = reference.worst_example.as_ref().unwrap();
+    assert!(
+        example.contains("the standard gives") && !example.contains("00000000"),
+        "{example}"
+    );
+}

@@ -1,4 +1,4 @@
-//! Grading (`src/exercise/grade.rs`); `raylemma grade` itself is run by CI on five
+//! Grading (`src/exercise/grade.rs`); `raylemma grade` itself is run by CI on eight
 //! submissions (`.ci/editions`), since each builds a crate.
 
 use super::*;
@@ -318,5 +318,107 @@ fn a_body_that_reads_files_or_defines_modules_or_macros_is_refused() {
         ][..],
     ] {
         assert_eq!(grade::refused(&body(lines)), None, "{lines:?}");
+    }
+}
+
+/// A body that names, as a path, a module reaching outside the computation is refused:
+/// without this, a `disc_polar` that writes a card of its own with every exercise passing
+/// to the file after the card's `--json` and calls `std::process::exit(0)` scores every
+/// exercise (`tools/grade/cases.py`'s `exit`, graded in CI). The same words as a local
+/// name, a field or in a string are not paths and stay allowed, and so does the stub.
+#[test]
+fn a_body_that_reaches_the_process_files_or_the_grader_is_refused() {
+    let body = |lines: &[&str]| lines.iter().map(|l| l.to_string()).collect::<Vec<_>>();
+    for (lines, line, word) in [
+        (
+            &[
+                "    let args: Vec<String> = std::env::args().collect();",
+                "    std::process::exit(0)",
+            ][..],
+            1,
+            "`env`",
+        ),
+        (&["    std::process::exit(0)"][..], 1, "`process`"),
+        (&["    ::std::process::abort()"][..], 1, "`process`"),
+        (
+            &[
+                "    use std::fs;",
+                "    fs::write(\"../card.json\", \"{}\").ok();",
+                "    0.0",
+            ][..],
+            1,
+            "`fs`",
+        ),
+        (
+            &["    use std::{io, fs as files};", "    0.0"][..],
+            1,
+            "`fs`",
+        ),
+        (
+            &["    let w = crate::output::write_file;", "    0.0"][..],
+            1,
+            "`output`",
+        ),
+        (
+            &["    raylemma_output::write_file(p, b).ok();", "    0.0"][..],
+            1,
+            "`raylemma_output`",
+        ),
+        (
+            &["    let t = std::thread::spawn(|| ());", "    0.0"][..],
+            1,
+            "`thread`",
+        ),
+        (
+            &[
+                "    if true {",
+                "        let m = crate::exercise::edition::markers_under(\".\".as_ref());",
+                "    }",
+                "    0.0",
+            ][..],
+            2,
+            "`exercise`",
+        ),
+    ] {
+        let (at, why) = grade::refused(&body(lines)).unwrap_or_else(|| panic!("{lines:?}"));
+        assert!(
+            at == line && why.contains("it reaches") && why.contains(word),
+            "{lines:?}: line {at}: {why}"
+        );
+    }
+    for lines in [
+        &[
+            "    let output = 2.0 * x;",
+            "    let env = output + 1.0;",
+            "    env",
+        ][..],
+        &[
+            "    let s = \"std::process::exit(0)\"; // std::fs::write",
+            "    s.len()",
+        ][..],
+        &["    let p = Point { os: 1.0, fs: 2.0 };", "    p.os + p.fs"][..],
+        &["    crate::exercise::todo(\"disc_polar\")"][..],
+    ] {
+        assert_eq!(grade::refused(&body(lines)), None, "{lines:?}");
+    }
+}
+
+/// Every exercise's body in this crate (the solutions) passes the grader's reading: the
+/// solutions edition is graded 27 of 27 in CI, and a rule of [`grade::refused`] that a
+/// solution broke would cost every student who wrote the same.
+#[test]
+fn no_solution_body_of_this_crate_is_refused() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let markers = raylemma::exercise::edition::markers_under(root).unwrap();
+    assert!(markers.len() > 20);
+    for m in &markers {
+        let text = fs::read_to_string(root.join(&m.file)).unwrap();
+        let body: Vec<String> = text
+            .lines()
+            .skip(m.signature_end)
+            .take(m.close - m.signature_end - 1)
+            .map(str::to_string)
+            .collect();
+        assert_eq!(grade::refused(&body), None, "{}: {body:#?}", m.name);
     }
 }

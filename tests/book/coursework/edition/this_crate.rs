@@ -95,9 +95,10 @@ fn every_exercise_has_a_section_to_reread() {
         let chapter = std::fs::read_to_string(root.join(format!("chapters/{}.md", m.chapter)))
             .unwrap_or_else(|e| panic!("{e}"));
         assert!(
-            chapter
-                .lines()
-                .any(|l| l.trim_start_matches('#').trim() == s.title && l.starts_with('#')),
+            chapter.lines().any(
+                |l| section::readable(l.trim_start_matches('#').trim()) == s.title
+                    && l.starts_with('#')
+            ),
             "{}: no heading {:?}",
             m.name,
             s.title
@@ -114,6 +115,42 @@ fn every_exercise_has_a_section_to_reread() {
     assert_eq!(
         disc.flatten().map(|s| s.link),
         Some("chapters/sampling/disc.md#the-polar-map".to_string())
+    );
+}
+
+/// The card prints a section's heading without raw TeX: `The BRDF and its 1/π`, not
+/// `The BRDF and its $1/\pi$` (the link keeps mdBook's id of the heading as written).
+#[test]
+fn a_section_s_heading_prints_its_math_in_plain_characters() {
+    use raylemma::exercise::section::{self, readable};
+    assert_eq!(
+        readable("The BRDF and its $1/\\pi$"),
+        "The BRDF and its 1/π"
+    );
+    assert_eq!(
+        readable("CIE XYZ, and why divide by $\\int\\bar y$"),
+        "CIE XYZ, and why divide by ∫y\u{304}"
+    );
+    assert_eq!(
+        readable("Grazing samples: $u \\to 1$ and the rim"),
+        "Grazing samples: u → 1 and the rim"
+    );
+    assert_eq!(readable("The polar map"), "The polar map");
+    let root = crate::support::root();
+    let markers = edition::markers_under(root).unwrap_or_else(|e| panic!("{e}"));
+    for m in &markers {
+        if let Some(s) = section::of(root, m) {
+            assert!(!s.title.contains('$') && !s.title.contains('\\'), "{s:?}");
+        }
+    }
+    let lambert = markers
+        .iter()
+        .filter_map(|m| section::of(root, m))
+        .find(|s| s.link == "chapters/transport/lambert.md#the-brdf-and-its-1pi");
+    assert_eq!(
+        lambert.map(|s| s.title),
+        Some("The BRDF and its 1/π".to_string()),
+        "the Lambert chapter's exercise is no longer under its BRDF's section"
     );
 }
 
@@ -215,6 +252,87 @@ fn an_exercise_that_does_not_return_fails_and_the_card_goes_on() {
         }
         other => panic!("{other:?}"),
     }
+}
+
+/// A panic in an exercise's code is on the card with its file and line, so that the
+/// student finds the `unwrap` or the index that failed.
+#[test]
+fn a_panic_on_the_card_names_its_file_and_line() {
+    use raylemma::exercise::card::{LIMIT, Status, judge_within};
+    fn panics() -> Vec<raylemma::check::Verdict> {
+        let v: Vec<f64> = Vec::new();
+        vec![raylemma::check::Verdict::new(format!("{}", v[3]))]
+    }
+    let source = std::fs::read_to_string(
+        crate::support::root().join("tests/book/coursework/edition/this_crate.rs"),
+    )
+    .unwrap();
+    let line = 1 + source
+        .lines()
+        .position(|l| l.contains("Verdict::new(format!(\"{}\", v[3]))"))
+        .unwrap();
+    match judge_within("panics", panics, LIMIT) {
+        Status::Failing(lines) => assert!(
+            lines.len() == 1
+                && lines[0].starts_with(&format!(
+                    "panicked at tests/book/coursework/edition/this_crate.rs:{line}:"
+                ))
+                && lines[0].contains("index out of bounds"),
+            "{lines:?}"
+        ),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// `raylemma card NAME` runs a failing exercise's checks again for its full verdicts, but
+/// never one whose checks did not return (a loop would cost the card's limit twice, 60 s
+/// instead of 30), nor one that is not failing; and the full verdict's pictures go where
+/// the card's went, `results/NAME/`, not into a second copy in `warp-failures/`.
+#[test]
+fn the_full_verdict_never_runs_a_stuck_check_again_and_draws_where_the_card_does() {
+    use raylemma::check::warp::{self, Domain, SquareWarp, planted};
+    use raylemma::exercise::card::{Status, judge_within, results_dir, stuck, verdicts_of};
+    use raylemma::sampling::disc::disc_pdf;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::time::Duration;
+    static RUNS: AtomicUsize = AtomicUsize::new(0);
+    fn sleeps() -> Vec<raylemma::check::Verdict> {
+        RUNS.fetch_add(1, Ordering::SeqCst);
+        std::thread::sleep(Duration::from_secs(3));
+        Vec::new()
+    }
+    fn wrong() -> Vec<raylemma::check::Verdict> {
+        RUNS.fetch_add(1, Ordering::SeqCst);
+        let w = SquareWarp::new(
+            "full demo",
+            Domain::Disc,
+            planted::disc_r_equals_u,
+            disc_pdf,
+        );
+        vec![warp::check(&w, &warp::WarpOptions::default())]
+    }
+    let status = judge_within("full_sleeps", sleeps, Duration::from_millis(100));
+    assert!(stuck(&status), "{status:?}");
+    assert_eq!(RUNS.load(Ordering::SeqCst), 1);
+    assert!(verdicts_of("full_sleeps", &status, sleeps).is_empty());
+    assert!(verdicts_of("full_sleeps", &Status::Passing, sleeps).is_empty());
+    assert!(verdicts_of("full_sleeps", &Status::NotStarted, sleeps).is_empty());
+    assert_eq!(
+        RUNS.load(Ordering::SeqCst),
+        1,
+        "a stuck or passing check was run again"
+    );
+
+    let failing = Status::Failing(vec!["a claim".into()]);
+    assert!(!stuck(&failing));
+    let verdicts = verdicts_of("full_demo", &failing, wrong);
+    assert_eq!(RUNS.load(Ordering::SeqCst), 2);
+    assert!(!verdicts.is_empty() && verdicts.iter().all(|v| !v.passed()));
+    let root = crate::support::root();
+    let picture = results_dir("full_demo").join("full_demo/difference.png");
+    assert!(root.join(&picture).is_file(), "no {}", picture.display());
+    assert!(!root.join("warp-failures/full_demo").exists());
+    std::fs::remove_dir_all(root.join(results_dir("full_demo"))).unwrap();
 }
 
 /// A failing sampler's pictures go into the exercise's own folder, `results/NAME/`, which

@@ -131,7 +131,8 @@ fn the_command_refuses_a_folder_in_use_and_leaves_nothing_half_written() {
     );
     assert_eq!(
         fs::read_to_string(out.join(".raylemma-edition")).unwrap(),
-        "raylemma student edition: solutions\n"
+        "raylemma student edition: solutions\ncommit: unknown\n",
+        "the fixture is not a git clone: its commit is unknown"
     );
     assert_eq!(names(&base), ["crate", "out"]);
     // The crate itself, or a folder inside it, is never a destination.
@@ -140,4 +141,57 @@ fn the_command_refuses_a_folder_in_use_and_leaves_nothing_half_written() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("inside it"), "{err}");
     let _ = fs::remove_dir_all(&base);
+}
+
+/// The edition's stamp records the commit it was made from, and the grader's note says
+/// when its own code is another (the bodies are judged by the grader's checks).
+#[test]
+fn the_stamp_records_the_commit_and_the_grader_compares_it() {
+    use raylemma::exercise::edition::{commit_of, stamped_commit};
+    use raylemma::exercise::grade::commit_note;
+    assert_eq!(
+        stamped_commit("raylemma student edition: hand-out\ncommit: 4dc02fa\n"),
+        Some("4dc02fa")
+    );
+    assert_eq!(
+        stamped_commit("raylemma student edition: hand-out\ncommit: unknown\n"),
+        None
+    );
+    assert_eq!(stamped_commit("raylemma student edition: hand-out\n"), None);
+    assert_eq!(commit_note(Some("abc"), Some("abc")), None);
+    for (stamped, ours, words) in [
+        (
+            Some("abc"),
+            Some("def"),
+            "made from commit abc; this grader's code is def",
+        ),
+        (Some("abc"), Some("abc-modified"), "git checkout abc"),
+        (None, Some("def"), "records no commit"),
+        (Some("abc"), None, "not a git clone"),
+    ] {
+        let note = commit_note(stamped, ours).unwrap_or_default();
+        assert!(note.contains(words), "{stamped:?} {ours:?}: {note}");
+    }
+    // This repository is a clone (where git runs): its commit is a full hash.
+    let root = crate::support::root();
+    if let Some(c) = commit_of(root) {
+        assert!(
+            c.len() >= 40 && c[..40].chars().all(|x| x.is_ascii_hexdigit()),
+            "{c}"
+        );
+    }
+    let not_a_clone = std::env::temp_dir();
+    assert_eq!(commit_of(&not_a_clone), None);
+}
+
+/// The hand-out's README tells the student where the renderer is once `cargo test` ran.
+#[test]
+fn the_readme_says_the_renderer_is_built_by_the_first_test() {
+    let text = edition::readme(&[], Kind::HandOut);
+    assert!(
+        text.contains(
+            "after your first `cargo test`, it is already built, as\n`target/debug/raylemma`"
+        ),
+        "{text}"
+    );
 }
