@@ -8,6 +8,7 @@ use crate::exercise::registry::EstimateFn;
 use crate::geometry::{Ray, Sphere};
 use crate::sampling::tabulated::{Piecewise1D, PiecewiseLinear1D, Sample};
 use crate::sampling::{cosine, disc, importance, sphere};
+use crate::spectral::wavelength::Wavelengths;
 
 /// A probe: a function run on fixed inputs, its outputs flattened.
 pub type Probe = fn() -> Vec<f64>;
@@ -29,6 +30,24 @@ pub const PROBES: &[(&str, Probe)] = &[
     ("Piecewise1D::sample", || table(Piecewise1D::sample)),
     ("PiecewiseLinear1D::sample", || {
         linear_table(PiecewiseLinear1D::sample)
+    }),
+    ("lambert_brdf", || {
+        brdfs(crate::transport::lambert::lambert_brdf)
+    }),
+    ("roulette", || {
+        roulettes(crate::transport::roulette::roulette)
+    }),
+    ("area_to_solid_angle", || {
+        areas(crate::transport::shadow::area_to_solid_angle)
+    }),
+    ("hero_uniform", || {
+        heroes(crate::spectral::wavelength::hero_uniform)
+    }),
+    ("srgb_encode", || {
+        encodings(crate::spectral::display::srgb_encode)
+    }),
+    ("srgb_decode", || {
+        decodings(crate::spectral::display::srgb_decode)
     }),
 ];
 
@@ -185,5 +204,83 @@ pub fn linear_table(f: fn(&PiecewiseLinear1D, f64) -> Sample) -> Vec<f64> {
                 .into_iter()
                 .flat_map(move |u| sample_outputs(f(t, u)))
         })
+        .collect()
+}
+
+/// Probe inputs of a BRDF: two albedos and every ordered pair of five directions (three
+/// above the surface, two below); the outputs are `f`'s values.
+pub fn brdfs(f: fn(f64, DVec3, DVec3) -> f64) -> Vec<f64> {
+    let directions = [
+        DVec3::Z,
+        DVec3::new(0.6, 0.0, 0.8),
+        DVec3::new(0.0, -0.28, 0.96),
+        DVec3::new(0.8, 0.0, -0.6),
+        DVec3::new(0.0, 0.6, -0.8),
+    ];
+    [0.2, 0.7]
+        .into_iter()
+        .flat_map(|rho| {
+            directions
+                .into_iter()
+                .flat_map(move |wi| directions.into_iter().map(move |wo| f(rho, wi, wo)))
+        })
+        .collect()
+}
+
+/// Probe inputs of Russian roulette: two values, survival probabilities 0, 1/4, 1/2, 1 and
+/// seven points `u` (0 and each probability among them); the outputs are `f`'s values.
+pub fn roulettes(f: fn(f64, f64, f64) -> f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    for value in [1.0, 0.3] {
+        for p in [0.0, 0.25, 0.5, 1.0] {
+            for u in [0.0, 0.1, 0.25, 0.4, 0.5, 0.75, 0.999] {
+                out.push(f(value, p, u));
+            }
+        }
+    }
+    out
+}
+
+/// Probe inputs of the change of variables: area densities 0.5 and 2, distances 0.5 and 3,
+/// cosines 0.8, -0.3, 0 and -0; the outputs are `f`'s values.
+pub fn areas(f: fn(f64, f64, f64) -> f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    for pdf_area in [0.5, 2.0] {
+        for dist in [0.5, 3.0] {
+            for cos_light in [0.8, -0.3, 0.0, -0.0] {
+                out.push(f(pdf_area, dist, cos_light));
+            }
+        }
+    }
+    out
+}
+
+/// Probe inputs of hero wavelengths: seven points `u` in `[0, 1)`; the outputs are, for
+/// each, the lanes, their densities and the hero's density.
+pub fn heroes(f: fn(f64) -> Wavelengths) -> Vec<f64> {
+    [0.0, 0.1, 0.3, 0.5, 0.7, 0.9, 0.999]
+        .into_iter()
+        .flat_map(|u| {
+            let w = f(u);
+            w.lambda.into_iter().chain(w.pdf).chain([w.hero_pdf])
+        })
+        .collect()
+}
+
+/// Probe inputs of an encoding: a negative value, 0, both sides of the breakpoint and the
+/// breakpoint itself, the grey card and 1; the outputs are `f`'s values.
+pub fn encodings(f: fn(f64) -> f64) -> Vec<f64> {
+    [-0.5, 0.0, 0.001, 0.003_130_8, 0.02, 0.1, 0.18, 0.5, 1.0]
+        .into_iter()
+        .map(f)
+        .collect()
+}
+
+/// Probe inputs of a decoding: a negative value, 0, both sides of the breakpoint and the
+/// breakpoint itself, code 188 and 1; the outputs are `f`'s values.
+pub fn decodings(f: fn(f64) -> f64) -> Vec<f64> {
+    [-0.5, 0.0, 0.002, 0.02, 0.040_45, 0.1, 0.25, 0.5, 0.735, 1.0]
+        .into_iter()
+        .map(f)
         .collect()
 }
