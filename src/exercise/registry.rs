@@ -454,62 +454,32 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         name: "lambert_brdf",
         needs: &[],
-        check: || {
-            vec![check::lambert::brdf(
-                &lambert::lambert_brdf,
-                &Options::default(),
-            )]
-        },
+        check: || lambert_brdf_checks(lambert::lambert_brdf),
     },
     Exercise {
         name: "roulette",
         needs: &[],
-        check: || {
-            vec![check::roulette::roulette(
-                &roulette::roulette,
-                &Options::default(),
-            )]
-        },
+        check: || roulette_checks(roulette::roulette),
     },
     Exercise {
         name: "area_to_solid_angle",
         needs: &[],
-        check: || {
-            vec![check::shadow::area_to_solid_angle(
-                &shadow::area_to_solid_angle,
-                &Options::default(),
-            )]
-        },
+        check: || area_to_solid_angle_checks(shadow::area_to_solid_angle),
     },
     Exercise {
         name: "hero_uniform",
         needs: &[],
-        check: || {
-            vec![check::wavelength::hero(
-                &wavelength::hero_uniform,
-                &Options::default(),
-            )]
-        },
+        check: || hero_uniform_checks(wavelength::hero_uniform),
     },
     Exercise {
         name: "srgb_encode",
         needs: &[],
-        check: || {
-            vec![check::display::srgb_encode(
-                &display::srgb_encode,
-                &Options::default(),
-            )]
-        },
+        check: || srgb_encode_checks(display::srgb_encode),
     },
     Exercise {
         name: "srgb_decode",
         needs: &[],
-        check: || {
-            vec![check::display::srgb_decode(
-                &display::srgb_decode,
-                &Options::default(),
-            )]
-        },
+        check: || srgb_decode_checks(display::srgb_decode),
     },
 ];
 
@@ -583,4 +553,40 @@ pub fn unlocks(name: &str) -> Vec<&'static str> {
         .filter(|l| l.needs.contains(&name))
         .map(|l| l.name);
     exercises.chain(later).collect()
+}
+
+/// The checks of `lambert_brdf`, run on the BRDF `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn lambert_brdf_checks(f: fn(f64, DVec3, DVec3) -> f64) -> Vec<Verdict> {
+    vec![check::lambert::brdf(&f, &Options::default())]
+}
+
+/// The checks of `roulette`, run on the rule `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn roulette_checks(f: fn(f64, f64, f64) -> f64) -> Vec<Verdict> {
+    vec![check::roulette::roulette(&f, &Options::default())]
+}
+
+/// The checks of `area_to_solid_angle`, run on the conversion `f` (the crate's, or a twin
+/// of [`super::mistakes`]).
+pub fn area_to_solid_angle_checks(f: fn(f64, f64, f64) -> f64) -> Vec<Verdict> {
+    vec![check::shadow::area_to_solid_angle(&f, &Options::default())]
+}
+
+/// The checks of `hero_uniform`, run on the sampler `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn hero_uniform_checks(f: fn(f64) -> wavelength::Wavelengths) -> Vec<Verdict> {
+    vec![check::wavelength::hero(&f, &Options::default())]
+}
+
+/// The checks of `srgb_encode`, run on the encoding `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn srgb_encode_checks(f: fn(f64) -> f64) -> Vec<Verdict> {
+    vec![check::display::srgb_encode(&f, &Options::default())]
+}
+
+/// The checks of `srgb_decode`, run on the decoding `f` (the crate's, or a twin of
+/// [`super::mistakes`]).
+pub fn srgb_decode_checks(f: fn(f64) -> f64) -> Vec<Verdict> {
+    vec![check::display::srgb_decode(&f, &Options::default())]
 }

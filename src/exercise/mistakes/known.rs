@@ -531,4 +531,229 @@ pub const KNOWN: &[Known] = &[
         words: "z = e^(-2 i delta): the phase's other sign, which for an evanescent film (complex delta) grows instead of decaying",
         fingerprint: 0xb96e4a6b83e95172,
     },
+    Known {
+        exercise: "lambert_brdf",
+        words: "f = rho: the albedo taken for the BRDF's value, without the 1/pi (its albedo is pi rho)",
+        fingerprint: 0x98a27b022e9ba8a8,
+    },
+    Known {
+        exercise: "lambert_brdf",
+        words: "f = rho / (2 pi): the uniform hemisphere's density 1/(2 pi) where 1/pi belongs (its albedo is rho / 2)",
+        fingerprint: 0x4987935f4e7c4e5c,
+    },
+    Known {
+        exercise: "lambert_brdf",
+        words: "f = rho cos(theta_i) / pi: the cosine of the rendering equation folded into the BRDF (not reciprocal, albedo 2 rho / 3)",
+        fingerprint: 0x9eb03ad803b68300,
+    },
+    Known {
+        exercise: "lambert_brdf",
+        words: "f = 1 / pi: rho left out (every surface white)",
+        fingerprint: 0x0137b1abb987537d,
+    },
+    Known {
+        exercise: "lambert_brdf",
+        words: "only w_i tested against the surface: light reflected to directions below it (not reciprocal)",
+        fingerprint: 0xc78b0ae242e7f6e9,
+    },
+    Known {
+        exercise: "lambert_brdf",
+        words: "rho / pi for every pair of directions: the test for directions below the surface left out",
+        fingerprint: 0xfcc8963b6bc01a21,
+    },
+    Known {
+        exercise: "roulette",
+        words: "a survivor keeps f, not f / p: the estimate shrinks to p f (the image darkens)",
+        fingerprint: 0xc66044f7fef236b3,
+    },
+    Known {
+        exercise: "roulette",
+        words: "survives when u <= p (the source notes' rule): p = 0 and u = 0 survive and give 0 / 0",
+        fingerprint: 0xbd3acce999f1c7e8,
+    },
+    Known {
+        exercise: "roulette",
+        words: "survives when u > p: the threshold on the wrong side (right on average only for p = 1/2)",
+        fingerprint: 0x5db517ad6509f7e7,
+    },
+    Known {
+        exercise: "roulette",
+        words: "a survivor carries f / (1 - p): divided by the probability of being killed",
+        fingerprint: 0x898e853c854ea53f,
+    },
+    Known {
+        exercise: "roulette",
+        words: "p read as the probability of termination: survives when u >= p and carries f / (1 - p) (unbiased, but p = 0 always survives and p = 1 never does)",
+        fingerprint: 0xfe0816cc8c976ef3,
+    },
+    Known {
+        exercise: "roulette",
+        words: "a survivor carries f p: p to the power 1 where -1 belongs",
+        fingerprint: 0x584960e20a60e0f3,
+    },
+    Known {
+        exercise: "roulette",
+        words: "a survivor carries f / u: divided by the random number instead of the probability",
+        fingerprint: 0x2b957afb11d53bd0,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "p_A r^2: the light's cosine left out (the density no longer grows as the light turns edge-on)",
+        fingerprint: 0x7bf6182a928ba659,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "p_A / |cos|: the distance squared left out",
+        fingerprint: 0xd93627ba4d7a207f,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "p_A r^2 / cos without the absolute value (the source notes' formula): negative for a light facing the point",
+        fingerprint: 0x76f969721f3f69bb,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "r^2 / |cos|: the area density left out (taken as 1)",
+        fingerprint: 0x860cbe2da69a1ead,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "p_A r / |cos|: the distance where its square belongs",
+        fingerprint: 0xb38aa0323a861ca2,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "p_A r^2 / cos^2: the cosine squared",
+        fingerprint: 0x781f2f409830506d,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "p_A |cos| / r^2: the conversion the wrong way round (solid angle to area)",
+        fingerprint: 0x9b61f4f483f543dd,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "no case for a light seen edge-on: cos = 0 gives infinity instead of 0",
+        fingerprint: 0x0bfac4bce20aeedd,
+    },
+    Known {
+        exercise: "area_to_solid_angle",
+        words: "0 when cos <= 0, as if the light faced away: but a light facing the point has n . w < 0",
+        fingerprint: 0x7af3c4fa11c48ab5,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "lanes rotated without the mod 1: the lanes past 830 nm leave the range (the estimate too dark)",
+        fingerprint: 0x928147dd447362dc,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "each lane weighted by 1 / (N x 470), as if the lanes shared one density: the lanes summed, not averaged (N times too bright)",
+        fingerprint: 0xa6bda6506139df7d,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "the source notes' band: a random wavelength in 380-780 nm and its neighbours 5 nm apart, not lanes spread over the range",
+        fingerprint: 0xdc4b5dcd132a735f,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "the lanes rotated over 380-780 nm with density 1/400: the constants of another visible range",
+        fingerprint: 0x05eb2bfd024f7a41,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "each lane weighted by 470, the range, where its reciprocal 1/470 belongs",
+        fingerprint: 0x02ad9301615808dc,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "hero_pdf left at 0: the hero's own density missing (the hero weighted by nothing once the other lanes terminate)",
+        fingerprint: 0xd0440b3eff93d8f8,
+    },
+    Known {
+        exercise: "hero_uniform",
+        words: "the wrap applied to the wavelength itself (mod 470 nm) instead of to its offset from 360 nm: lanes below 360 nm",
+        fingerprint: 0x3ec0e7ab582df8fb,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "x^(1/2.2): the source notes' pure power law, not the sRGB curve",
+        fingerprint: 0xa782cd50e0c2ddef,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "x^2.2: the gamma applied the wrong way (linear 0.5 becomes code 55, not 188)",
+        fingerprint: 0x719cf56b9509960c,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "1.055 x^2.4 - 0.055: the power 2.4 where 1/2.4 belongs (the decoding's exponent)",
+        fingerprint: 0x83e8b5618828c222,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "the breakpoint 0.04045 (the decoding's, an encoded value) on the linear side: the straight segment thirteen times too long",
+        fingerprint: 0x6e641b2279f8a131,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "1.055 x^(1/2.4) without the offset - 0.055: above 1 at x = 1",
+        fingerprint: 0x5f3802d5846d2ed3,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "x / 12.92 near black: the decoding's straight segment",
+        fingerprint: 0xb066e8c7f9195ea4,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "x >= 0.0031308 on the power segment: the breakpoint itself encoded by the power (the standard puts it on the straight segment)",
+        fingerprint: 0xcd0f79846ad663de,
+    },
+    Known {
+        exercise: "srgb_encode",
+        words: "12.92 x for everything below the breakpoint: negative inputs not clamped to 0 (and NaN kept)",
+        fingerprint: 0x68b9c6ffb77505de,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "V^2.2: the source notes' pure power law, not the sRGB curve",
+        fingerprint: 0x856bce1347190794,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "V^(1/2.2): the gamma applied the wrong way (the encoding's direction)",
+        fingerprint: 0x66b058ac50189f28,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "((V + 0.055) / 1.055)^(1/2.4): the power 1/2.4 where 2.4 belongs (the encoding's exponent)",
+        fingerprint: 0xec09c055792c9ce1,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "the breakpoint 0.0031308 (the encoding's, a linear value) on the encoded side: the power used down to near black",
+        fingerprint: 0xa359a82262655281,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "(V / 1.055)^2.4: the offset + 0.055 left out",
+        fingerprint: 0xa9f9ed3de2441030,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "12.92 V near black: the encoding's straight segment",
+        fingerprint: 0xdf09c8826f9b8583,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "V >= 0.04045 on the power segment: the breakpoint itself decoded by the power (the standard puts it on the straight segment)",
+        fingerprint: 0x8bd5c58454e3021e,
+    },
+    Known {
+        exercise: "srgb_decode",
+        words: "V / 12.92 for everything below the breakpoint: negative inputs not clamped to 0 (and NaN kept)",
+        fingerprint: 0x194e608de4ec306e,
+    },
 ];

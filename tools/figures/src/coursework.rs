@@ -64,6 +64,11 @@ pub fn outputs() -> Vec<Output> {
             what: "verdict: refraction without the square root",
             make: refract_verdict_txt,
         },
+        Output {
+            file: "coursework_mistakes.md",
+            what: "the typical mistakes the card rejects and names, and the alternatives it passes",
+            make: mistakes_md,
+        },
     ]
 }
 
@@ -587,4 +592,100 @@ fn disc_rows_txt(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
         ),
     );
     Ok(text.into_bytes())
+}
+
+/// Whether every verdict passes (and there is one): the card's rule.
+fn all_pass(verdicts: &[Verdict]) -> bool {
+    !verdicts.is_empty() && verdicts.iter().all(Verdict::passed)
+}
+
+/// The chapter's *What the card catches*: for each exercise with a table of typical
+/// mistakes ([`raylemma::exercise::mistakes::twins::tables`]), how many mistakes the card's checks
+/// reject, how many its probe names (each mistake's outputs matched to itself, the right
+/// answer's to none), and how many correct alternatives pass; then every mistake. Every
+/// check is run here, on whatever tables exist.
+fn mistakes_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
+    use raylemma::exercise::mistakes;
+    use std::fmt::Write as _;
+    let mut summary = String::from(
+        "| exercise | mistakes | rejected | named | alternatives | passed |\n|---|---:|---:|---:|---:|---:|\n",
+    );
+    let mut list = String::from(
+        "| exercise | source | the mistake | rejected | named |\n|---|---|---|---|---|\n",
+    );
+    let yes = |b: bool| if b { "yes" } else { "**no**" };
+    let (mut total, mut rejected_all, mut named_all) = (0, 0, 0);
+    let (mut alternatives_all, mut passed_all, mut exercises) = (0, 0, 0);
+    let mut right_named = Vec::new();
+    for t in mistakes::twins::tables() {
+        exercises += 1;
+        let (mut rejected, mut named) = (0, 0);
+        for m in t.mistakes {
+            let caught = !all_pass(&(m.check)());
+            let found = mistakes::matching(t.exercise, mistakes::fingerprint(&(m.probe)()))
+                .is_some_and(|n| n.words == m.words);
+            rejected += usize::from(caught);
+            named += usize::from(found);
+            writeln!(
+                list,
+                "| `{}` | {} | {} | {} | {} |",
+                t.exercise,
+                m.source.word(),
+                m.words.replace('|', "\\|"),
+                yes(caught),
+                yes(found)
+            )?;
+        }
+        if mistakes::recognise(t.exercise).is_some() {
+            right_named.push(t.exercise);
+        }
+        let passed = t
+            .alternatives
+            .iter()
+            .filter(|a| all_pass(&(a.check)()))
+            .count();
+        writeln!(
+            summary,
+            "| `{}` | {} | {rejected} | {named} | {} | {passed} |",
+            t.exercise,
+            t.mistakes.len(),
+            t.alternatives.len()
+        )?;
+        total += t.mistakes.len();
+        rejected_all += rejected;
+        named_all += named;
+        alternatives_all += t.alternatives.len();
+        passed_all += passed;
+    }
+    let rate = if alternatives_all == 0 {
+        0.0
+    } else {
+        (alternatives_all - passed_all) as f64 / alternatives_all as f64
+    };
+    writeln!(
+        summary,
+        "| **all {exercises}** | {total} | {rejected_all} | {named_all} | {alternatives_all} | {passed_all} |"
+    )?;
+    r.number("exercises", exercises as f64, "int");
+    r.number("mistakes", total as f64, "int");
+    r.number("alternatives", alternatives_all as f64, "int");
+    r.number("false_fail_rate", rate, ".2");
+    r.claim(
+        "every_mistake_rejected",
+        rejected_all == total,
+        format!("{rejected_all} of {total} mistakes rejected by the exercises' checks"),
+    );
+    r.claim(
+        "every_mistake_named",
+        named_all == total && right_named.is_empty(),
+        format!(
+            "{named_all} of {total} mistakes named by their probes; right answers named: {right_named:?}"
+        ),
+    );
+    r.claim(
+        "every_alternative_passes",
+        passed_all == alternatives_all,
+        format!("{passed_all} of {alternatives_all} correct alternatives passed"),
+    );
+    Ok(format!("{summary}\nEvery mistake:\n\n{list}").into_bytes())
 }

@@ -9,9 +9,13 @@ use crate::sampling::{cosine, disc, importance, sphere};
 
 mod optics;
 mod sampling;
+mod spectral;
+mod transport;
 
 pub use optics::*;
 pub use sampling::*;
+pub use spectral::*;
+pub use transport::*;
 
 /// A probe: a function run on fixed inputs, its outputs flattened.
 pub type Probe = fn() -> Vec<f64>;
@@ -49,6 +53,24 @@ pub const PROBES: &[(&str, Probe)] = &[
         sellmeier_probe(dispersion::Sellmeier::index)
     }),
     ("airy_r", || airy_probe(thinfilm::airy_r)),
+    ("lambert_brdf", || {
+        brdfs(crate::transport::lambert::lambert_brdf)
+    }),
+    ("roulette", || {
+        roulettes(crate::transport::roulette::roulette)
+    }),
+    ("area_to_solid_angle", || {
+        areas(crate::transport::shadow::area_to_solid_angle)
+    }),
+    ("hero_uniform", || {
+        heroes(crate::spectral::wavelength::hero_uniform)
+    }),
+    ("srgb_encode", || {
+        encodings(crate::spectral::display::srgb_encode)
+    }),
+    ("srgb_decode", || {
+        decodings(crate::spectral::display::srgb_decode)
+    }),
 ];
 
 /// The probe of exercise `name`'s function in this crate.
