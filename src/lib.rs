@@ -12,6 +12,9 @@
 //! * [`data`]: errors of data files (file, line, problem).
 //! * [`exercise`]: coursework: the exercises marked in the source, the student edition
 //!   made from them (`raylemma exercises DIR`) and its report card.
+//! * [`image`]: a render's image (per-pixel means and variances) and its files: OpenEXR
+//!   written and read, EXR headers checked, PNG encoded and decoded; below every module
+//!   that reads or writes an image.
 //! * [`numeric`]: small numerical helpers (`max_abs`, a maximum that keeps a NaN).
 //! * [`output`]: the one writer of every file the library writes: atomic files, sets of
 //!   files that land together or not at all, staged folders.
@@ -32,6 +35,7 @@ pub mod check;
 pub mod data;
 pub mod exercise;
 pub mod geometry;
+pub mod image;
 pub mod numeric;
 pub mod optics;
 pub use raylemma_output as output;

@@ -8,8 +8,9 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use raylemma::check::render::diagnose;
+use raylemma::image::{ExrContents, Image, ImageError};
 use raylemma::render::compare::{self, Estimate};
-use raylemma::render::image::{ExrContents, Image, ImageError};
+use raylemma::spectral::cie::xyz_to_linear_srgb_matrix;
 
 use super::{CmdResult, Failure, Outcome};
 
@@ -48,7 +49,7 @@ pub fn run(args: &CompareArgs) -> CmdResult {
 
 /// The reference: it must carry its variance.
 pub(crate) fn reference(path: &Path) -> Result<Estimate, ImageError> {
-    let contents = ExrContents::read(path)?;
+    let contents = ExrContents::read(path)?.converted(xyz_to_linear_srgb_matrix());
     let channels = contents.channels.join(", ");
     let half = contents.half;
     match contents.into_image() {
@@ -89,7 +90,7 @@ fn read_candidate(
 ) -> Result<(Estimate, String, bool, Option<u64>), ImageError> {
     let mut files = Vec::new();
     for path in paths {
-        let c = ExrContents::read(path)?;
+        let c = ExrContents::read(path)?.converted(xyz_to_linear_srgb_matrix());
         if (c.width, c.height) != size {
             return Err(ImageError::Mismatch(format!(
                 "{}: {}x{}, but the reference is {}x{}",
@@ -219,7 +220,7 @@ fn compare_files(args: &CompareArgs) -> Result<bool, ImageError> {
     }
     if let Some(path) = &args.diff {
         let Image { width, height, .. } = reference.image;
-        raylemma::spectral::display::write_png(path, width, height, &compare::difference_rgb8(&c))?;
+        raylemma::image::png::write_png(path, width, height, &compare::difference_rgb8(&c))?;
         println!("difference image: {}", path.display());
     }
     Ok(c.agree())

@@ -372,7 +372,7 @@ fn one(args: &ConformanceArgs, suite: &Suite, rung: Rung, depth: Option<u32>, le
                 "run {run} (seed {seed}) ended with status 0 but wrote no image"
             ));
         }
-        if let Err(e) = raylemma::render::image::ExrContents::read(&out) {
+        if let Err(e) = raylemma::image::ExrContents::read(&out) {
             return failure(format!(
                 "run {run} (seed {seed}) wrote an image that cannot be read: {e}"
             ));

@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 
 use super::files::Sidecar;
-use super::image::{Image, ImageError};
+use crate::image::{Image, ImageError};
 use crate::stats::welford::combine;
 
 /// One render to pool: its image (with its variances) and its sidecar.

@@ -18,13 +18,11 @@
 //!   hero wavelengths) and ray offsets;
 //! * [`pixel`]: one pixel's generator, samples and colour;
 //! * [`driver`]: tiles, threads and progress: [`render`], [`render_with`], [`render_file`];
-//! * [`image`]: the means and variances of the pixels, and their EXR and PNG encodings;
 //! * [`files`]: the three files of a render (EXR, PNG, the JSON [`Sidecar`]), written
-//!   together or not at all;
+//!   together or not at all (the image itself, [`crate::image::Image`], and its codecs
+//!   are [`crate::image`], below the renderer);
 //! * [`provenance`]: what a reference render was made from (scene, data, code, settings);
 //! * [`merge`]: independent renders of one scene pooled exactly into one;
-//! * [`exr_header`]: an EXR header's claimed sizes checked against the file before the
-//!   reader allocates (chapter *Bad input*);
 //! * [`compare`]: do two renders agree within their noise?
 //! * [`export`]: the scene for other renderers: Mitsuba 3 XML and fully resolved JSON.
 
@@ -32,10 +30,8 @@ pub mod camera;
 pub mod compare;
 pub mod driver;
 pub mod export;
-pub mod exr_header;
 pub mod files;
 pub mod format;
-pub mod image;
 pub mod integrator;
 pub mod merge;
 pub mod pixel;

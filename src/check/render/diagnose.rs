@@ -28,9 +28,9 @@
 
 use glam::{DMat3, DVec2, DVec3};
 
+use crate::image::{Image, ImageError};
 use crate::render::camera::Camera;
 use crate::render::compare::{Comparison, Estimate, compare};
-use crate::render::image::{Image, ImageError};
 use crate::render::scene::{Scene, Surface};
 use crate::spectral::cie::xyz_to_linear_srgb_matrix;
 

@@ -30,7 +30,7 @@ pub mod references;
 pub mod scenes;
 
 use super::{Finding, Options, Verdict};
-use crate::render::image::Image;
+use crate::image::Image;
 use crate::render::scene::{DirectLight, Scene, Wavelength};
 use crate::render::{Progress, render};
 use crate::spectral::emission::{EmissionSampler, colour_proposal};

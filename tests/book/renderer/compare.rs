@@ -18,8 +18,8 @@ use exr::prelude::{
     SmallVec, WritableImage, f16,
 };
 use glam::DVec3;
+use raylemma::image::{ExrContents, Image};
 use raylemma::render::compare::{Estimate, compare, equivalent_z, two_sided_critical};
-use raylemma::render::image::{ExrContents, Image};
 use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
 use raylemma::stats::{sidak, test_alpha};
@@ -388,7 +388,7 @@ fn images_no_comparison_can_use_are_refused_by_name() {
     assert!(e.problem.contains("truncated"), "{e}");
     // A PNG is named as one.
     let png = tmp("image.png");
-    let bytes = raylemma::spectral::display::encode_png(1, 1, &[0, 0, 0]).unwrap();
+    let bytes = raylemma::image::png::encode_png(1, 1, &[0, 0, 0]).unwrap();
     std::fs::write(&png, bytes).unwrap();
     let e = ExrContents::read(&png).unwrap_err();
     assert!(e.problem.contains("a PNG image"), "{e}");

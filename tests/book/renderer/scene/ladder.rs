@@ -121,7 +121,7 @@ fn the_card_s_diagnosis_names_each_mistake() {
     let file = SceneFile::load(&dir.join("01-direct-quad.toml")).unwrap();
     let load = |name: &str| {
         Estimate::from_variance(
-            render::image::Image::read_exr(
+            raylemma::image::Image::read_exr(
                 &root().join(format!("figures/reference/conformance/{name}.exr")),
             )
             .unwrap(),
