@@ -7,9 +7,9 @@
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use raylemma::check::render::diagnose;
+use raylemma::conformance::compare::{self, Estimate};
+use raylemma::conformance::diagnose;
 use raylemma::image::{ExrContents, Image, ImageError};
-use raylemma::render::compare::{self, Estimate};
 use raylemma::spectral::cie::xyz_to_linear_srgb_matrix;
 
 use super::{CmdResult, Failure, Outcome};

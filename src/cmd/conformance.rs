@@ -1,5 +1,5 @@
 //! `raylemma conformance --renderer 'CMD {scene} {out} {spp} {seed}'`: another renderer
-//! on the conformance ladder (`scenes/conformance/`, [`raylemma::check::render::ladder`]).
+//! on the conformance ladder (`scenes/conformance/`, [`raylemma::conformance::ladder`]).
 //! Each rung, at each depth it has a reference for, is written in the chosen format, the
 //! renderer is run `--runs` times with different seeds, its images are compared with the
 //! reference (`figures/reference/conformance/`), and a card says per rung and depth
@@ -13,11 +13,11 @@ use std::time::Duration;
 
 use clap::{Args, ValueEnum};
 use raylemma::check::external::ProgramError;
-use raylemma::check::render::diagnose::{self, diagnose};
-use raylemma::check::render::ladder::{self, LADDER, Rung, header};
+use raylemma::conformance::compare::{self, Failures};
+use raylemma::conformance::diagnose::{self, diagnose};
+use raylemma::conformance::export::{SceneFile, json, mitsuba, pbrt};
+use raylemma::conformance::ladder::{self, LADDER, Rung, header};
 use raylemma::output::FileError;
-use raylemma::render::compare::{self, Failures};
-use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
 
 use super::{CmdResult, Failure, Outcome, xml_escape};
 

@@ -18,11 +18,9 @@
 //! claims of one check, with a fixed seed; the planted twins of [`planted`] are biases of
 //! known size that each check must reject.
 
-pub mod diagnose;
 pub mod edges;
 pub mod exact;
 pub mod independence;
-pub mod ladder;
 pub mod pictures;
 pub mod planted;
 pub mod pool;

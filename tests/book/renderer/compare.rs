@@ -18,8 +18,8 @@ use exr::prelude::{
     SmallVec, WritableImage, f16,
 };
 use glam::DVec3;
+use raylemma::conformance::compare::{Estimate, compare, equivalent_z, two_sided_critical};
 use raylemma::image::{ExrContents, Image};
-use raylemma::render::compare::{Estimate, compare, equivalent_z, two_sided_critical};
 use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
 use raylemma::stats::{sidak, test_alpha};
@@ -413,7 +413,7 @@ fn images_no_comparison_can_use_are_refused_by_name() {
 /// same candidates 3 % brighter still DIFFER. Statistical: one test at the suite's level.
 #[test]
 fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
-    use raylemma::render::compare::add_half_rounding;
+    use raylemma::conformance::compare::add_half_rounding;
     let mut rng = rng::seeded(2718);
     let exact = |i: usize| DVec3::new(0.2 + 0.003 * i as f64, 0.5, 0.25 + 0.001 * (i % 7) as f64);
     let noise = |rng: &mut Rng, sd: f64| {

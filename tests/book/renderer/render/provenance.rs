@@ -31,7 +31,7 @@ fn the_renderer_source_closure_holds_what_makes_pixels_and_nothing_of_the_checks
     }
     for unrelated in [
         "src/check/",
-        "src/render/compare.rs",
+        "src/conformance/compare.rs",
         "src/spectral/upsample.rs",
         "src/stats/ks.rs",
     ] {
