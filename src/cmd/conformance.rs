@@ -13,6 +13,7 @@ use std::time::Duration;
 
 use clap::{Args, ValueEnum};
 use raylemma::check::external::ProgramError;
+use raylemma::conformance::candidate;
 use raylemma::conformance::compare::{self, Failures};
 use raylemma::conformance::diagnose::{self, diagnose};
 use raylemma::conformance::export::{SceneFile, json, mitsuba, pbrt};
@@ -384,10 +385,10 @@ fn one(args: &ConformanceArgs, suite: &Suite, rung: Rung, depth: Option<u32>, le
             .dir
             .join("figures/reference/conformance")
             .join(format!("{}.exr", ladder::reference_name(&rung, d)));
-        super::compare::reference(&path)
+        candidate::reference(&path)
     };
     let result = reference_of(depth).and_then(|reference| {
-        let (candidate, _, _) = super::compare::candidate(&outs, &reference, Some(args.spp))?;
+        let (candidate, _, _) = candidate::candidate(&outs, &reference, Some(args.spp))?;
         let c = compare::compare(&reference, &candidate, level)?;
         Ok((reference, candidate, c))
     });

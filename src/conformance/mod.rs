@@ -2,11 +2,12 @@
 //! which they read but which never reads them: a scene exported to Mitsuba 3, pbrt-v4 or
 //! fully resolved JSON ([`export`]); the conformance ladder of scenes, one feature each
 //! ([`ladder`]); independent renders pooled into one ([`merge`]); a candidate's EXR files
-//! read and compared with a reference within their noise ([`compare`]); a disagreement
+//! read ([`candidate`]) and compared with a reference within their noise ([`compare`]); a disagreement
 //! diagnosed ([`diagnose`]). The images and their files (EXR header checks included) are
 //! [`crate::image`]. Chapters: *Comparing images* (`chapters/renderer/compare.md`) and
 //! *Reference scenes and interop* (`chapters/renderer/scenes.md`).
 
+pub mod candidate;
 pub mod compare;
 pub mod diagnose;
 pub mod export;
