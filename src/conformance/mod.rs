@@ -3,13 +3,16 @@
 //! fully resolved JSON ([`export`]); the conformance ladder of scenes, one feature each
 //! ([`ladder`]); independent renders pooled into one ([`merge`]); a candidate's EXR files
 //! read ([`candidate`]) and compared with a reference within their noise ([`compare`]); a disagreement
-//! diagnosed ([`diagnose`]). The images and their files (EXR header checks included) are
+//! diagnosed ([`diagnose`]); another renderer run on the whole ladder ([`run`]) and its
+//! conformance card as text, JSON and JUnit ([`card`]). The images and their files (EXR header checks included) are
 //! [`crate::image`]. Chapters: *Comparing images* (`chapters/renderer/compare.md`) and
 //! *Reference scenes and interop* (`chapters/renderer/scenes.md`).
 
 pub mod candidate;
+pub mod card;
 pub mod compare;
 pub mod diagnose;
 pub mod export;
 pub mod ladder;
 pub mod merge;
+pub mod run;

@@ -65,8 +65,8 @@ fn the_code_version_is_the_same_wherever_the_project_lies() {
 /// Copies every file of `src/` and `data/` and `Cargo.lock` under `to`: all that
 /// `code_version` may read.
 fn copy_sources(root: &std::path::Path, to: &std::path::Path) {
-    let files = raylemma::output::files_under(root, &["src", "data"])
-        .unwrap_or_else(|e| panic!("{e}"));
+    let files =
+        raylemma::output::files_under(root, &["src", "data"]).unwrap_or_else(|e| panic!("{e}"));
     for f in files.iter().chain([&root.join("Cargo.lock")]) {
         let rel = f.strip_prefix(root).unwrap_or(f);
         let dest = to.join(rel);
