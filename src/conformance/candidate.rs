@@ -169,7 +169,7 @@ fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), I
 /// status 2).
 ///
 /// # Errors
-/// `alpha` not in (0, 1), or as [`reference`], [`candidate`], [`compare::compare`] and
+/// `alpha` not in (0, 1), or as [`reference()`], [`candidate()`], [`compare::compare`] and
 /// the writing of the difference image.
 pub fn compare_files(
     reference_path: &Path,

@@ -47,7 +47,7 @@ pub struct Suite {
     pub dir: PathBuf,
     /// "built into this binary" or the folder given.
     pub source: String,
-    /// FNV-1a of every file of [`ladder::SUITE`]'s list, its path then its bytes, in hexadecimal:
+    /// FNV-1a of every file of [`super::ladder::SUITE`]'s list, its path then its bytes, in hexadecimal:
     /// the same for a folder whose files are the built-in ones.
     pub hash: String,
 }
