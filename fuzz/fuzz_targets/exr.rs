@@ -1,5 +1,5 @@
 //! Fuzz target of the EXR reader that `raylemma compare` uses
-//! (`raylemma::render::image::ExrContents::read`): any bytes give the image or a
+//! (`raylemma::image::ExrContents::read`): any bytes give the image or a
 //! `FileError`, never a panic, and no allocation the file's own size does not justify
 //! (`tools/fuzz/run` runs it with `-malloc_limit_mb` and `-rss_limit_mb`). The seeds are
 //! the crafted headers of `tests/data/exr/` and a small render.
@@ -7,7 +7,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use raylemma::render::image::ExrContents;
+use raylemma::image::ExrContents;
 
 #[path = "support.rs"]
 mod support;

@@ -43,8 +43,8 @@
 //! * [`wavelength`]: uniform hero wavelengths (*Wavelength sampling*);
 //! * [`display`]: the sRGB transfer curve (*From spectrum to display*);
 //! * [`render`]: the path tracer against images known exactly, its estimators against one
-//!   another, its canonical scenes against their references, and the conformance ladder
-//!   (*Testing the renderer*, *Reference scenes and interop*).
+//!   another, its canonical scenes against their references (*Testing the renderer*,
+//!   *Reference scenes and interop*; the conformance ladder is [`crate::conformance`]).
 //!
 //! [`max_abs`] is shared by all of them. The sphere checker's [`crate::real::Real`] (a
 //! scalar, `f32` or `f64`, with its vector, ray and sphere, so that one checker serves both

@@ -2,14 +2,13 @@
 //! with a reference within their noise? The reference carries its variance channels (a
 //! raylemma render); the candidate is one image with variance channels, or several
 //! independent plain RGB images of the scene (different seeds), whose spread gives its
-//! variance. Exit status 0 if they agree, 1 if they differ, 2 for bad input.
+//! variance. Exit status 0 if they agree, 1 if they differ, 2 for bad input. The reading
+//! and the comparison are `raylemma::conformance::candidate`.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Args;
-use raylemma::check::render::diagnose;
-use raylemma::render::compare::{self, Estimate};
-use raylemma::render::image::{ExrContents, Image, ImageError};
+use raylemma::conformance::candidate;
 
 use super::{CmdResult, Failure, Outcome};
 
@@ -39,188 +38,16 @@ pub struct CompareArgs {
 
 /// Runs `raylemma compare`: agree (0), differ (1), bad input (2).
 pub fn run(args: &CompareArgs) -> CmdResult {
-    match compare_files(args) {
+    let diff = args.diff.as_deref();
+    match candidate::compare_files(
+        &args.reference,
+        &args.candidates,
+        args.alpha,
+        args.spp,
+        diff,
+    ) {
         Ok(true) => Ok(Outcome::Done),
         Ok(false) => Ok(Outcome::Negative),
         Err(e) => Err(Failure::from(e)),
     }
-}
-
-/// The reference: it must carry its variance.
-pub(crate) fn reference(path: &Path) -> Result<Estimate, ImageError> {
-    let contents = ExrContents::read(path)?;
-    let channels = contents.channels.join(", ");
-    let half = contents.half;
-    match contents.into_image() {
-        Some(image) => Ok(rounded(Estimate::from_variance(image), half)),
-        None => Err(ImageError::Mismatch(format!(
-            "{}: the reference has no variance channels var.R, var.G, var.B (it has {channels}); \
-             the reference must be a render with its variance, such as `raylemma render` writes \
-             or figures/reference/NAME.exr",
-            path.display()
-        ))),
-    }
-}
-
-// ANCHOR: candidate
-/// The candidate: one image with its variance channels, or the spread of two or more;
-/// its variances floored by the reference's ([`Estimate::floor_from_reference`]) when its
-/// samples per pixel are known (each image's `spp` attribute, else `spp`).
-pub(crate) fn candidate(
-    paths: &[PathBuf],
-    reference: &Estimate,
-    spp: Option<u32>,
-) -> Result<(Estimate, String, bool), ImageError> {
-    let size = (reference.image.width, reference.image.height);
-    let (mut estimate, name, from_xyz, samples) = read_candidate(paths, size, spp)?;
-    let floored = samples.is_some_and(|n| estimate.floor_from_reference(reference, n));
-    if !floored {
-        estimate.source +=
-            "; not floored by the reference's variance (its samples per pixel unknown: pass --spp)";
-    }
-    Ok((estimate, name, from_xyz))
-}
-
-/// The candidate as read, and its samples per pixel in all when every image's is known.
-fn read_candidate(
-    paths: &[PathBuf],
-    size: (u32, u32),
-    spp: Option<u32>,
-) -> Result<(Estimate, String, bool, Option<u64>), ImageError> {
-    let mut files = Vec::new();
-    for path in paths {
-        let c = ExrContents::read(path)?;
-        if (c.width, c.height) != size {
-            return Err(ImageError::Mismatch(format!(
-                "{}: {}x{}, but the reference is {}x{}",
-                path.display(),
-                c.width,
-                c.height,
-                size.0,
-                size.1
-            )));
-        }
-        files.push(c);
-    }
-    if let [one] = &files[..] {
-        let path = paths[0].display();
-        let name = path.to_string();
-        return match one.clone().into_image() {
-            Some(image) => Ok((
-                xyz_noted(
-                    rounded(Estimate::from_variance(image), one.half),
-                    one.from_xyz,
-                ),
-                name,
-                one.from_xyz,
-                one.spp.map(u64::from),
-            )),
-            None => Err(ImageError::Mismatch(format!(
-                "{path} is a plain image without variance channels, and it is the only candidate: \
-                 one image cannot say how noisy it is. Render the scene several times with \
-                 different seeds (for example 16 renders of a sixteenth of the samples each) and \
-                 pass them all: raylemma compare REF.exr render-1.exr render-2.exr ...; or write \
-                 the variance of each pixel's mean as channels var.R, var.G, var.B"
-            ))),
-        };
-    }
-    let means: Vec<&[glam::DVec3]> = files.iter().map(|c| &c.mean[..]).collect();
-    refuse_identical(paths, &means)?;
-    let mut estimate = Estimate::from_spread(size.0, size.1, &means)?;
-    if files.iter().any(|c| c.var.is_some()) {
-        estimate.source += "; their own variance channels are not used";
-    }
-    let from_xyz = files.iter().any(|c| c.from_xyz);
-    let estimate = xyz_noted(rounded(estimate, files.iter().any(|c| c.half)), from_xyz);
-    let name = format!(
-        "{} candidates ({} ... {})",
-        paths.len(),
-        paths[0].display(),
-        paths[paths.len() - 1].display()
-    );
-    let samples = files
-        .iter()
-        .map(|c| c.spp.or(spp).map(u64::from))
-        .sum::<Option<u64>>();
-    Ok((estimate, name, from_xyz, samples))
-}
-// ANCHOR_END: candidate
-
-/// `estimate` with the rounding of half-float means added to its variances
-/// ([`compare::add_half_rounding`]) if `half`.
-fn rounded(mut estimate: Estimate, half: bool) -> Estimate {
-    if half {
-        compare::add_half_rounding(&mut estimate);
-    }
-    estimate
-}
-
-/// `estimate` with a note, if `from_xyz`, that its means were converted from CIE XYZ.
-fn xyz_noted(mut estimate: Estimate, from_xyz: bool) -> Estimate {
-    if from_xyz {
-        estimate.source += "; its channels X, Y, Z (CIE XYZ) converted to linear sRGB";
-    }
-    estimate
-}
-
-/// Candidates rendered with the same seed (a renderer's default, often) are the same
-/// image: their spread is zero, and every pixel that differs from the reference at all
-/// would fail. Two identical candidates are refused, naming them.
-fn refuse_identical(paths: &[PathBuf], means: &[&[glam::DVec3]]) -> Result<(), ImageError> {
-    // Black images are the same whatever the seed: they have no noise to hide, and a
-    // black candidate is compared (and differs from any reference that is not black).
-    if means
-        .iter()
-        .all(|m| m.iter().all(|&p| p == glam::DVec3::ZERO))
-    {
-        return Ok(());
-    }
-    let same: Vec<usize> = (1..means.len()).filter(|&j| means[j] == means[0]).collect();
-    if same.len() + 1 == means.len() {
-        return Err(ImageError::Mismatch(format!(
-            "these {} images are identical ({} ... {}): their spread says nothing of their noise. \
-             Render each with a different seed (Mitsuba: `mi.render(scene, seed=k)` or \
-             `<integer name=\"seed\" value=\"k\"/>` in the sampler; raylemma: --seed k)",
-            means.len(),
-            paths[0].display(),
-            paths[paths.len() - 1].display()
-        )));
-    }
-    for i in 0..means.len() {
-        if let Some(j) = (i + 1..means.len()).find(|&j| means[i] == means[j]) {
-            return Err(ImageError::Mismatch(format!(
-                "{} and {} are the same image: render each candidate with a different seed",
-                paths[i].display(),
-                paths[j].display()
-            )));
-        }
-    }
-    Ok(())
-}
-
-/// `Ok(true)`: agree, `Ok(false)`: differ; an error is returned for bad input (exit
-/// status 2).
-fn compare_files(args: &CompareArgs) -> Result<bool, ImageError> {
-    if !(args.alpha > 0.0 && args.alpha < 1.0) {
-        return Err(ImageError::Parameter(format!(
-            "--alpha {} must be in (0, 1)",
-            args.alpha
-        )));
-    }
-    let reference = reference(&args.reference)?;
-    let (candidate, name, from_xyz) = candidate(&args.candidates, &reference, args.spp)?;
-    let c = compare::compare(&reference, &candidate, args.alpha)?;
-    let names = [args.reference.display().to_string(), name];
-    print!("{}", c.report([&names[0], &names[1]]));
-    if !c.agree()
-        && let Some(hint) = diagnose::xyz_swapped(&reference.image, &candidate.image, from_xyz)
-    {
-        println!("hint: {hint}");
-    }
-    if let Some(path) = &args.diff {
-        let Image { width, height, .. } = reference.image;
-        raylemma::spectral::display::write_png(path, width, height, &compare::difference_rgb8(&c))?;
-        println!("difference image: {}", path.display());
-    }
-    Ok(c.agree())
 }

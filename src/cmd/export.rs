@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
-use raylemma::render::export::{SceneFile, json, mitsuba, pbrt};
+use raylemma::conformance::export::{SceneFile, json, mitsuba, pbrt};
 
 use super::{CmdResult, Failure, done};
 

@@ -1,12 +1,13 @@
 //! `raylemma merge A.exr B.exr ... --out M.exr`: pools independent renders of one scene
-//! (different seeds) into one, exactly ([`raylemma::render::merge`]), and writes `M.exr`,
+//! (different seeds) into one, exactly ([`raylemma::conformance::merge`]), and writes `M.exr`,
 //! `M.png` and `M.json` together. Renders of different scenes, settings, sizes or builds,
 //! and two with a seed in common, are bad input (exit status 2).
 
 use std::path::PathBuf;
 
 use clap::Args;
-use raylemma::render::{self, merge};
+use raylemma::conformance::merge;
+use raylemma::render;
 
 use super::{CmdResult, Failure, done};
 

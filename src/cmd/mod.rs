@@ -82,13 +82,7 @@ pub fn done(result: Result<(), Failure>) -> CmdResult {
     result.map(|()| Outcome::Done)
 }
 
-/// `s` as XML text or attribute value (the JUnit files of `conformance` and `grade`).
-pub fn xml_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
+pub use raylemma::conformance::card::xml_escape;
 
 /// The project root: this binary is built from it.
 pub fn root() -> PathBuf {

@@ -14,10 +14,10 @@ use rayon::prelude::*;
 use super::camera::Camera;
 use super::files::Sidecar;
 use super::format;
-use super::image::{Image, Welford};
 use super::pixel::{PixelNumbers, pixel_rng, render_pixel};
 use super::scene::Scene;
 use super::tracer::Tracer;
+use crate::image::{Image, Welford};
 use crate::spectral::wavelength::Wavelengths;
 
 /// The side of the square tiles the image is split into for the worker threads.

@@ -9,9 +9,11 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
-use super::image::Image;
 use super::provenance::MadeFrom;
+use crate::image::png::encode_png;
+use crate::image::{Image, ImageError};
 use crate::output::{self, FileError, FileSet};
+use crate::spectral::display;
 
 /// What a render was, for its JSON sidecar.
 #[derive(Clone, Debug, PartialEq)]
@@ -192,10 +194,21 @@ pub fn stage_outputs(
     output::create_dir_all(dir)?;
     let [exr, png, json] = output_paths(dir, stem);
     files.write_with(&exr, |f| image.encode_exr(f))?;
-    let bytes = image
-        .encode_png(0.0)
-        .map_err(|e| FileError::new(&png, e.to_string()))?;
+    let bytes = encode_display_png(image, 0.0).map_err(|e| FileError::new(&png, e.to_string()))?;
     files.write(&png, &bytes)?;
     files.write(&json, sidecar.to_json(image).as_bytes())?;
     Ok([exr, png, json])
+}
+
+/// The means of `image` as the bytes of an 8-bit sRGB PNG, through the display chapter's
+/// rules (exposure `2^stops`, fit to gamut, the sRGB curve: [`display::to_display_rgb8`]).
+///
+/// # Errors
+/// As [`encode_png`].
+pub fn encode_display_png(image: &Image, stops: f64) -> Result<Vec<u8>, ImageError> {
+    encode_png(
+        image.width,
+        image.height,
+        &display::to_display_rgb8(&image.mean, stops),
+    )
 }

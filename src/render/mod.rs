@@ -1,11 +1,12 @@
-//! The reference renderer. Chapters: *The path tracer* (`chapters/renderer/path-tracer.md`),
-//! *Comparing images* (`chapters/renderer/compare.md`) and *Reference scenes and interop*
-//! (`chapters/renderer/scenes.md`).
+//! The reference renderer, and only it. Chapters: *The path tracer*
+//! (`chapters/renderer/path-tracer.md`) and *Reference scenes and interop*
+//! (`chapters/renderer/scenes.md`). The tools for other renderers (export, the conformance
+//! ladder, merge, compare, diagnosis) are [`crate::conformance`], beside it.
 //!
 //! A scene file goes through these files, in this order:
 //!
-//! * [`format`](mod@format): the TOML file as written, and the entry points [`parse`] and
-//!   [`load`];
+//! * [`format`](mod@format): the TOML file as written, the entry points [`parse`] and
+//!   [`load`], and the scene with the lines of its parts (`SceneFile`);
 //! * `raw` (private): serde's raw tables of the file, with byte spans, and the helpers that
 //!   read them (the line of a span, the file's hash);
 //! * `validate` (private): the checker that turns the raw tables into the model, or
@@ -18,26 +19,16 @@
 //!   hero wavelengths) and ray offsets;
 //! * [`pixel`]: one pixel's generator, samples and colour;
 //! * [`driver`]: tiles, threads and progress: [`render`], [`render_with`], [`render_file`];
-//! * [`image`]: the means and variances of the pixels, and their EXR and PNG encodings;
 //! * [`files`]: the three files of a render (EXR, PNG, the JSON [`Sidecar`]), written
-//!   together or not at all;
+//!   together or not at all (the image itself, [`crate::image::Image`], and its codecs
+//!   are [`crate::image`], below the renderer);
 //! * [`provenance`]: what a reference render was made from (scene, data, code, settings);
-//! * [`merge`]: independent renders of one scene pooled exactly into one;
-//! * [`exr_header`]: an EXR header's claimed sizes checked against the file before the
-//!   reader allocates (chapter *Bad input*);
-//! * [`compare`]: do two renders agree within their noise?
-//! * [`export`]: the scene for other renderers: Mitsuba 3 XML and fully resolved JSON.
 
 pub mod camera;
-pub mod compare;
 pub mod driver;
-pub mod export;
-pub mod exr_header;
 pub mod files;
 pub mod format;
-pub mod image;
 pub mod integrator;
-pub mod merge;
 pub mod pixel;
 pub mod provenance;
 mod raw;

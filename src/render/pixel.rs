@@ -7,9 +7,9 @@ use glam::{DVec2, DVec3};
 use rand::RngExt;
 
 use super::camera::Camera;
-use super::image::Welford;
 use super::integrator::{self, Lanes};
 use super::tracer::Tracer;
+use crate::image::Welford;
 use crate::rng::Rng;
 use crate::spectral::cie;
 use crate::spectral::wavelength::{N, Wavelengths};

@@ -189,7 +189,9 @@ fn literal_arguments<'t>(text: &'t str, mac: &str) -> Vec<&'t str> {
 }
 
 /// The source closure of the renderer under `root`: every file of `src/render/` that makes
-/// a render's files (all but `compare.rs` and this one), every library file they refer to, transitively, the module file of every folder on the way,
+/// a render's files (all but this one; the tools for other renderers are
+/// `crate::conformance`, outside it), every library file they refer to, transitively, the
+/// module file of every folder on the way,
 /// the data files compiled in, and `Cargo.lock`. Sorted, relative to `root`.
 ///
 /// # Errors
@@ -204,7 +206,7 @@ pub fn source_closure(root: &Path) -> Result<Vec<PathBuf>, FileError> {
         }
     };
     for p in crate::output::files_under(&src, &["render"])? {
-        let not_pixels = ["compare.rs", "provenance.rs"]
+        let not_pixels = ["provenance.rs"]
             .iter()
             .any(|n| p.file_name().is_some_and(|f| f == *n));
         if p.extension().is_some_and(|x| x == "rs") && !not_pixels {

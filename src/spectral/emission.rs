@@ -22,7 +22,7 @@ use glam::DVec3;
 use super::spectrum::{Table, builtin};
 use super::{cie, display};
 use crate::data::DataError;
-use crate::render::image::ImageError;
+use crate::image::{ImageError, png};
 use crate::sampling::tabulated::{PiecewiseLinear1D, TableError};
 
 // ---------------------------------------------------------------------------------------
@@ -231,7 +231,7 @@ pub const IMAGE_MAX_HEIGHT: u32 = 4096;
 /// (RGBA, 8 bits a channel: 16-bit channels are cut to 8).
 const IMAGE_MAX_BYTES: usize = 32 << 20;
 /// A pixel is dark when its luma (0-255, the sRGB weights of
-/// [`display::decode_png_luma`]) is below this.
+/// [`png::decode_png_luma`]) is below this.
 pub const DARK_BELOW: u8 = 128;
 
 /// The wavelengths of the image columns: 380, 381, ..., 830 nm.
@@ -258,7 +258,7 @@ pub fn parse_image(bytes: &[u8], file: &str) -> Result<Table, DataError> {
     let undecodable = |e: ImageError| err(format!("cannot decode the image: {e}"));
     // The header's size is judged before a pixel is decoded: a few hundred bytes can
     // declare an image of gigabytes.
-    let (width, height) = display::png_size(bytes).map_err(undecodable)?;
+    let (width, height) = png::png_size(bytes).map_err(undecodable)?;
     if width != IMAGE_WIDTH {
         return Err(err(format!(
             "the image is {width} pixels wide; it must be {IMAGE_WIDTH}, one column per \
@@ -278,7 +278,7 @@ pub fn parse_image(bytes: &[u8], file: &str) -> Result<Table, DataError> {
             1.0 / f64::from(IMAGE_MAX_HEIGHT)
         )));
     }
-    let img = display::decode_png_luma(bytes, IMAGE_MAX_BYTES).map_err(undecodable)?;
+    let img = png::decode_png_luma(bytes, IMAGE_MAX_BYTES).map_err(undecodable)?;
     let values: Vec<f64> = (0..width)
         .map(|x| {
             let dark = (0..height)
@@ -338,7 +338,7 @@ pub fn write_image(table: &Table, height: u32) -> Result<Vec<u8>, ImageError> {
             grey[(y * IMAGE_WIDTH + x) as usize] = 0;
         }
     }
-    display::encode_grey_png(IMAGE_WIDTH, height, &grey)
+    png::encode_grey_png(IMAGE_WIDTH, height, &grey)
 }
 // ANCHOR_END: write_image
 

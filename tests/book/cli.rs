@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use glam::DVec3;
-use raylemma::render::image::Image;
+use raylemma::image::Image;
 use raylemma::rng;
 use raylemma::rng::standard_normal;
 use raylemma::stats::test_alpha;
@@ -216,7 +216,7 @@ fn compare_refuses_what_it_cannot_judge_with_the_file_and_the_reason() {
         &["bad-cut.exr", "truncated"],
     );
     let png = tmp("bad.png");
-    let bytes = raylemma::spectral::display::encode_png(1, 1, &[0, 0, 0]).unwrap();
+    let bytes = raylemma::image::png::encode_png(1, 1, &[0, 0, 0]).unwrap();
     std::fs::write(&png, bytes).unwrap();
     refused(
         &compare_files(&reference, &[two[0].clone(), png], &[]),

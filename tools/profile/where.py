@@ -39,7 +39,7 @@ def part_of(file, func):
         return PART_ORDER[3]
     if "rand_pcg" in f or "/rand-" in f:
         return PART_ORDER[4]
-    if any(s in f for s in ("exr-", "miniz", "fdeflate", "png-", "image-", "render/image.rs", "render/files.rs", "output.rs", "zune", "crc32", "adler")):
+    if any(s in f for s in ("exr-", "miniz", "fdeflate", "png-", "image-", "image/exr.rs", "image/png.rs", "render/files.rs", "output.rs", "zune", "crc32", "adler")):
         return PART_ORDER[6]
     if "render/integrator.rs" in f:
         return PART_ORDER[5]

@@ -31,7 +31,7 @@ use super::pool::{self, Expected};
 use super::{
     ExactScene, Options, Rendered, Renderer, SEED, Verdict, edge_scenes, judge, scaled_spp, scenes,
 };
-use crate::render::image::Image;
+use crate::image::Image;
 use crate::render::pixel::PixelNumbers;
 use crate::render::render_from;
 use crate::render::scene::Scene;

@@ -18,11 +18,9 @@
 //! claims of one check, with a fixed seed; the planted twins of [`planted`] are biases of
 //! known size that each check must reject.
 
-pub mod diagnose;
 pub mod edges;
 pub mod exact;
 pub mod independence;
-pub mod ladder;
 pub mod pictures;
 pub mod planted;
 pub mod pool;
@@ -30,7 +28,7 @@ pub mod references;
 pub mod scenes;
 
 use super::{Finding, Options, Verdict};
-use crate::render::image::Image;
+use crate::image::Image;
 use crate::render::scene::{DirectLight, Scene, Wavelength};
 use crate::render::{Progress, render};
 use crate::spectral::emission::{EmissionSampler, colour_proposal};

@@ -9,7 +9,8 @@ use glam::DVec3;
 
 use super::Rendered;
 use crate::check::Verdict;
-use crate::spectral::display::{to_display_rgb8, write_png};
+use crate::image::png::write_png;
+use crate::spectral::display::to_display_rgb8;
 
 /// The folder of the renderer's pictures in the student's results, relative to the crate's
 /// root.

@@ -9,7 +9,7 @@
 use glam::DVec3;
 
 use super::Renderer;
-use crate::render::image::Image;
+use crate::image::Image;
 use crate::render::scene::{DirectLight, Scene};
 
 /// Every pixel of `image` `1 + bias` times brighter.

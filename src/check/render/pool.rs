@@ -17,8 +17,8 @@
 
 use glam::DVec3;
 
-use crate::render::compare::two_sided_critical;
-use crate::render::image::Image;
+use crate::conformance::compare::two_sided_critical;
+use crate::image::Image;
 use crate::spectral::display;
 use crate::stats::sidak;
 

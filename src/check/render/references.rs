@@ -14,9 +14,9 @@ use super::Rendered;
 use super::pool::Expected;
 use crate::check::Options;
 use crate::data::DataError;
+use crate::image::{Image, ImageError};
 use crate::render::driver::Window;
 use crate::render::format;
-use crate::render::image::{Image, ImageError};
 use crate::render::scene::Scene;
 
 /// A canonical scene: the name of its reference files, its scene file under `scenes/`,

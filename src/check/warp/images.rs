@@ -58,7 +58,7 @@ pub(super) fn write_failure_images(
     // The three images land together (the project's one writer), never half of them.
     let mut files = crate::output::FileSet::new();
     let mut stage = |name: &str, rgb8: Vec<u8>| {
-        let png = crate::spectral::display::encode_png(width as u32, height as u32, &rgb8);
+        let png = crate::image::png::encode_png(width as u32, height as u32, &rgb8);
         png.ok()
             .and_then(|bytes| files.write(&dir.join(name), &bytes).ok())
     };

@@ -18,8 +18,8 @@ use exr::prelude::{
     SmallVec, WritableImage, f16,
 };
 use glam::DVec3;
-use raylemma::render::compare::{Estimate, compare, equivalent_z, two_sided_critical};
-use raylemma::render::image::{ExrContents, Image};
+use raylemma::conformance::compare::{Estimate, compare, equivalent_z, two_sided_critical};
+use raylemma::image::{ExrContents, Image};
 use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
 use raylemma::stats::{sidak, test_alpha};
@@ -388,7 +388,7 @@ fn images_no_comparison_can_use_are_refused_by_name() {
     assert!(e.problem.contains("truncated"), "{e}");
     // A PNG is named as one.
     let png = tmp("image.png");
-    let bytes = raylemma::spectral::display::encode_png(1, 1, &[0, 0, 0]).unwrap();
+    let bytes = raylemma::image::png::encode_png(1, 1, &[0, 0, 0]).unwrap();
     std::fs::write(&png, bytes).unwrap();
     let e = ExrContents::read(&png).unwrap_err();
     assert!(e.problem.contains("a PNG image"), "{e}");
@@ -413,7 +413,7 @@ fn images_no_comparison_can_use_are_refused_by_name() {
 /// same candidates 3 % brighter still DIFFER. Statistical: one test at the suite's level.
 #[test]
 fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
-    use raylemma::render::compare::add_half_rounding;
+    use raylemma::conformance::compare::add_half_rounding;
     let mut rng = rng::seeded(2718);
     let exact = |i: usize| DVec3::new(0.2 + 0.003 * i as f64, 0.5, 0.25 + 0.001 * (i % 7) as f64);
     let noise = |rng: &mut Rng, sd: f64| {

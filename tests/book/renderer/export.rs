@@ -1,4 +1,4 @@
-//! Tests of `export` (`src/render/export/`; chapter *Reference scenes and interop*, *Exporting a
+//! Tests of `export` (`src/conformance/export/`; chapter *Reference scenes and interop*, *Exporting a
 //! scene*): the JSON is fully resolved (defaults, 1 nm spectra equal to the data files,
 //! explicit transforms); the Mitsuba XML follows the rules checked against Mitsuba in
 //! `tools/mitsuba/NOTES.md`; what Mitsuba cannot express is refused with its line and
@@ -10,7 +10,7 @@
 
 use std::path::Path;
 
-use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
+use raylemma::conformance::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
 use serde_json::Value;
 
 use crate::support::root;

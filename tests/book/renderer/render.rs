@@ -13,9 +13,9 @@
 
 use glam::{DVec2, DVec3};
 use rand::RngExt;
+use raylemma::conformance::compare::{compare_images as compare, two_sided_critical};
 use raylemma::geometry::Parallelogram;
-use raylemma::render::compare::{compare_images as compare, two_sided_critical};
-use raylemma::render::image::{Image, Welford};
+use raylemma::image::{Image, Welford};
 use raylemma::render::integrator::offset_origin;
 use raylemma::render::scene::{self, Environment, Geometry, Material, Scene, Surface};
 use raylemma::render::{Progress, Sidecar, render, render_with, write_outputs};

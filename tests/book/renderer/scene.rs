@@ -135,6 +135,7 @@ fn the_cornell_box_is_the_one_the_issue_specifies() {
     assert_eq!(glass, 1);
 }
 
+mod card;
 mod command_line;
 mod corruptions;
 mod ladder;

@@ -4,6 +4,7 @@
 //! the twin of a passing check and must be rejected by it.
 
 use glam::DVec3;
+use raylemma::image::png::write_png;
 use raylemma::spectral::cie;
 use raylemma::spectral::display::*;
 

@@ -16,8 +16,8 @@ use rayon::prelude::*;
 
 use super::{Output, Record, Settings};
 use crate::timing::quick_note;
-use raylemma::render::compare::{Estimate, compare};
-use raylemma::render::image::{Image, ImageError};
+use raylemma::conformance::compare::{Estimate, compare};
+use raylemma::image::{Image, ImageError};
 use raylemma::render::{self, Progress};
 use raylemma::stats::binomial::wilson;
 

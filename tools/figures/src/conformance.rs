@@ -19,9 +19,9 @@ use rayon::prelude::*;
 
 use super::{Output, Record, Settings};
 use crate::timing::quick_note;
-use raylemma::check::render::ladder::{self, LADDER, Rung};
-use raylemma::render::compare::{Estimate, compare};
-use raylemma::render::image::Image;
+use raylemma::conformance::compare::{Estimate, compare};
+use raylemma::conformance::ladder::{self, LADDER, Rung};
+use raylemma::image::Image;
 use raylemma::render::{self, Progress};
 use raylemma::stats::binomial::wilson;
 use raylemma::stats::sidak;

@@ -4,7 +4,7 @@
 //! ladder, read from its scene files' headers.
 
 use super::{Output, Record, Settings};
-use raylemma::render::export::{SceneFile, json, mitsuba};
+use raylemma::conformance::export::{SceneFile, json, mitsuba};
 
 /// The outputs of this module.
 pub fn outputs() -> Vec<Output> {
@@ -27,10 +27,10 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-/// The rungs of [`raylemma::check::render::ladder::LADDER`], each with what its file's header says it tests, where it is
+/// The rungs of [`raylemma::conformance::ladder::LADDER`], each with what its file's header says it tests, where it is
 /// derived and what a failure there usually means.
 fn ladder_table(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
-    use raylemma::check::render::ladder::{LADDER, header};
+    use raylemma::conformance::ladder::{LADDER, header};
     let mut md = String::from(
         "| rung | scene | tests | derived in | a failure here usually means |\n|---:|---|---|---|---|\n",
     );

@@ -18,8 +18,8 @@ use raylemma::check::render::{
     Rendered, Renderer, edge_scenes, ours, planted, references, render_agreement, render_exact,
     render_exact_of,
 };
+use raylemma::image::Image;
 use raylemma::render::Scene;
-use raylemma::render::image::Image;
 use raylemma::stats::{sidak, test_alpha};
 use raylemma_values::slug;
 

@@ -31,7 +31,7 @@ fn the_renderer_source_closure_holds_what_makes_pixels_and_nothing_of_the_checks
     }
     for unrelated in [
         "src/check/",
-        "src/render/compare.rs",
+        "src/conformance/",
         "src/spectral/upsample.rs",
         "src/stats/ks.rs",
     ] {
@@ -60,6 +60,61 @@ fn the_code_version_is_the_same_wherever_the_project_lies() {
     let there = code_version(&elsewhere).unwrap_or_else(|e| panic!("{e}"));
     let _ = std::fs::remove_dir_all(&elsewhere);
     assert_eq!(here, there);
+}
+
+/// Copies every file of `src/` and `data/` and `Cargo.lock` under `to`: all that
+/// `code_version` may read.
+fn copy_sources(root: &std::path::Path, to: &std::path::Path) {
+    let files =
+        raylemma::output::files_under(root, &["src", "data"]).unwrap_or_else(|e| panic!("{e}"));
+    for f in files.iter().chain([&root.join("Cargo.lock")]) {
+        let rel = f.strip_prefix(root).unwrap_or(f);
+        let dest = to.join(rel);
+        std::fs::create_dir_all(dest.parent().expect("a file has a folder"))
+            .unwrap_or_else(|e| panic!("{e}"));
+        std::fs::copy(f, &dest).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+    }
+}
+
+/// Appends a line of code (not a comment: comments are not code) to `file` under `root`.
+fn append_code(root: &std::path::Path, file: &str) {
+    use std::io::Write as _;
+    let mut f = std::fs::OpenOptions::new()
+        .append(true)
+        .open(root.join(file))
+        .unwrap_or_else(|e| panic!("{file}: {e}"));
+    writeln!(f, "pub const EDITED: u8 = 1;").unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn editing_the_tools_for_other_renderers_leaves_the_references_current() {
+    // The references record the renderer's code version; the exporters, compare and the
+    // conformance card (`src/conformance/`) read the renderer but make no pixel of it, so an
+    // edit there must not make every reference stale. An edit of the renderer must.
+    use raylemma::render::provenance::code_version;
+    let root = crate::support::root();
+    let copy = crate::support::scratch("tools-edit");
+    copy_sources(root, &copy);
+    let before = code_version(&copy).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(before, code_version(root).unwrap_or_else(|e| panic!("{e}")));
+    for file in [
+        "src/conformance/export/mitsuba.rs",
+        "src/conformance/export/json.rs",
+        "src/conformance/compare.rs",
+        "src/conformance/mod.rs",
+    ] {
+        append_code(&copy, file);
+        assert_eq!(
+            code_version(&copy).unwrap_or_else(|e| panic!("{e}")),
+            before,
+            "an edit of {file} made the references stale"
+        );
+    }
+    append_code(&copy, "src/render/camera.rs");
+    assert_ne!(
+        code_version(&copy).unwrap_or_else(|e| panic!("{e}")),
+        before
+    );
 }
 
 #[test]

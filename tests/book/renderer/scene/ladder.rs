@@ -4,7 +4,7 @@
 
 use super::*;
 
-/// The conformance ladder: every rung of `check::render::ladder::LADDER` is a file of
+/// The conformance ladder: every rung of `conformance::ladder::LADDER` is a file of
 /// `scenes/conformance/` (and every file there a rung), parses, says in its header what it
 /// tests, where it is derived and what a failure means, exports to JSON, exports to
 /// Mitsuba unless it is spectral-only (which Mitsuba's export refuses with the line), and
@@ -12,8 +12,8 @@ use super::*;
 /// line).
 #[test]
 fn every_rung_of_the_ladder_parses_says_what_it_tests_and_exports() {
-    use raylemma::check::render::ladder::{LADDER, header};
-    use raylemma::render::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
+    use raylemma::conformance::export::{SceneFile, json::to_json, mitsuba::to_xml, pbrt::to_pbrt};
+    use raylemma::conformance::ladder::{LADDER, header};
     let dir = crate::support::root().join("scenes/conformance");
     let mut files: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
@@ -68,7 +68,7 @@ fn every_rung_of_the_ladder_parses_says_what_it_tests_and_exports() {
 /// rung 8 with its light 3 % brighter, differs. Statistical: one test at the suite's level.
 #[test]
 fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
-    use raylemma::render::compare::compare_images;
+    use raylemma::conformance::compare::compare_images;
     let dir = crate::support::root().join("scenes/conformance");
     let box_ = render::load(&dir.join("05-box.toml")).unwrap();
     let mut roulette = render::load(&dir.join("08-roulette.toml")).unwrap();
@@ -92,7 +92,7 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
     );
 }
 
-/// The conformance card's diagnosis (`check::render::diagnose`) against the committed
+/// The conformance card's diagnosis (`conformance::diagnose`) against the committed
 /// references, on four runs of 64 spp of raylemma's own render with one mistake each:
 /// - rung 1 with its light 1 % too bright: a uniform factor within 0.002 of 1.01, and no
 ///   other hypothesis that explains it, and the causes rung 1 cannot tell apart and the
@@ -114,14 +114,14 @@ fn roulette_from_the_first_bounce_keeps_the_box_s_expected_image() {
 /// The runs without a mistake agree with the reference.
 #[test]
 fn the_card_s_diagnosis_names_each_mistake() {
-    use raylemma::check::render::diagnose::{Context, diagnose};
-    use raylemma::render::compare::{Estimate, compare};
-    use raylemma::render::export::SceneFile;
+    use raylemma::conformance::compare::{Estimate, compare};
+    use raylemma::conformance::diagnose::{Context, diagnose};
+    use raylemma::conformance::export::SceneFile;
     let dir = root().join("scenes/conformance");
     let file = SceneFile::load(&dir.join("01-direct-quad.toml")).unwrap();
     let load = |name: &str| {
         Estimate::from_variance(
-            render::image::Image::read_exr(
+            raylemma::image::Image::read_exr(
                 &root().join(format!("figures/reference/conformance/{name}.exr")),
             )
             .unwrap(),
@@ -182,7 +182,7 @@ fn the_card_s_diagnosis_names_each_mistake() {
     // And the card says which causes of it rung 1 cannot tell apart.
     assert!(
         d.iter()
-            .any(|f| f == raylemma::check::render::diagnose::UNIFORM_ON_DIRECT_LIGHT),
+            .any(|f| f == raylemma::conformance::diagnose::UNIFORM_ON_DIRECT_LIGHT),
         "{d:#?}"
     );
 
@@ -337,7 +337,7 @@ fn the_card_s_diagnosis_names_each_mistake() {
 /// files there fails this test, and so does a built-in file that differs from the tree's).
 #[test]
 fn the_built_in_suite_holds_every_rung_and_depth() {
-    use raylemma::check::render::ladder::{self, LADDER, SUITE};
+    use raylemma::conformance::ladder::{self, LADDER, SUITE};
     let has = |path: String| SUITE.iter().any(|(p, _)| *p == path);
     for rung in LADDER {
         assert!(

@@ -8,8 +8,8 @@ use super::*;
 #[test]
 fn merge_pools_means_and_variances_exactly() {
     use glam::DVec3;
-    use raylemma::render::image::Image;
-    use raylemma::render::merge::pool;
+    use raylemma::conformance::merge::pool;
+    use raylemma::image::Image;
     use raylemma::stats::welford::Welford;
     let mut rng = rng::seeded(31);
     let counts = [2u32, 5, 9];

@@ -1,7 +1,7 @@
 //! The image format.
 
 use super::*;
-use raylemma::spectral::display::{encode_grey_png, encode_png};
+use raylemma::image::png::{encode_grey_png, encode_png};
 
 /// `decoded` is `t / max t` at every whole nanometre of 380-830 within half a pixel.
 fn quantisation_problem(t: &Table, decoded: &Table, height: u32) -> Option<String> {

@@ -73,9 +73,7 @@ pub fn draw_png(
 }
 
 /// Encodes an RGB8 buffer as PNG, with the library's one encoder
-/// ([`raylemma::spectral::display::encode_png`]).
+/// ([`raylemma::image::png::encode_png`]).
 pub fn encode_png(width: u32, height: u32, rgb: Vec<u8>) -> anyhow::Result<Vec<u8>> {
-    Ok(raylemma::spectral::display::encode_png(
-        width, height, &rgb,
-    )?)
+    Ok(raylemma::image::png::encode_png(width, height, &rgb)?)
 }

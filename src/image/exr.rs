@@ -1,9 +1,8 @@
-//! A rendered image: per-pixel means and the variance of each mean, in linear sRGB
-//! ([`Welford`] accumulates them), and its two image files: OpenEXR with the variances
-//! (written and read back) and the display PNG. The sidecar, and the writing of a render's
-//! three files as one set, are in [`super::files`]. Chapter: *The path tracer*
-//! (`chapters/renderer/path-tracer.md`, *What a render writes*) and *Comparing images*
-//! (`chapters/renderer/compare.md`).
+//! An image's OpenEXR file: [`Image::encode_exr`] and [`Image::write_exr`] write the means
+//! and the variances of the means, [`ExrContents::read`] reads them back, or any renderer's
+//! plain EXR. Chapters: *The path tracer* (`chapters/renderer/path-tracer.md`, *What a
+//! render writes*) and *Comparing images* (`chapters/renderer/compare.md`). The display PNG
+//! beside it is written by the renderer (`crate::render::files`), through [`super::png`].
 //!
 //! # The EXR layout
 //!
@@ -18,7 +17,8 @@
 //!
 //! [`ExrContents::read`] reads any single-part scan-line or tiled OpenEXR file with channels
 //! `R`, `G`, `B` in any order, half or float (other channels are ignored; lacking `R`, `G`,
-//! `B`, the channels `X`, `Y`, `Z` are read as CIE XYZ and converted to linear sRGB), with or without
+//! `B`, the channels `X`, `Y`, `Z` are read as CIE XYZ, marked [`ExrContents::from_xyz`],
+//! for the caller to convert to linear sRGB with the colour chapter's matrix), with or without
 //! the three variance channels and the `spp` attribute: the plain images that Mitsuba,
 //! pbrt or a student's renderer write. It refuses, naming the file and the pixel, what no
 //! comparison can use: a file that is not OpenEXR (a PNG is named as one), a truncated
@@ -34,8 +34,8 @@ use exr::prelude::{
 };
 use glam::DVec3;
 
+use super::{Image, ImageError};
 use crate::output::{self, FileError};
-use crate::spectral::display;
 
 /// The channel names of an image file, in the order of [`Image::mean`] then
 /// [`Image::var`].
@@ -50,111 +50,7 @@ const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
 /// The first bytes of a PNG file.
 const PNG_MAGIC: [u8; 4] = [0x89, b'P', b'N', b'G'];
 
-/// Per-pixel means and variances of the means, row-major from the top-left pixel.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Image {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// The mean of each pixel, linear sRGB.
-    pub mean: Vec<DVec3>,
-    /// The variance of each pixel's mean (NaN where it is unknown: one sample).
-    pub var: Vec<DVec3>,
-    /// The samples per pixel behind every mean, when known (the EXR's `spp` attribute).
-    pub spp: Option<u32>,
-}
-
-/// Why an image could not be read, encoded, drawn or merged: the one error type of the
-/// images (OpenEXR headers and pixels, PNG, a render's sidecar). Each variant says what a
-/// user needs: the file when one is known, and what is wrong with it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum ImageError {
-    /// A file that cannot be read or written, or whose contents are wrong: the file named.
-    File(FileError),
-    /// The sidecar (`SCENE.json`) beside a render to merge cannot be read.
-    Sidecar(FileError),
-    /// An OpenEXR header that is malformed, or claims more than its file can back
-    /// ([`super::exr_header::check`]; the caller names the file).
-    Header(String),
-    /// A pixel whose mean is not finite or whose variance is not a finite number `>= 0`,
-    /// or a buffer of pixels that does not fit the image's size.
-    Pixels(String),
-    /// The OpenEXR or PNG encoder failed, or there is nothing to draw.
-    Encode(String),
-    /// A PNG that cannot be decoded, or would take more memory than allowed (the
-    /// decoder's message).
-    Decode(String),
-    /// Images that do not go together (a window outside its image, a reference of another
-    /// size than its scene), renders that cannot be merged (different scenes, sizes,
-    /// builds or seeds in common, or too few of them), or images that cannot be compared
-    /// (of different sizes, a reference without its variance, a single plain candidate,
-    /// candidates that are the same image).
-    Mismatch(String),
-    /// A parameter of a computation on images outside its range: a comparison's level
-    /// `alpha` not in (0, 1), an estimate's degrees of freedom not `> 0`.
-    Parameter(String),
-}
-
-impl ImageError {
-    /// The same error, its message prefixed with `what: ` (a lamp's name, say); a file's
-    /// error already names its file and is left as it is.
-    pub fn about(self, what: &str) -> Self {
-        let prefix = |m: String| format!("{what}: {m}");
-        match self {
-            ImageError::Header(m) => ImageError::Header(prefix(m)),
-            ImageError::Pixels(m) => ImageError::Pixels(prefix(m)),
-            ImageError::Encode(m) => ImageError::Encode(prefix(m)),
-            ImageError::Decode(m) => ImageError::Decode(prefix(m)),
-            ImageError::Mismatch(m) => ImageError::Mismatch(prefix(m)),
-            ImageError::Parameter(m) => ImageError::Parameter(prefix(m)),
-            e @ (ImageError::File(_) | ImageError::Sidecar(_)) => e,
-        }
-    }
-}
-
-impl std::fmt::Display for ImageError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            ImageError::File(e) => write!(f, "{e}"),
-            ImageError::Sidecar(e) => write!(
-                f,
-                "{e} (a render to merge needs its sidecar, which `raylemma render` writes beside it)"
-            ),
-            ImageError::Header(m)
-            | ImageError::Pixels(m)
-            | ImageError::Encode(m)
-            | ImageError::Decode(m)
-            | ImageError::Mismatch(m)
-            | ImageError::Parameter(m) => f.write_str(m),
-        }
-    }
-}
-
-impl std::error::Error for ImageError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            ImageError::File(e) | ImageError::Sidecar(e) => Some(e),
-            _ => None,
-        }
-    }
-}
-
-impl From<FileError> for ImageError {
-    fn from(e: FileError) -> Self {
-        ImageError::File(e)
-    }
-}
-
-/// The accumulator of a pixel: the project's one Welford recurrence, on linear sRGB.
-pub type Welford = crate::stats::welford::Welford<DVec3>;
-
 impl Image {
-    /// The pixel index of `(x, y)`.
-    pub fn index(&self, x: u32, y: u32) -> usize {
-        y as usize * self.width as usize + x as usize
-    }
-
     // ANCHOR: write_exr
     /// Encodes the six channels ([`CHANNELS`]) as float32 OpenEXR (ZIP compressed) into
     /// `out`, with the samples per pixel as the header attribute `spp` when known.
@@ -218,32 +114,6 @@ impl Image {
             )
         })
     }
-
-    /// The means as the bytes of an 8-bit sRGB PNG, through the display chapter's rules
-    /// (exposure `2^stops`, fit to gamut, the sRGB curve).
-    ///
-    /// # Errors
-    /// As [`display::encode_png`].
-    pub fn encode_png(&self, stops: f64) -> Result<Vec<u8>, ImageError> {
-        display::encode_png(
-            self.width,
-            self.height,
-            &display::to_display_rgb8(&self.mean, stops),
-        )
-    }
-
-    /// Writes the means as an 8-bit sRGB PNG ([`Image::encode_png`]), atomically.
-    ///
-    /// # Errors
-    /// As [`display::write_png`].
-    pub fn write_png(&self, path: &Path, stops: f64) -> Result<(), FileError> {
-        display::write_png(
-            path,
-            self.width,
-            self.height,
-            &display::to_display_rgb8(&self.mean, stops),
-        )
-    }
 }
 
 /// What an OpenEXR file holds, as `compare` reads it: the means, the variances of the means
@@ -254,7 +124,8 @@ pub struct ExrContents {
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
-    /// `R`, `G`, `B` of each pixel, row-major from the top-left pixel.
+    /// `R`, `G`, `B` of each pixel, row-major from the top-left pixel; `X`, `Y`, `Z` when
+    /// [`ExrContents::from_xyz`] (until [`ExrContents::converted`]).
     pub mean: Vec<DVec3>,
     /// `var.R`, `var.G`, `var.B`, when the file has all three.
     pub var: Option<Vec<DVec3>>,
@@ -263,10 +134,11 @@ pub struct ExrContents {
     /// Every channel's name, in the file's order (for messages).
     pub channels: Vec<String>,
     /// Whether the means are stored as half floats (11 significant bits): their rounding
-    /// is then part of their error ([`crate::render::compare::add_half_rounding`]).
+    /// is then part of their error (the comparison adds it).
     pub half: bool,
     /// Whether the means were read from channels `X`, `Y`, `Z` (CIE XYZ, as Mitsuba's
-    /// spectral films write) and converted to linear sRGB, for lack of `R`, `G`, `B`.
+    /// spectral films write), for lack of `R`, `G`, `B`: [`ExrContents::converted`] makes
+    /// them linear sRGB.
     pub from_xyz: bool,
 }
 
@@ -357,15 +229,6 @@ impl ExrContents {
                 }
             }
         }
-        if from_xyz {
-            let m = crate::spectral::cie::xyz_to_linear_srgb_matrix();
-            if let [x, y, z] = &mut rgb[..] {
-                for ((x, y), z) in x.iter_mut().zip(y.iter_mut()).zip(z.iter_mut()) {
-                    let v = m * DVec3::new(*x, *y, *z);
-                    (*x, *y, *z) = (v.x, v.y, v.z);
-                }
-            }
-        }
         let mut var = Vec::new();
         for name in &CHANNELS[3..] {
             if let Some(values) = find(name)? {
@@ -427,6 +290,19 @@ impl ExrContents {
             }
         }
         Ok(())
+    }
+
+    /// The contents with means read from `X`, `Y`, `Z` ([`ExrContents::from_xyz`]) turned
+    /// into linear sRGB by `xyz_to_rgb` (the colour chapter's
+    /// `spectral::cie::xyz_to_linear_srgb_matrix`); contents read from `R`, `G`, `B` are
+    /// returned as they are. The flag stays, so a report can say what was converted.
+    pub fn converted(mut self, xyz_to_rgb: glam::DMat3) -> ExrContents {
+        if self.from_xyz {
+            for v in &mut self.mean {
+                *v = xyz_to_rgb * *v;
+            }
+        }
+        self
     }
 
     /// The image, if the file has variance channels.

@@ -5,7 +5,7 @@
 //! block is. The common mistakes of a renderer leave recognisable marks on the whole
 //! image, and each is a hypothesis that can be tested: the candidate with the mistake
 //! undone is compared with the reference again, by the same test
-//! ([`crate::render::compare::compare`]) at the same level. A hypothesis *explains* the
+//! ([`crate::conformance::compare::compare`]) at the same level. A hypothesis *explains* the
 //! difference when the undone candidate agrees; it *explains most of it* when it leaves at
 //! most 20 % of the failing tests of blocks and of the whole image, and of the excess of
 //! the blocks' `Σ z²` over its expectation (one per block and channel).
@@ -28,9 +28,9 @@
 
 use glam::{DMat3, DVec2, DVec3};
 
+use crate::conformance::compare::{Comparison, Estimate, compare};
+use crate::image::{Image, ImageError};
 use crate::render::camera::Camera;
-use crate::render::compare::{Comparison, Estimate, compare};
-use crate::render::image::{Image, ImageError};
 use crate::render::scene::{Scene, Surface};
 use crate::spectral::cie::xyz_to_linear_srgb_matrix;
 
@@ -40,7 +40,7 @@ pub(crate) const MOST: f64 = 0.8;
 
 /// What the card is given besides the two images.
 pub struct Context<'a> {
-    /// The rung's number on the ladder (`check::render::ladder::LADDER`), 0 for a scene of
+    /// The rung's number on the ladder (`conformance::ladder::LADDER`), 0 for a scene of
     /// no rung.
     pub rung: u32,
     /// The rung's scene at the compared depth (its camera, its materials' names).

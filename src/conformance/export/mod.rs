@@ -3,10 +3,11 @@
 //! fully resolved JSON ([`json::to_json`]: every default filled in, every spectrum on the
 //! 1 nm grid, every transform explicit), which an implementer in any language reads
 //! without re-implementing the TOML parser.
-//! Chapter: *Reference scenes and interop* (`chapters/renderer/scenes.md`, *Exporting a
+//! Part of the tools for other renderers ([`crate::conformance`]). Chapter: *Reference scenes and interop* (`chapters/renderer/scenes.md`, *Exporting a
 //! scene*).
 //!
-//! All three start from a [`SceneFile`]: the checked [`Scene`] and, for every material,
+//! All three start from a [`SceneFile`] (the renderer's reading of a scene file,
+//! `crate::render::format`): the checked [`Scene`] and, for every material,
 //! shape and light, the camera and the environment, the line of the file where it is
 //! written, so that what Mitsuba or pbrt cannot express (thin films, a gradient sky; for
 //! Mitsuba also Sellmeier dispersion) is refused as `file:line: reason`, like every other
@@ -16,79 +17,12 @@ pub mod json;
 pub mod mitsuba;
 pub mod pbrt;
 
-use std::path::{Path, PathBuf};
-
 use glam::DVec3;
 
-use super::raw::{line_of, raw_tables};
-use super::scene::Scene;
-use super::validate;
-use crate::data::DataError;
+pub use crate::render::format::SceneFile;
+use crate::render::scene::Scene;
 use crate::spectral::spectrum::{Spectrum, Table};
 use crate::spectral::{LAMBDA_MAX, LAMBDA_MIN};
-
-/// A checked scene with the names and lines of its parts.
-#[derive(Clone, Debug)]
-pub struct SceneFile {
-    /// The scene.
-    pub scene: Scene,
-    /// The file's name as given.
-    pub file: String,
-    /// The line of `[camera]`.
-    pub camera_line: usize,
-    /// The line of `[environment]`, if there is one.
-    pub environment_line: usize,
-    /// The name and line of every material, in the order of [`Scene::materials`].
-    pub materials: Vec<(String, usize)>,
-    /// The line of every `[[shape]]`, in order.
-    pub shape_lines: Vec<usize>,
-    /// The line of every `[[light]]`, in the order of [`Scene::lights`].
-    pub light_lines: Vec<usize>,
-}
-
-impl SceneFile {
-    /// Reads the scene text `text` of the file `file`, whose relative spectrum files are in
-    /// `dir`: the checked scene, as [`super::format::parse`] gives it, with its lines.
-    ///
-    /// # Errors
-    /// As [`super::format::parse`].
-    pub fn parse(text: &str, file: &str, dir: &Path) -> Result<SceneFile, DataError> {
-        let raw = raw_tables(text, file)?;
-        let scene = validate::scene(&raw, text, file, dir)?;
-        let line = |span| line_of(text, span);
-        Ok(SceneFile {
-            scene,
-            file: file.to_string(),
-            camera_line: line(raw.camera.span()),
-            environment_line: raw.environment.as_ref().map_or(0, |e| line(e.span())),
-            // Checked in the same (sorted) order as the model holds them.
-            materials: raw
-                .materials
-                .iter()
-                .map(|(name, m)| (name.clone(), line(m.span())))
-                .collect(),
-            shape_lines: raw.shape.iter().map(|s| line(s.span())).collect(),
-            light_lines: raw.light.iter().map(|l| line(l.span())).collect(),
-        })
-    }
-
-    /// Reads the scene file at `path`.
-    ///
-    /// # Errors
-    /// If the file cannot be read, or as [`SceneFile::parse`].
-    pub fn load(path: &Path) -> Result<SceneFile, DataError> {
-        let (text, name) = crate::data::read_text(path)?;
-        let dir = path
-            .parent()
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-        Self::parse(&text, &name, &dir)
-    }
-
-    /// A problem on `line` of the file.
-    pub fn error(&self, line: usize, problem: impl Into<String>) -> DataError {
-        DataError::new(&self.file, line, problem)
-    }
-}
 
 /// The whole nanometres from 360 to 830 nm, the grid of the colour-matching functions.
 pub fn grid() -> impl Iterator<Item = f64> + Clone {
@@ -137,7 +71,7 @@ fn on_grid(t: &Table) -> bool {
 /// The distance from `p` to the farthest point of the scene's geometry (for clipping
 /// planes).
 pub(crate) fn extent(scene: &Scene, p: DVec3) -> f64 {
-    use super::scene::{Geometry, LightShape};
+    use crate::render::scene::{Geometry, LightShape};
     let mut far: f64 = 0.0;
     let mut sphere = |c: DVec3, r: f64| far = far.max((c - p).length() + r);
     for s in &scene.shapes {

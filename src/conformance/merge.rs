@@ -20,8 +20,8 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
-use super::files::Sidecar;
-use super::image::{Image, ImageError};
+use crate::image::{Image, ImageError};
+use crate::render::files::Sidecar;
 use crate::stats::welford::combine;
 
 /// One render to pool: its image (with its variances) and its sidecar.

@@ -17,7 +17,7 @@
 use std::io::Read;
 use std::path::Path;
 
-use super::image::ImageError;
+use super::ImageError;
 
 /// The most pixels a part of an image may claim (8192 x 8192).
 pub const MAX_PIXELS: u64 = 1 << 26;

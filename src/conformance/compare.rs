@@ -27,7 +27,7 @@ use glam::DVec3;
 use statrs::distribution::{ContinuousCDF, StudentsT};
 use statrs::function::erf::erfc_inv;
 
-use super::image::{Image, ImageError};
+use crate::image::{Image, ImageError};
 use crate::spectral::display;
 use crate::stats::welford::Welford;
 use crate::stats::{sidak, ttest};
