@@ -23,9 +23,9 @@
 //! own `ν`, and reported as the normal `z` with the same p-value, so that `|z|` and the
 //! mean of `z²` mean the same whatever the degrees of freedom.
 
+use crate::stats::two_sided_critical;
 use glam::DVec3;
 use statrs::distribution::{ContinuousCDF, StudentsT};
-use statrs::function::erf::erfc_inv;
 
 use crate::image::{Image, ImageError};
 use crate::spectral::display;
@@ -427,12 +427,6 @@ fn percent((r, h): (f64, f64)) -> String {
 /// Whether a test with normal-equivalent `z` fails at `z_critical` (NaN fails).
 fn fails(z: f64, z_critical: f64) -> bool {
     z.abs() > z_critical || z.is_nan()
-}
-
-/// The two-sided critical value `z` with `P(|Z| > z) = level` for a standard normal `Z`:
-/// `sqrt(2) erfc^-1(level)`.
-pub fn two_sided_critical(level: f64) -> f64 {
-    std::f64::consts::SQRT_2 * erfc_inv(level)
 }
 
 /// The two-sided critical `|t|` at `level` for Student's t with `dof` degrees of freedom

@@ -76,6 +76,12 @@ pub fn sidak(alpha: f64, m: u32) -> f64 {
     -(f64::ln_1p(-alpha) / f64::from(m)).exp_m1()
 }
 
+/// The two-sided critical value `z` with `P(|Z| > z) = level` for a standard normal `Z`:
+/// `sqrt(2) erfc^-1(level)` (the pooled tests of the renderer's checks and `compare`'s).
+pub fn two_sided_critical(level: f64) -> f64 {
+    std::f64::consts::SQRT_2 * statrs::function::erf::erfc_inv(level)
+}
+
 /// The per-test level every statistical test of the suite uses:
 /// `sidak(SUITE_ALPHA, SUITE_TESTS)`, about `5.03e-5`.
 pub fn test_alpha() -> f64 {

@@ -17,10 +17,10 @@
 
 use glam::DVec3;
 
-use crate::conformance::compare::two_sided_critical;
 use crate::image::Image;
 use crate::spectral::display;
 use crate::stats::sidak;
+use crate::stats::two_sided_critical;
 
 /// The side of the pooled blocks, pixels.
 pub const BLOCK: u32 = 8;

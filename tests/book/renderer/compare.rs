@@ -18,10 +18,11 @@ use exr::prelude::{
     SmallVec, WritableImage, f16,
 };
 use glam::DVec3;
-use raylemma::conformance::compare::{Estimate, compare, equivalent_z, two_sided_critical};
+use raylemma::conformance::compare::{Estimate, compare, equivalent_z};
 use raylemma::image::{ExrContents, Image};
 use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
+use raylemma::stats::two_sided_critical;
 use raylemma::stats::{sidak, test_alpha};
 
 /// Side of the synthetic images.

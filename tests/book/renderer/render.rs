@@ -13,7 +13,7 @@
 
 use glam::{DVec2, DVec3};
 use rand::RngExt;
-use raylemma::conformance::compare::{compare_images as compare, two_sided_critical};
+use raylemma::conformance::compare::compare_images as compare;
 use raylemma::geometry::Parallelogram;
 use raylemma::image::{Image, Welford};
 use raylemma::render::integrator::offset_origin;
@@ -25,6 +25,7 @@ use raylemma::sampling::frame::Frame;
 use raylemma::spectral::cie;
 use raylemma::spectral::spectrum::Spectrum;
 use raylemma::spectral::wavelength::{N, RANGE, WavelengthStrategy, hero_visible};
+use raylemma::stats::two_sided_critical;
 use raylemma::stats::{sidak, test_alpha};
 
 fn load(name: &str) -> Scene {
