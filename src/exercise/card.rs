@@ -138,12 +138,7 @@ pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) ->
         crate::check::pictures::with_failure_dir(dir, || judge(&owned, &check))
     });
     let status = match judged {
-        Ok(Status::Failing(mut lines)) => {
-            if let Some(line) = recognised(name) {
-                lines.insert(0, line);
-            }
-            Status::Failing(lines)
-        }
+        Ok(status @ Status::Failing(_)) => naming(status, recognised(name)),
         Ok(status) => status,
         Err(why) => Status::Failing(vec![why]),
     };
@@ -154,23 +149,37 @@ pub fn judge_within(name: &str, check: fn() -> Vec<Verdict>, limit: Duration) ->
     status
 }
 
-/// The card's first line under a failing exercise `name` whose function behaves like one
-/// of its typical mistakes ([`mistakes::recognise`]): run as its checks are, quietly and
-/// within [`LIMIT`] (only after they returned, so a loop is never run twice).
-fn recognised(name: &str) -> Option<String> {
+/// The typical mistake that the crate's function of the failing exercise `name` behaves
+/// like ([`mistakes::recognise`]): its probe run as its checks are, quietly and within
+/// [`LIMIT`] (only after they returned, so a loop is never run twice).
+fn recognised(name: &str) -> Option<&'static mistakes::Known> {
     let owned = name.to_string();
-    let mistake = within(name, LIMIT, move || {
+    within(name, LIMIT, move || {
         quiet_hook();
         QUIET.with(|q| q.set(true));
         let m = mistakes::recognise(&owned);
         QUIET.with(|q| q.set(false));
         m
     })
-    .ok()??;
-    Some(format!(
-        "this behaves like a typical mistake: {} (reread the section below)",
-        mistake.words
-    ))
+    .ok()?
+}
+
+/// A failing `status` with, first under it, the typical mistake its answer behaves like,
+/// if one does: the card's one way of saying so.
+pub fn naming(status: Status, mistake: Option<&mistakes::Known>) -> Status {
+    match (status, mistake) {
+        (Status::Failing(mut lines), Some(m)) => {
+            lines.insert(
+                0,
+                format!(
+                    "this behaves like a typical mistake: {} (reread the section below)",
+                    m.words
+                ),
+            );
+            Status::Failing(lines)
+        }
+        (status, _) => status,
+    }
 }
 
 /// `f` on a thread named for the exercise `name`, given at most `limit`; why not, if the

@@ -9,6 +9,7 @@ use super::{Output, Record, Settings};
 use raylemma::check::warp::{self, Domain, SquareWarp};
 use raylemma::check::{self, Finding, Options, Verdict};
 use raylemma::exercise::card::{self, Status};
+use raylemma::exercise::mistakes::{self, twins};
 use raylemma::exercise::{self, edition, marker, registry, stub};
 use raylemma::optics::fresnel::schlick_seed;
 use raylemma::sampling::cosine::{cosine_malley, cosine_pdf};
@@ -507,7 +508,26 @@ fn card_txt(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     let o = Options::default();
     let card = card::run_with(&markers, |m| {
         let name = m.name.as_str();
-        let judge = |f: &dyn Fn() -> Vec<Verdict>| card::judge(name, f);
+        // Each mistake named as the card names it: by the fingerprint of the twin's probe.
+        let named = |words: &str| {
+            let twin = twins::tables()
+                .filter(|t| t.exercise == name)
+                .flat_map(|t| t.mistakes)
+                .find(|m| m.words.contains(words))
+                .expect("the mistake has a twin");
+            mistakes::matching(name, mistakes::fingerprint(&(twin.probe)()))
+        };
+        let judge = |f: &dyn Fn() -> Vec<Verdict>| {
+            let words = match name {
+                "disc_polar" => Some("r = u1: "),
+                "refract" => Some("cos_t^2 used where cos_t belongs"),
+                "schlick" => Some("the source notes' Schlick"),
+                "roulette" => Some("survives when u <= p"),
+                "srgb_encode" => Some("x^(1/2.2)"),
+                _ => None,
+            };
+            card::naming(card::judge(name, f), words.and_then(named))
+        };
         match name {
             "intersect_stable" | "cosine_pdf" | "lambert_brdf" | "reflect" => {
                 let e = registry::find(name).expect("registered");
@@ -524,11 +544,7 @@ fn card_txt(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
                 let f = check::reflect::planted::refract_without_sqrt;
                 vec![check::reflect::refraction(&f, &o)]
             }),
-            "schlick" => judge(&|| {
-                let v = check::fresnel::reflectance(&schlick_seed, &o);
-                let why = "the claims an approximation keeps";
-                vec![registry::only(v, &registry::SCHLICK_KEEPS, why)]
-            }),
+            "schlick" => judge(&|| vec![registry::schlick_verdict(&schlick_seed)]),
             "roulette" => judge(&|| vec![check::roulette::roulette(&roulette_seed, &o)]),
             "srgb_encode" => {
                 judge(&|| vec![check::display::srgb_encode(&|x| gamma_encode(x, 2.2), &o)])
