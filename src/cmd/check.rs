@@ -5,17 +5,14 @@
 //! or an answer that cannot be read, with its line; a program that cannot be run, ends
 //! early, fails or hangs).
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Duration;
 
 use clap::{Args, Subcommand};
-use raylemma::check::accuracy::{self, Expect, corpus};
-use raylemma::check::external::{self, Density, Function, Program, Sampler, Target};
+use raylemma::check::external::{self, Checked, FunctionCheck, SamplerCheck, Target};
 use raylemma::check::warp::Domain;
-use raylemma::check::{Options, Verdict};
-use raylemma::data::DataError;
 
-use super::{CmdResult, Failure, Outcome, done};
+use super::{CmdResult, Failure, Outcome};
 
 /// `raylemma check`.
 #[derive(Subcommand, Debug)]
@@ -171,188 +168,51 @@ fn parse_seconds(text: &str) -> Result<Duration, String> {
         .ok_or_else(|| format!("`{text}` is not a positive number of seconds"))
 }
 
-/// `Options` from the flags; unset flags leave the checker's defaults.
-fn options(cases: Option<u64>, seed: Option<u64>, alpha: Option<f64>) -> Options {
-    let mut options = Options::new();
-    if let Some(n) = cases {
-        options = options.cases(usize::try_from(n).unwrap_or(usize::MAX));
+impl FunctionArgs {
+    /// The flags as the library's [`FunctionCheck`].
+    fn check(&self) -> FunctionCheck<'_> {
+        FunctionCheck {
+            program: self.program.as_deref(),
+            table: self.table.as_deref(),
+            questions: self.questions.as_deref(),
+            timeout: self.timeout,
+        }
     }
-    if let Some(s) = seed {
-        options = options.seed(s);
-    }
-    if let Some(a) = alpha {
-        options = options.alpha(a);
-    }
-    options
-}
-
-/// A usage error that clap's groups already refuse (kept as an error, never a panic).
-fn usage(problem: &str) -> DataError {
-    DataError::new("raylemma check", 0, problem)
-}
-
-/// The program `command`, with `timeout` per run (default [`external::TIMEOUT`]).
-fn program(command: &str, timeout: Option<Duration>) -> Program {
-    Program::new(command).timeout(timeout.unwrap_or(external::TIMEOUT))
 }
 
 /// Runs `raylemma check`: pass (0), fail (1), bad input (2).
 pub fn run(command: &CheckCmd) -> CmdResult {
-    match command {
-        CheckCmd::Sampler(args) => verdict(sampler(args)),
-        CheckCmd::Fresnel(args) => {
-            let options = options(args.cases, None, None);
-            function(
-                &args.from,
-                &options,
-                external::fresnel,
-                external::fresnel_questions,
-            )
-        }
-        CheckCmd::Corpus(args) => corpora(args),
-        CheckCmd::Refraction(args) => {
-            let options = options(args.cases, args.seed, None);
-            function(
-                &args.from,
-                &options,
-                external::refraction,
-                external::refraction_questions,
-            )
-        }
-    }
-}
-
-/// `raylemma check corpus`: every verdict printed; 0 if all pass, 1 if one fails, 2 for
-/// bad input.
-fn corpora(args: &CorpusArgs) -> CmdResult {
-    let corpora = if args.files.is_empty() {
-        corpus::load_all(Path::new("."))?
-    } else {
-        args.files
-            .iter()
-            .map(|p| corpus::load(p))
-            .collect::<Result<Vec<_>, _>>()?
-    };
-    let mut passed = true;
-    for c in &corpora {
-        let verdict = match &args.program {
-            Some(command) => {
-                accuracy::check_program(c, &args.verbs, &program(command, args.timeout))?
-            }
-            None => {
-                let forms = accuracy::forms::of(&c.name).ok_or_else(|| {
-                    Failure::from(DataError::new(
-                        &c.file,
-                        0,
-                        "no routine of this crate answers this corpus (check another \
-                         implementation with --program)",
-                    ))
-                })?;
-                let forms: Vec<_> = forms
-                    .into_iter()
-                    .filter(|f| f.expect == Expect::Within)
-                    .filter(|f| args.verbs.is_empty() || args.verbs.iter().any(|v| v == f.verb))
-                    .collect();
-                accuracy::check_forms(c, &forms)
-            }
-        };
-        print!("{verdict}");
-        passed &= verdict.passed();
-    }
-    Ok(if passed {
-        Outcome::Done
-    } else {
-        Outcome::Negative
-    })
-}
-
-/// Prints the verdict: exit status 0 if it passes, 1 if not, 2 for bad input.
-fn verdict(result: Result<Verdict, DataError>) -> CmdResult {
-    let verdict = result?;
-    print!("{verdict}");
-    Ok(if verdict.passed() {
-        Outcome::Done
-    } else {
-        Outcome::Negative
-    })
-}
-
-fn sampler(args: &SamplerArgs) -> Result<Verdict, DataError> {
-    if let Some(dir) = &args.failure_images {
-        raylemma::check::pictures::set_failure_dir(dir.clone());
-    }
-    let options = options(
-        Some(args.cases.unwrap_or(external::SAMPLES as u64)),
-        args.seed,
-        args.alpha,
-    );
-    let density = match (args.target, args.domain) {
-        (Some(target), _) => Density::Target(target),
-        (None, Some(domain)) => Density::Program(domain),
-        (None, None) => return Err(usage("--target or --domain is needed")),
-    };
-    let sampler = match (&args.program, &args.samples, density) {
-        (Some(command), _, density) => Sampler::Program {
-            program: program(command, args.timeout),
-            density,
+    let checked = match command {
+        CheckCmd::Sampler(args) => external::check_sampler(&SamplerCheck {
+            program: args.program.as_deref(),
+            samples: args.samples.as_deref(),
+            target: args.target,
+            domain: args.domain,
             inverse: args.inverse,
-        },
-        (None, Some(path), Density::Target(target)) => Sampler::Samples {
-            path: path.clone(),
-            target,
-        },
-        (None, Some(_), Density::Program(_)) => {
-            return Err(usage("a file of samples needs a --target"));
+            cases: args.cases,
+            seed: args.seed,
+            alpha: args.alpha,
+            timeout: args.timeout,
+            failure_images: args.failure_images.as_deref(),
+        })
+        .map_err(Failure::from),
+        CheckCmd::Fresnel(args) => {
+            external::check_fresnel(&args.from.check(), args.cases).map_err(Failure::from)
         }
-        (None, None, _) => return Err(usage("--program or --samples is needed")),
-    };
-    external::sampler(&sampler, &options)
-}
-
-type Check = fn(&Function, &Options) -> Result<Verdict, DataError>;
-type Questions = fn(Option<&Path>, &Options) -> Result<String, DataError>;
-
-fn function(
-    args: &FunctionArgs,
-    options: &Options,
-    check: Check,
-    questions: Questions,
-) -> CmdResult {
-    if let Some(out) = &args.questions {
-        return done(write_questions(
-            args.table.as_deref(),
-            out,
-            options,
-            questions,
-        ));
-    }
-    let function = match (&args.program, &args.table) {
-        (Some(command), _) => Function::Program(program(command, args.timeout)),
-        (None, Some(path)) => Function::Table(path.clone()),
-        (None, None) => {
-            return Err(usage("--program, --table or --questions is needed").into());
+        CheckCmd::Corpus(args) => external::check_corpora(
+            &args.files,
+            args.program.as_deref(),
+            &args.verbs,
+            args.timeout,
+        )
+        .map_err(Failure::from),
+        CheckCmd::Refraction(args) => {
+            external::check_refraction(&args.from.check(), args.cases, args.seed)
+                .map_err(Failure::from)
         }
-    };
-    verdict(check(&function, options))
-}
-
-/// Writes the questions `table` does not answer into `out` (whole, or not at all).
-fn write_questions(
-    table: Option<&Path>,
-    out: &Path,
-    options: &Options,
-    questions: Questions,
-) -> Result<(), Failure> {
-    let text = questions(table, options)?;
-    raylemma::output::write_file(out, text.as_bytes())?;
-    let rows = text.lines().count() - 1;
-    if rows == 0 {
-        eprintln!("raylemma: the table answers every question; check it with --table");
-    } else {
-        eprintln!(
-            "raylemma: wrote {rows} questions to {} (add each row's answer, then --table)",
-            out.display()
-        );
-    }
-    Ok(())
+    }?;
+    Ok(match checked {
+        Checked::Passed | Checked::QuestionsWritten => Outcome::Done,
+        Checked::Failed => Outcome::Negative,
+    })
 }

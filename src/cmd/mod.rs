@@ -82,8 +82,6 @@ pub fn done(result: Result<(), Failure>) -> CmdResult {
     result.map(|()| Outcome::Done)
 }
 
-pub use raylemma::conformance::card::xml_escape;
-
 /// The project root: this binary is built from it.
 pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

@@ -44,7 +44,11 @@
 //! Every bad input is a [`DataError`](crate::data::DataError): the file or program, the
 //! line and what is wrong. A program run whole rather than asked questions (a renderer
 //! run by `raylemma conformance`, [`run_logged`]) fails with a [`ProgramError`].
+//!
+//! `raylemma check` parses its flags and calls one of [`check_sampler`], [`check_fresnel`],
+//! [`check_refraction`] and [`check_corpora`] (`command.rs`), which print the verdict.
 
+mod command;
 mod memo;
 mod optics;
 mod run;
@@ -54,6 +58,10 @@ pub(crate) mod text;
 use std::path::PathBuf;
 use std::time::Duration;
 
+pub use command::{
+    CheckError, Checked, FunctionCheck, SamplerCheck, check_corpora, check_fresnel,
+    check_refraction, check_sampler,
+};
 pub use optics::{Function, fresnel, fresnel_questions, refraction, refraction_questions};
 pub use run::{ProgramError, ended, run_logged};
 pub use sampler::{Density, Sampler, Target, domain_named, sampler};

@@ -47,6 +47,7 @@ impl Table {
 
 mod grading;
 mod markers;
+mod reporting;
 mod scrubbing;
 mod stubs;
 mod this_crate;

@@ -1,4 +1,4 @@
-//! Grading (`src/exercise/grade.rs`); `raylemma grade` itself is run by CI on eight
+//! Grading (`src/exercise/grade/`); `raylemma grade` itself is run by CI on eight
 //! submissions (`.ci/editions`), since each builds a crate.
 
 use super::*;

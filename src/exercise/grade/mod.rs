@@ -24,8 +24,8 @@
 //! ```
 //!
 //! An exercise scores its points when it passes and 0 otherwise ([`score`]); `raylemma
-//! grade` writes the grade as JSON, JUnit XML and Gradescope's `results.json`
-//! (`src/cmd/grade.rs`).
+//! grade` ([`run`]) judges the submission's graded copy ([`judge`]) and writes the grade
+//! as text, JSON, JUnit XML and Gradescope's `results.json` ([`report`]).
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -37,6 +37,12 @@ use super::edition::File;
 use super::marker::{self, Marker};
 use super::stub;
 use crate::data::DataError;
+
+mod job;
+pub mod judge;
+pub mod report;
+
+pub use job::{GradeError, Job, run};
 
 /// The body of `m` in `text` (a file of the submission whose markers are `theirs`): the
 /// lines strictly between its signature and its closing `}`, or why there is none or it
