@@ -125,7 +125,7 @@ pub fn table_us(levels: &[f64]) -> Vec<f64> {
 
 /// A tabulated sample's outputs: `x`, `pdf`, `bin`, and 1 if the density is positive, else
 /// 0 (a sampler left at a zero-valued end differs from the right one by a float's step in
-/// `x` and a density of about `1e-16`, both lost in [`super::fingerprint`]'s rounding: only
+/// `x` and a density of about `1e-16`, both lost in [`crate::exercise::mistakes::fingerprint`]'s rounding: only
 /// the density's sign tells them apart).
 pub fn sample_outputs(s: Sample) -> [f64; 4] {
     [s.x, s.pdf, s.bin as f64, f64::from(u8::from(s.pdf > 0.0))]
