@@ -134,24 +134,29 @@ pub fn sample_outputs(s: Sample) -> [f64; 4] {
 /// Probe inputs of a piecewise-constant sampler: the checker's three tables at
 /// [`table_us`]; the outputs are each sample's [`sample_outputs`].
 pub fn table(f: fn(&Piecewise1D, f64) -> Sample) -> Vec<f64> {
-    let tables = crate::check::tabulated::tables();
-    tables
-        .iter()
-        .flat_map(|(_, t)| {
-            table_us(t.cdf_table())
-                .into_iter()
-                .flat_map(move |u| sample_outputs(f(t, u)))
-        })
-        .collect()
+    tabulated(
+        &crate::check::tabulated::tables(),
+        Piecewise1D::cdf_table,
+        f,
+    )
 }
 
 /// The same for a piecewise-linear sampler, on the checker's three linear tables.
 pub fn linear_table(f: fn(&PiecewiseLinear1D, f64) -> Sample) -> Vec<f64> {
-    let tables = crate::check::tabulated::linear_tables();
+    tabulated(
+        &crate::check::tabulated::linear_tables(),
+        PiecewiseLinear1D::cdf_table,
+        f,
+    )
+}
+
+/// A tabulated sampler `f` on `tables` at each table's [`table_us`] (read from its CDF,
+/// `cdf`): every sample's [`sample_outputs`].
+fn tabulated<T>(tables: &[(&str, T)], cdf: fn(&T) -> &[f64], f: fn(&T, f64) -> Sample) -> Vec<f64> {
     tables
         .iter()
         .flat_map(|(_, t)| {
-            table_us(t.cdf_table())
+            table_us(cdf(t))
                 .into_iter()
                 .flat_map(move |u| sample_outputs(f(t, u)))
         })
