@@ -35,8 +35,26 @@ fn subcommands(help: &str) -> Vec<String> {
         .collect()
 }
 
-/// The page: an introduction, then each command's help in the order `--help` lists them,
-/// a subcommand's own subcommands after it.
+/// Every command (`[]` for `raylemma` itself, `["check", "sampler"]`) with its help, in the
+/// order `--help` lists them, a subcommand's own subcommands after it.
+fn helps() -> Vec<(Vec<String>, String)> {
+    let mut all = Vec::new();
+    let mut queue: Vec<Vec<String>> = vec![Vec::new()];
+    while let Some(args) = queue.pop() {
+        let argv: Vec<&str> = args.iter().map(String::as_str).collect();
+        let text = help(&argv);
+        // Depth first, in the listed order.
+        for sub in subcommands(&text).into_iter().rev() {
+            let mut next = args.clone();
+            next.push(sub);
+            queue.push(next);
+        }
+        all.push((args, text));
+    }
+    all
+}
+
+/// The page: an introduction, then each command's help ([`helps`]).
 fn page() -> String {
     let mut text = String::from(
         "# The command line\n\n\
@@ -48,24 +66,15 @@ fn page() -> String {
          pass, done), **1** for a negative verdict or a job that failed on good input, **2** for bad\n\
          input or usage, with the file, the line and the problem.\n",
     );
-    let mut queue: Vec<Vec<String>> = vec![Vec::new()];
-    while let Some(args) = queue.pop() {
-        let argv: Vec<&str> = args.iter().map(String::as_str).collect();
-        let text_of = help(&argv);
+    for (args, help) in helps() {
         let title = std::iter::once("raylemma")
-            .chain(argv.iter().copied())
+            .chain(args.iter().map(String::as_str))
             .collect::<Vec<_>>()
             .join(" ");
         text.push_str(&format!(
             "\n## `{title}`\n\n```text\n{}\n```\n",
-            text_of.trim_end()
+            help.trim_end()
         ));
-        // Depth first, in the listed order.
-        for sub in subcommands(&text_of).into_iter().rev() {
-            let mut next = args.clone();
-            next.push(sub);
-            queue.push(next);
-        }
     }
     text
 }
@@ -77,22 +86,12 @@ fn the_command_line_page_is_every_subcommand_s_help() {
 
 #[test]
 fn every_subcommand_s_help_ends_with_an_example() {
-    let top = help(&[]);
-    let mut missing = Vec::new();
-    for sub in subcommands(&top) {
-        let text = help(&[&sub]);
-        let nested = subcommands(&text);
-        if nested.is_empty() {
-            if !text.contains("Example") {
-                missing.push(sub);
-            }
-        } else {
-            for n in nested {
-                if !help(&[&sub, &n]).contains("Example") {
-                    missing.push(format!("{sub} {n}"));
-                }
-            }
-        }
-    }
+    // Every command that is run (one without subcommands of its own), `raylemma` aside.
+    let missing: Vec<String> = helps()
+        .into_iter()
+        .filter(|(args, help)| !args.is_empty() && subcommands(help).is_empty())
+        .filter(|(_, help)| !help.contains("Example"))
+        .map(|(args, _)| args.join(" "))
+        .collect();
     assert!(missing.is_empty(), "no example in the help of: {missing:?}");
 }
