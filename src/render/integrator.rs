@@ -123,7 +123,8 @@ pub fn radiance(
                         (None, _) | (Some(_), DirectLight::Bsdf) => 1.0,
                         (Some(_), DirectLight::Light) => 0.0,
                         (Some(pb), DirectLight::Mis(h)) => {
-                            let pl = light_choice * scene.lights[k].light().pdf(o, d);
+                            let pl = light_choice
+                                * scene.lights[k].light_with(s.light_sampling).pdf(o, d);
                             h.weight(pb, pl)
                         }
                     };
@@ -166,7 +167,7 @@ pub fn radiance(
                     let k =
                         ((u_pick * scene.lights.len() as f64) as usize).min(scene.lights.len() - 1);
                     let light = &scene.lights[k];
-                    if let Some(ls) = light.light().sample(po, u_light) {
+                    if let Some(ls) = light.light_with(s.light_sampling).sample(po, u_light) {
                         let cos = n.dot(ls.dir);
                         // The light's point is seen if nothing lies before it (the
                         // margin keeps the light itself, at `ls.dist` to rounding, out).

@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use super::raw::fnv1a;
-use super::scene::Scene;
+use super::scene::{LightSampling, Scene};
 use crate::output::FileError;
 
 /// A file and the FNV-1a hash of its bytes.
@@ -48,6 +48,10 @@ pub struct Settings {
     pub roulette_depth: u32,
     /// The bounce limit.
     pub max_depth: u32,
+    /// How rectangular lights are sampled, when not by area (the default: absent, so that
+    /// the sidecars of renders by area are unchanged).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub light_sampling: Option<String>,
 }
 
 /// Everything a render was made from.
@@ -352,6 +356,8 @@ impl MadeFrom {
                 direct: format!("{:?}", s.direct),
                 roulette_depth: s.roulette_depth,
                 max_depth: s.max_depth,
+                light_sampling: (s.light_sampling != LightSampling::Area)
+                    .then(|| s.light_sampling.name().to_string()),
             },
         })
     }

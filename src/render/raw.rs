@@ -39,6 +39,7 @@ pub(super) struct RawRender {
     pub(super) roulette_depth: Option<Spanned<i64>>,
     pub(super) max_depth: Option<Spanned<i64>>,
     pub(super) direct: Option<Spanned<String>>,
+    pub(super) light_sampling: Option<Spanned<String>>,
 }
 
 /// `[camera]`.

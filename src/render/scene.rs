@@ -17,6 +17,7 @@ use crate::optics::dispersion::Sellmeier;
 use crate::spectral::emission::{EmissionSampler, WavelengthSample};
 use crate::spectral::spectrum::Spectrum;
 use crate::spectral::wavelength::{N, WavelengthStrategy, Wavelengths, rotate01};
+use crate::transport::rectangle::RectangleLight;
 use crate::transport::shadow::{Heuristic, Light, QuadLight, SphereLight};
 
 /// The strategies of direct lighting: the shadow-ray chapter's
@@ -41,6 +42,34 @@ pub(crate) const DIRECT_STRATEGIES: [(&str, DirectLight); 4] = [
     ("light", DirectLight::Light),
     ("bsdf", DirectLight::Bsdf),
 ];
+
+/// How a rectangular quad light is sampled for next-event estimation (and its pdf for
+/// multiple importance sampling evaluated).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightSampling {
+    /// Uniformly by area, the density converted to solid angle (chapter *Shadow-ray pdfs*).
+    #[default]
+    Area,
+    /// Uniformly in the solid angle the rectangle subtends (chapter *Sampling a rectangle by
+    /// solid angle*); a quad light that is not a rectangle is still sampled by area.
+    SolidAngle,
+}
+
+/// The names the `light_sampling` key accepts.
+pub(crate) const LIGHT_SAMPLINGS: [(&str, LightSampling); 2] = [
+    ("area", LightSampling::Area),
+    ("solid-angle", LightSampling::SolidAngle),
+];
+
+impl LightSampling {
+    /// The name the scene format uses.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Area => "area",
+            Self::SolidAngle => "solid-angle",
+        }
+    }
+}
 
 /// A checked scene, ready to render.
 #[derive(Clone, Debug)]
@@ -176,6 +205,9 @@ pub struct RenderSettings {
     pub direct: DirectLight,
     /// Russian roulette starts after this many bounces.
     pub roulette_depth: u32,
+    /// How rectangular lights are sampled: by area (the default) or by solid angle. Both
+    /// have the same expected image.
+    pub light_sampling: LightSampling,
     /// At most this many bounces, that is paths of at most `max_depth + 1` segments,
     /// whatever the `direct` strategy: the path tracer makes no next-event estimate at the
     /// last vertex, whose BSDF half it never traces. A safety net at its default of 1000:
@@ -286,6 +318,9 @@ pub struct Emitter {
     pub shape: LightShape,
     /// The emitted radiance, per nm.
     pub emission: Spectrum,
+    /// The light as a rectangle sampled by solid angle, when it is a quad with
+    /// perpendicular edges ([`Emitter::new`] sets it).
+    pub rectangle: Option<RectangleLight>,
 }
 
 /// What a ray hit.
@@ -307,7 +342,30 @@ pub struct Hit {
 }
 
 impl Emitter {
-    /// The emitter as a sampleable light.
+    /// The emitter of a shape and a radiance, with its solid-angle sampler if it is a
+    /// rectangle.
+    pub fn new(shape: LightShape, emission: Spectrum) -> Self {
+        let rectangle = match shape {
+            LightShape::Quad(q) => RectangleLight::try_from(q).ok(),
+            LightShape::Sphere(_) => None,
+        };
+        Self {
+            shape,
+            emission,
+            rectangle,
+        }
+    }
+
+    /// The emitter as a light sampled as `sampling` says: a rectangle by solid angle under
+    /// [`LightSampling::SolidAngle`], everything else as [`Emitter::light`].
+    pub fn light_with(&self, sampling: LightSampling) -> &dyn Light {
+        match (&self.rectangle, sampling) {
+            (Some(r), LightSampling::SolidAngle) => r,
+            _ => self.light(),
+        }
+    }
+
+    /// The emitter as a sampleable light (a quad sampled by area).
     pub fn light(&self) -> &dyn Light {
         match &self.shape {
             LightShape::Quad(q) => q,

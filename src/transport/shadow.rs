@@ -40,6 +40,9 @@ pub enum LightError {
     ParallelEdges,
     /// The radius of a sphere is zero, negative or not finite.
     BadRadius(f64),
+    /// The edges of a light that must be a rectangle are not perpendicular: the cosine of
+    /// their angle (chapter *Sampling a rectangle by solid angle*).
+    NotRectangle(f64),
 }
 
 impl fmt::Display for LightError {
@@ -56,6 +59,11 @@ impl fmt::Display for LightError {
             Self::BadRadius(r) => write!(
                 f,
                 "the sphere light's radius {r} is not a positive finite number"
+            ),
+            Self::NotRectangle(c) => write!(
+                f,
+                "the light's edges are not perpendicular (the cosine of their angle is {c:e}): \
+                 only a rectangle can be sampled by solid angle"
             ),
         }
     }

@@ -36,6 +36,7 @@ mod optics {
 
 mod transport {
     mod lambert;
+    mod rectangle;
     mod roulette;
     mod shadow;
 }

@@ -35,8 +35,8 @@ use crate::geometry::parallelogram::Parallelogram;
 use crate::geometry::sphere::Sphere;
 use crate::optics::dispersion;
 use crate::render::scene::{
-    CameraSpec, DirectLight, Emitter, Environment, Geometry, Ior, LightShape, Material,
-    RenderSettings, Scene, Shape, Thickness, Wavelength,
+    CameraSpec, DirectLight, Emitter, Environment, Geometry, Ior, LightSampling, LightShape,
+    Material, RenderSettings, Scene, Shape, Thickness, Wavelength,
 };
 use crate::spectral::spectrum::{Spectrum, Table, builtin};
 use crate::spectral::wavelength::WavelengthStrategy;
@@ -51,6 +51,7 @@ pub fn settings(spp: u32, seed: u64) -> RenderSettings {
         wavelengths: Wavelength::Strategy(WavelengthStrategy::HeroVisible),
         direct: DirectLight::Mis(Heuristic::Power),
         roulette_depth: 3,
+        light_sampling: LightSampling::Area,
         max_depth: 1000,
     }
 }
@@ -112,10 +113,7 @@ fn quad_light() -> Emitter {
         DVec3::new(1.0, 0.0, 0.0),
         DVec3::new(0.0, 0.0, 0.8),
     ) {
-        Ok(q) => Emitter {
-            shape: LightShape::Quad(q),
-            emission: daylight_blackbody(),
-        },
+        Ok(q) => Emitter::new(LightShape::Quad(q), daylight_blackbody()),
         Err(e) => unreachable!("a valid light: {e}"),
     }
 }
@@ -124,10 +122,7 @@ fn quad_light() -> Emitter {
 /// never hides the quad) and beside it (so the quad hides it from no point the camera sees).
 fn sphere_light() -> Emitter {
     match SphereLight::new(DVec3::new(1.3, 1.7, 0.9), 0.25) {
-        Ok(s) => Emitter {
-            shape: LightShape::Sphere(s),
-            emission: warm_blackbody(),
-        },
+        Ok(s) => Emitter::new(LightShape::Sphere(s), warm_blackbody()),
         Err(e) => unreachable!("a valid light: {e}"),
     }
 }
@@ -196,10 +191,7 @@ pub(crate) fn floor_under_a_light_turned_away(side: u32, spp: u32) -> Scene {
             side,
             spp,
             vec![
-                Emitter {
-                    shape: LightShape::Quad(q),
-                    emission: daylight_blackbody(),
-                },
+                Emitter::new(LightShape::Quad(q), daylight_blackbody()),
                 sphere_light(),
             ],
         ),
@@ -312,10 +304,7 @@ fn quad_emitter(corner: [f64; 3], e1: [f64; 3], e2: [f64; 3], emission: Spectrum
         DVec3::from_array(e1),
         DVec3::from_array(e2),
     ) {
-        Ok(q) => Emitter {
-            shape: LightShape::Quad(q),
-            emission,
-        },
+        Ok(q) => Emitter::new(LightShape::Quad(q), emission),
         Err(e) => unreachable!("a valid light: {e}"),
     }
 }

@@ -9,8 +9,8 @@ use super::Checker;
 use crate::data::DataError;
 use crate::render::raw::{RawCamera, RawRender};
 use crate::render::scene::{
-    CameraSpec, DIRECT_STRATEGIES, DirectLight, Emitter, RenderSettings, WAVELENGTH_STRATEGIES,
-    Wavelength,
+    CameraSpec, DIRECT_STRATEGIES, DirectLight, Emitter, LIGHT_SAMPLINGS, LightSampling,
+    RenderSettings, WAVELENGTH_STRATEGIES, Wavelength,
 };
 use crate::spectral::emission::{EmissionSampler, colour_proposal};
 use crate::spectral::spectrum::Spectrum;
@@ -80,8 +80,26 @@ impl Checker<'_> {
                 }
             },
         };
+        let light_sampling = match &r.light_sampling {
+            None => LightSampling::Area,
+            Some(d) => match LIGHT_SAMPLINGS.iter().find(|(n, _)| n == d.get_ref()) {
+                Some((_, s)) => *s,
+                None => {
+                    let names: Vec<&str> = LIGHT_SAMPLINGS.iter().map(|(n, _)| *n).collect();
+                    return self.err(
+                        d.span(),
+                        format!(
+                            "unknown light sampling {:?} (there are: {})",
+                            d.get_ref(),
+                            names.join(", ")
+                        ),
+                    );
+                }
+            },
+        };
         Ok(RenderSettings {
             spp,
+            light_sampling,
             seed,
             wavelengths,
             direct,

@@ -85,7 +85,7 @@ impl Checker<'_> {
             };
             let e = self.required(&l.emission, span, "emission")?;
             let emission = self.spectrum(e, spectra, &format!("{what} emission"))?;
-            lights.push(Emitter { shape, emission });
+            lights.push(Emitter::new(shape, emission));
         }
         Ok(lights)
     }

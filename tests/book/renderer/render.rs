@@ -4,9 +4,9 @@
 //! (chapter *Comparing images*). The exercises' checks are the ignored tests at the end
 //! of the furnaces (`exercise_…`).
 //!
-//! Statistical tests (9 of the suite's budget of 200): the white furnace under four
-//! wavelength strategies, the grey furnace's two regions, one comparison of two seeds and
-//! two of wavelength strategies on a lamp,
+//! Statistical tests (10 of the suite's budget of 200): the white furnace under four
+//! wavelength strategies, the grey furnace's two regions, one comparison of two seeds, two
+//! of wavelength strategies on a lamp, and one of light sampling by area and by solid angle,
 //! each at `raylemma::stats::test_alpha()`, split by Šidák over its pixels. Each has a
 //! planted-bug twin it must reject: lanes weighted by a pdf they were not drawn from in the
 //! white furnace, a reflectance 4 % too high in the grey one, a brighter scene for `compare`.
