@@ -17,8 +17,8 @@ use raylemma_values::{Entry, Values, fingerprint};
 
 use crate::{
     accuracy, colour, compare, conformance, coursework, diagram, dispersion, display, emission,
-    export, external, frame, fresnel, lambert, limit, mitsuba, reflect, roulette, sampling, shadow,
-    specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
+    export, external, frame, fresnel, lambert, limit, mitsuba, rectangle, reflect, roulette,
+    sampling, shadow, specular, sphere, stats, tabulated, testing, thinfilm, upsample, wavelength,
 };
 
 /// Options shared by all figures.
@@ -82,6 +82,7 @@ pub fn all() -> Vec<Output> {
     outputs.extend(lambert::outputs());
     outputs.extend(roulette::outputs());
     outputs.extend(shadow::outputs());
+    outputs.extend(rectangle::outputs());
     outputs.extend(colour::outputs());
     outputs.extend(wavelength::outputs());
     outputs.extend(emission::outputs());

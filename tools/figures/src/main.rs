@@ -29,6 +29,7 @@ mod fresnel;
 mod lambert;
 mod limit;
 mod mitsuba;
+mod rectangle;
 mod reflect;
 mod roulette;
 mod sampling;

@@ -62,12 +62,18 @@ fn rows() -> Vec<Row> {
         diagnosis: vec!["too bright everywhere by 5 %".into()],
         ..row(1, None, "differ", "failed: 3 pixels")
     };
-    let log = crate::support::scratch_file("card-log.txt");
-    std::fs::write(&log, "starting\n\nsegmentation fault\n").unwrap_or_else(|e| panic!("{e}"));
+    // Written once: the tests that call this run in parallel, and one writing the file
+    // while another reads it gave a torn log.
+    static LOG: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    let log = LOG.get_or_init(|| {
+        let log = crate::support::scratch_file("card-log.txt");
+        std::fs::write(&log, "starting\n\nsegmentation fault\n").unwrap_or_else(|e| panic!("{e}"));
+        log
+    });
     let failure = RunFailure::new(
         "my-renderer a.xml out.exr",
         "run 1 (seed 5) ended with status 139".into(),
-        &log,
+        log,
         &PathBuf::from("out.exr"),
     );
     let error = Row {
