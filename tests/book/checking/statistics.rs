@@ -133,7 +133,12 @@ fn p_values_are_uniform_under_the_null() {
     // must lie within 4.5 binomial standard errors of the level (a two-sided normal tail
     // of 7e-6, below test_alpha()). Three statistical tests per experiment, 18 in all.
     for case in NULL_CASES {
-        let ps = case.p_values(RUNS).unwrap();
+        // The chi-squared experiment's first runs are those of `unpooled_cells_reject_too_often`
+        // at its pooling (`NullCase::Chi2` pools at 5, as `chi2_p_value(seed, 5.0)`): shared.
+        let ps = match case {
+            NullCase::Chi2 => chi2_pooled_p_values()[..RUNS as usize].to_vec(),
+            _ => case.p_values(RUNS).unwrap(),
+        };
         let r = ks::one_sample(&ps, |x| x.clamp(0.0, 1.0)).unwrap();
         assert!(r.p_value > test_alpha(), "{case:?}: {r:?}");
         for level in [0.05, 0.01] {
@@ -149,6 +154,22 @@ fn p_values_are_uniform_under_the_null() {
         }
     }
     assert_eq!(NullCase::Chi2.p_value(7), NullCase::Chi2.p_value(7)); // reproducible
+    for seed in [0, 7, RUNS - 1] {
+        assert_eq!(
+            NullCase::Chi2.p_value(seed).unwrap(),
+            chi2_pooled_p_values()[seed as usize]
+        );
+    }
+}
+
+/// Runs of `unpooled_cells_reject_too_often`.
+const CHI2_RUNS: u64 = 100_000;
+
+/// The p-values of runs `0..CHI2_RUNS` of the chi-squared experiment with its cells pooled at
+/// 5 (computed once: `p_values_are_uniform_under_the_null` reads its first `RUNS`).
+fn chi2_pooled_p_values() -> &'static [f64] {
+    static PS: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
+    PS.get_or_init(|| raylemma::stats::null::chi2_p_values(CHI2_RUNS, 5.0).unwrap())
 }
 
 /// The exact two-sample p-value against an enumeration of every path of 5 and 7 samples,
@@ -206,15 +227,13 @@ fn ks_two_sample_exact_matches_the_paths() {
 #[test]
 fn unpooled_cells_reject_too_often() {
     use raylemma::stats::null::chi2_p_values;
-    let runs = 100_000u64;
-    let rejected = |min_expected: f64| {
-        chi2_p_values(runs, min_expected)
-            .unwrap()
-            .iter()
-            .filter(|&&p| p < 1e-4)
-            .count()
-    };
-    let (pooled, unpooled, nominal) = (rejected(5.0), rejected(0.0), runs as f64 * 1e-4);
+    let runs = CHI2_RUNS;
+    let rejected = |ps: &[f64]| ps.iter().filter(|&&p| p < 1e-4).count();
+    let (pooled, unpooled, nominal) = (
+        rejected(chi2_pooled_p_values()),
+        rejected(&chi2_p_values(runs, 0.0).unwrap()),
+        runs as f64 * 1e-4,
+    );
     assert!(
         unpooled as f64 > 2.5 * nominal && unpooled > pooled,
         "at 1e-4: {unpooled} rejections unpooled, {pooled} pooled, {nominal} nominal"

@@ -14,9 +14,21 @@ use raylemma::check::Options;
 use raylemma::check::render::{self, Rendered, judge, ours, pictures, planted, pool, references};
 use raylemma::stats::test_alpha;
 
+/// `render::render_exact(&ours, &Options::default())`, its scenes taken one per task: each
+/// scene's render and expected image are what `render_exact_of` makes of it alone (its seed
+/// set, its own generator: the same images in any order), in the list's order. A test that
+/// waits for them holds one of libtest's threads; the expected images, each made on one
+/// thread, no longer leave the other core idle meanwhile.
 fn exact_images() -> &'static [Rendered] {
+    use rayon::prelude::*;
     static IMAGES: OnceLock<Vec<Rendered>> = OnceLock::new();
-    IMAGES.get_or_init(|| render::render_exact(&ours, &Options::default()))
+    IMAGES.get_or_init(|| {
+        let options = Options::default();
+        render::exact_scenes(options.cases_or(100) as f64 / 100.0)
+            .into_par_iter()
+            .flat_map_iter(|s| render::render_exact_of(&ours, vec![s], &options))
+            .collect()
+    })
 }
 
 fn reference_images() -> &'static [Rendered] {
@@ -469,7 +481,10 @@ fn the_shadow_s_quadrature_is_far_below_the_noise() {
         .find(|s| s.name == "shadows of two lights")
         .unwrap_or_else(|| panic!("no shadow scene"))
         .scene;
-    let (coarse, fine) = (edges::shadow_with(s, 6), edges::shadow_with(s, 12));
+    // The coarse rule is the tests' own (`edges::shadow` is `shadow_with(_, 6)`): the shared
+    // exact images hold it already for this scene, computed by the same function.
+    let coarse = &scene.expected;
+    let fine = edges::shadow_with(s, 12);
     // Each channel's difference in units of that channel's standard error; a channel of
     // zero variance (the umbra's black) must not differ at all.
     let mut ratios = Vec::new();
@@ -497,10 +512,29 @@ fn the_shadow_s_quadrature_is_far_below_the_noise() {
     );
 }
 
-/// The scenes of edges rendered by `planted` must each fail their block test.
+/// The scenes of edges rendered by `planted` must each fail their block test. Rendered as
+/// `render::render_exact_of` renders them (at its seed), each against the expected image the
+/// shared exact images hold for it (the same function of the same scene: the expected
+/// images do not depend on the renderer, and the shadow's quadrature is not made again for
+/// each twin).
 fn assert_edges_reject(planted: render::Renderer, what: &str) {
-    let list = render::edge_scenes(1.0);
-    let images = render::render_exact_of(planted, list, &Options::default());
+    let images: Vec<Rendered> = render::edge_scenes(1.0)
+        .into_iter()
+        .map(|mut s| {
+            s.scene.settings.seed = render::SEED;
+            let shared = exact_images()
+                .iter()
+                .find(|r| r.name == s.name)
+                .unwrap_or_else(|| panic!("{}: not among the exact images", s.name));
+            assert_eq!(shared.block, s.block, "{}", s.name);
+            Rendered {
+                image: planted(&s.scene),
+                expected: shared.expected.clone(),
+                name: s.name,
+                block: s.block,
+            }
+        })
+        .collect();
     let v = judge(&format!("planted: {what}"), &images, test_alpha());
     for name in EDGES {
         assert!(

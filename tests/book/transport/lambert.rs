@@ -430,16 +430,22 @@ fn the_infinite_variance_walk_fails_its_own_t_test() {
     let a = 0.95;
     assert!(furnace_tail_index(a) < 2.0 && furnace_uniform_variance(a).is_infinite());
     let exact = 1.0 / (1.0 - a);
-    let run = |bounce: &dyn Fn(DVec2) -> f64| {
-        let (mut rejected, mut below) = (0, 0);
-        for seed in 0..40 {
-            let s = Summary::of((0..25_000).scan(rng::seeded(400 + seed), |r, _| {
-                Some(furnace_walk(1.0, bounce, r).0)
-            }));
-            rejected += usize::from(ttest::one_sample(&s, exact).unwrap().p_value < 0.01);
-            below += usize::from(s.mean < exact);
-        }
-        (rejected, below)
+    // The 40 seeds are independent (each its own generator): counted in parallel, the same
+    // counts (this test is one of the last of the run, where one thread would work alone).
+    let run = |bounce: &(dyn Fn(DVec2) -> f64 + Sync)| {
+        use rayon::prelude::*;
+        (0..40u64)
+            .into_par_iter()
+            .map(|seed| {
+                let s = Summary::of((0..25_000).scan(rng::seeded(400 + seed), |r, _| {
+                    Some(furnace_walk(1.0, bounce, r).0)
+                }));
+                (
+                    usize::from(ttest::one_sample(&s, exact).unwrap().p_value < 0.01),
+                    usize::from(s.mean < exact),
+                )
+            })
+            .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
     };
     let (rejected, below) = run(&|u| furnace_bounce_uniform(a, u));
     assert!(rejected >= 5, "uniform: {rejected} of 40 rejected at 1 %");
