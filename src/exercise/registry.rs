@@ -116,6 +116,11 @@ pub const LATER: &[Later] = &[
         needs: &["intersect_stable"],
     },
     Later {
+        name: "rectangle chapter",
+        command: "cargo test --test book transport::rectangle",
+        needs: &["area_to_solid_angle"],
+    },
+    Later {
         name: "wavelength chapter",
         command: "cargo test --test book spectral::wavelength",
         needs: &["Sellmeier::index"],
