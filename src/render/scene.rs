@@ -64,10 +64,10 @@ pub(crate) const LIGHT_SAMPLINGS: [(&str, LightSampling); 2] = [
 impl LightSampling {
     /// The name the scene format uses.
     pub fn name(self) -> &'static str {
-        match self {
-            Self::Area => "area",
-            Self::SolidAngle => "solid-angle",
-        }
+        LIGHT_SAMPLINGS
+            .iter()
+            .find(|(_, s)| *s == self)
+            .map_or("area", |(n, _)| n)
     }
 }
 

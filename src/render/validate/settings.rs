@@ -37,20 +37,12 @@ impl Checker<'_> {
             Some(w) if w.get_ref() == "emission" => {
                 Wavelength::Strategy(WavelengthStrategy::HeroVisible)
             }
-            Some(w) => match WAVELENGTH_STRATEGIES.iter().find(|(n, _)| n == w.get_ref()) {
-                Some((_, s)) => Wavelength::Strategy(*s),
-                None => {
-                    let names: Vec<&str> = WAVELENGTH_STRATEGIES.iter().map(|(n, _)| *n).collect();
-                    return self.err(
-                        w.span(),
-                        format!(
-                            "unknown wavelength strategy {:?} (there are: {}, emission)",
-                            w.get_ref(),
-                            names.join(", ")
-                        ),
-                    );
-                }
-            },
+            Some(w) => Wavelength::Strategy(self.named(
+                w,
+                &WAVELENGTH_STRATEGIES,
+                "wavelength strategy",
+                ", emission",
+            )?),
         };
         let depth =
             |x: &Option<Spanned<i64>>, what: &str, default: u32| -> Result<u32, DataError> {
@@ -65,37 +57,11 @@ impl Checker<'_> {
             };
         let direct = match &r.direct {
             None => DirectLight::Mis(Heuristic::Power),
-            Some(d) => match DIRECT_STRATEGIES.iter().find(|(n, _)| n == d.get_ref()) {
-                Some((_, s)) => *s,
-                None => {
-                    let names: Vec<&str> = DIRECT_STRATEGIES.iter().map(|(n, _)| *n).collect();
-                    return self.err(
-                        d.span(),
-                        format!(
-                            "unknown direct-lighting strategy {:?} (there are: {})",
-                            d.get_ref(),
-                            names.join(", ")
-                        ),
-                    );
-                }
-            },
+            Some(d) => self.named(d, &DIRECT_STRATEGIES, "direct-lighting strategy", "")?,
         };
         let light_sampling = match &r.light_sampling {
             None => LightSampling::Area,
-            Some(d) => match LIGHT_SAMPLINGS.iter().find(|(n, _)| n == d.get_ref()) {
-                Some((_, s)) => *s,
-                None => {
-                    let names: Vec<&str> = LIGHT_SAMPLINGS.iter().map(|(n, _)| *n).collect();
-                    return self.err(
-                        d.span(),
-                        format!(
-                            "unknown light sampling {:?} (there are: {})",
-                            d.get_ref(),
-                            names.join(", ")
-                        ),
-                    );
-                }
-            },
+            Some(d) => self.named(d, &LIGHT_SAMPLINGS, "light sampling", "")?,
         };
         Ok(RenderSettings {
             spp,
@@ -106,6 +72,31 @@ impl Checker<'_> {
             roulette_depth: depth(&r.roulette_depth, "roulette_depth", 3)?,
             max_depth: depth(&r.max_depth, "max_depth", 1000)?,
         })
+    }
+
+    /// The value the table `names` gives the name `v`, or the scene error that names the
+    /// key's `what` and lists the names (with `more`, names the caller accepts itself).
+    fn named<T: Copy>(
+        &self,
+        v: &Spanned<String>,
+        names: &[(&str, T)],
+        what: &str,
+        more: &str,
+    ) -> Result<T, DataError> {
+        match names.iter().find(|(n, _)| n == v.get_ref()) {
+            Some((_, t)) => Ok(*t),
+            None => {
+                let list: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
+                self.err(
+                    v.span(),
+                    format!(
+                        "unknown {what} {:?} (there are: {}{more})",
+                        v.get_ref(),
+                        list.join(", ")
+                    ),
+                )
+            }
+        }
     }
 
     /// `[camera]`: finite vectors, a view direction not along `up`, a field of view in

@@ -83,10 +83,7 @@ fn limit_md(settings: &Settings, _: &mut Record) -> anyhow::Result<Vec<u8>> {
     } else {
         (128, 16, 5)
     };
-    let mut scene = render::load(&settings.root.join("scenes").join("cornell.toml"))?;
-    scene.camera.width = side;
-    scene.camera.height = side;
-    scene.settings.roulette_depth = 5;
+    let scene = crate::render::cornell_timed(settings, side)?;
     let samples = f64::from(side * side * spp);
     // One worker thread: the renderer alone, as the hot loop below.
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;

@@ -3,20 +3,15 @@
 //! large light, and for the renderer's `cornell`.
 
 use std::fmt::Write as _;
-use std::hint::black_box;
 use std::time::Instant;
 
-use glam::{DVec2, DVec3};
-
+use super::shadow::{SIDES, measured, square_light, variance_and_time};
 use super::{Output, Record, Settings, timing};
-use raylemma::check::warp::square_point;
 use raylemma::image::Image;
 use raylemma::render::scene::LightSampling;
 use raylemma::render::{self, Progress};
-use raylemma::rng;
-use raylemma::stats::ttest::Summary;
 use raylemma::transport::rectangle::RectangleLight;
-use raylemma::transport::shadow::{IrradianceStrategy, Light, QuadLight, estimate_irradiance};
+use raylemma::transport::shadow::IrradianceStrategy;
 
 /// The outputs of this chapter.
 pub fn outputs() -> Vec<Output> {
@@ -34,67 +29,19 @@ pub fn outputs() -> Vec<Output> {
     ]
 }
 
-/// The lights of the shadow chapter's table (`shadow_strategies`): a square of side `side`
-/// centred 0.3 off the normal at height 1, facing down; the shading point is the origin,
-/// normal `+z`.
-const SIDES: [(&str, f64); 2] = [("small (0.1 × 0.1)", 0.1), ("large (6 × 6)", 6.0)];
-
-/// `(variance per sample / E², ns per sample)` of light sampling with `light`.
-fn measure(light: &dyn Light, exact: f64, settings: &Settings) -> (f64, f64) {
-    let (p, n) = (DVec3::ZERO, DVec3::Z);
-    let samples = if settings.quick { 20_000 } else { 400_000 };
-    let mut rng = rng::seeded(7);
-    let mut s = Summary::default();
-    for _ in 0..samples {
-        let u = square_point(&mut rng);
-        s.push(estimate_irradiance(
-            light,
-            p,
-            n,
-            1.0,
-            IrradianceStrategy::Light,
-            u,
-            DVec2::ZERO,
-        ));
-    }
-    let items = 4096;
-    let us: Vec<DVec2> = (0..items).map(|_| square_point(&mut rng)).collect();
-    let reps = if settings.quick { 5 } else { 51 };
-    let ns = timing::median_ns_per_item(items, reps, || {
-        let mut acc = 0.0;
-        for &u in &us {
-            acc += estimate_irradiance(
-                light,
-                p,
-                n,
-                1.0,
-                IrradianceStrategy::Light,
-                black_box(u),
-                DVec2::ZERO,
-            );
-        }
-        acc.to_bits()
-    });
-    (s.variance() / (exact * exact), ns)
-}
-
 fn strategies_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     let mut md = String::from(
         "| light | sampled by | variance per sample / E² | ns per sample | efficiency against area |\n|---|---|---:|---:|---:|\n",
     );
     // Per light: (variance ratio, efficiency ratio) of solid angle against area.
     let mut ratios = Vec::new();
-    for (label, side) in SIDES {
-        let (corner, e1, e2) = (
-            DVec3::new(0.3 - side / 2.0, -side / 2.0, 1.0),
-            DVec3::new(0.0, side, 0.0),
-            DVec3::new(side, 0.0, 0.0),
-        );
-        let area = QuadLight::new(corner, e1, e2)?;
-        let solid = RectangleLight::new(corner, e1, e2)?;
-        let exact = area.irradiance(DVec3::ZERO, DVec3::Z, 1.0);
-        let (va, ta) = measure(&area, exact, settings);
-        let (vs, ts) = measure(&solid, exact, settings);
+    // Area sampling's row is the shadow chapter's "light" row (the same measurement).
+    for (&(label, side), rows) in SIDES.iter().zip(measured(settings)?) {
+        let area = square_light(side)?;
+        let solid = RectangleLight::try_from(area)?;
+        let (_, exact, va, ta) = rows[0];
+        let (vs, ts) = variance_and_time(&solid, IrradianceStrategy::Light, settings);
+        let (va, vs) = (va / (exact * exact), vs / (exact * exact));
         let key = if side < 1.0 { "small" } else { "large" };
         let eff = (va * ta) / (vs * ts);
         r.number(&format!("{key}.variance_ratio"), vs / va, "s3");
@@ -143,10 +90,7 @@ fn cornell_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     } else {
         (256, 32, 3)
     };
-    let mut scene = render::load(&settings.root.join("scenes").join("cornell.toml"))?;
-    scene.camera.width = side;
-    scene.camera.height = side;
-    scene.settings.roulette_depth = 5;
+    let mut scene = crate::render::cornell_timed(settings, side)?;
     let modes = [LightSampling::Area, LightSampling::SolidAngle];
     // Per mode: the render seconds of each round and the mean variance (the same every
     // round: same seed, same image).

@@ -255,6 +255,16 @@ fn speed_md(
     md
 }
 
+/// `cornell` as the renderer's speed tables time it: `side` by `side` pixels, Russian
+/// roulette from depth 5 (as `tools/mitsuba/speed.sh` renders it).
+pub fn cornell_timed(settings: &Settings, side: u32) -> anyhow::Result<Scene> {
+    let mut scene = render::load(&settings.root.join("scenes").join("cornell.toml"))?;
+    scene.camera.width = side;
+    scene.camera.height = side;
+    scene.settings.roulette_depth = 5;
+    Ok(scene)
+}
+
 /// The figure job's output made from a table of the references: the RMSE against time,
 /// drawn from the committed `render_speed.md` (no rendering).
 pub fn outputs() -> Vec<Output> {

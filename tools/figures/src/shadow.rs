@@ -44,9 +44,9 @@ const STRATEGIES: [(&str, IrradianceStrategy); 4] = [
     ("MIS (power)", IrradianceStrategy::Mis(Heuristic::Power)),
 ];
 
-/// A square light of side `side` at height 1 above the origin, facing down; the shading
-/// point is the origin with normal `+z`.
-fn square_light(side: f64) -> anyhow::Result<QuadLight> {
+/// A square light of side `side` centred 0.3 off the normal at height 1 above the origin,
+/// facing down; the shading point is the origin with normal `+z`.
+pub(crate) fn square_light(side: f64) -> anyhow::Result<QuadLight> {
     Ok(QuadLight::new(
         DVec3::new(0.3 - side / 2.0, -side / 2.0, 1.0),
         DVec3::new(0.0, side, 0.0),
@@ -56,43 +56,54 @@ fn square_light(side: f64) -> anyhow::Result<QuadLight> {
 
 /// `(exact, variance per sample, ns per sample)` of each strategy for one light.
 fn measure(light: &QuadLight, settings: &Settings) -> Vec<(&'static str, f64, f64, f64)> {
-    let (p, n) = (DVec3::ZERO, DVec3::Z);
-    let exact = light.irradiance(p, n, 1.0);
-    let samples = if settings.quick { 20_000 } else { 400_000 };
+    let exact = light.irradiance(DVec3::ZERO, DVec3::Z, 1.0);
     STRATEGIES
         .iter()
         .map(|&(name, strategy)| {
-            let mut rng = rng::seeded(7);
-            let mut s = Summary::default();
-            for _ in 0..samples {
-                let (u, v) = (square_point(&mut rng), square_point(&mut rng));
-                s.push(estimate_irradiance(light, p, n, 1.0, strategy, u, v));
-            }
-            let items = 4096;
-            let us: Vec<(DVec2, DVec2)> = (0..items)
-                .map(|_| (square_point(&mut rng), square_point(&mut rng)))
-                .collect();
-            let reps = if settings.quick { 5 } else { 51 };
-            let ns = timing::median_ns_per_item(items, reps, || {
-                let mut acc = 0.0;
-                for &(u, v) in &us {
-                    acc += estimate_irradiance(light, p, n, 1.0, strategy, black_box(u), v);
-                }
-                acc.to_bits()
-            });
-            (name, exact, s.variance(), ns)
+            let (variance, ns) = variance_and_time(light, strategy, settings);
+            (name, exact, variance, ns)
         })
         .collect()
 }
 
-const SIDES: [(&str, f64); 2] = [("small (0.1 × 0.1)", 0.1), ("large (6 × 6)", 6.0)];
+/// The variance per sample and the nanoseconds per sample of `strategy`'s estimate of the
+/// irradiance from `light` at the origin, normal `+z` (radiance 1).
+pub(crate) fn variance_and_time(
+    light: &dyn Light,
+    strategy: IrradianceStrategy,
+    settings: &Settings,
+) -> (f64, f64) {
+    let (p, n) = (DVec3::ZERO, DVec3::Z);
+    let samples = if settings.quick { 20_000 } else { 400_000 };
+    let mut rng = rng::seeded(7);
+    let mut s = Summary::default();
+    for _ in 0..samples {
+        let (u, v) = (square_point(&mut rng), square_point(&mut rng));
+        s.push(estimate_irradiance(light, p, n, 1.0, strategy, u, v));
+    }
+    let items = 4096;
+    let us: Vec<(DVec2, DVec2)> = (0..items)
+        .map(|_| (square_point(&mut rng), square_point(&mut rng)))
+        .collect();
+    let reps = if settings.quick { 5 } else { 51 };
+    let ns = timing::median_ns_per_item(items, reps, || {
+        let mut acc = 0.0;
+        for &(u, v) in &us {
+            acc += estimate_irradiance(light, p, n, 1.0, strategy, black_box(u), v);
+        }
+        acc.to_bits()
+    });
+    (s.variance(), ns)
+}
+
+pub(crate) const SIDES: [(&str, f64); 2] = [("small (0.1 × 0.1)", 0.1), ("large (6 × 6)", 6.0)];
 
 /// One strategy for one light: `(name, exact E, variance per sample, ns per sample)`.
-type Row = (&'static str, f64, f64, f64);
+pub(crate) type Row = (&'static str, f64, f64, f64);
 
 /// The strategies measured once per run for each light of [`SIDES`]: the table and the
 /// chart show the same measurement.
-fn measured(settings: &Settings) -> anyhow::Result<&'static [Vec<Row>]> {
+pub(crate) fn measured(settings: &Settings) -> anyhow::Result<&'static [Vec<Row>]> {
     static MEASURED: std::sync::OnceLock<Result<Vec<Vec<Row>>, String>> =
         std::sync::OnceLock::new();
     MEASURED

@@ -36,7 +36,25 @@ fn unknown_keys_types_and_names_are_refused() {
     refused_at(
         "seed = 1",
         "wavelengths = \"rainbow\"",
-        &["rainbow", "hero-visible"],
+        &[
+            "unknown wavelength strategy \"rainbow\"",
+            "hero-visible",
+            ", emission)",
+        ],
+    );
+    refused_at(
+        "seed = 1",
+        "direct = \"guess\"",
+        &[
+            "unknown direct-lighting strategy \"guess\"",
+            "mis-power",
+            "bsdf",
+        ],
+    );
+    refused_at(
+        "seed = 1",
+        "light_sampling = \"cone\"",
+        &["unknown light sampling \"cone\"", "area, solid-angle)"],
     );
     // Keys of the other kind of shape, or of another material type.
     refused_at("edge2 = [10, 0, 0]", "radius = 2", &["quad", "radius"]);
