@@ -323,14 +323,17 @@ pub fn render_exact(renderer: Renderer, options: &Options) -> Vec<Rendered> {
 }
 
 /// The exact scenes `list` rendered by `renderer` at seed `options.seed` (default
-/// [`SEED`]), each with its expected image.
+/// [`SEED`]), each with its expected image, in the list's order. The scenes are taken one
+/// per task: an expected image is made on one thread, and the next scene's render keeps
+/// the other cores busy meanwhile (every image is the same in any order).
 pub fn render_exact_of(
     renderer: Renderer,
     list: Vec<ExactScene>,
     options: &Options,
 ) -> Vec<Rendered> {
+    use rayon::prelude::*;
     let seed = options.seed_or(SEED);
-    list.into_iter()
+    list.into_par_iter()
         .map(|mut s| {
             s.scene.settings.seed = seed;
             s

@@ -14,21 +14,9 @@ use raylemma::check::Options;
 use raylemma::check::render::{self, Rendered, judge, ours, pictures, planted, pool, references};
 use raylemma::stats::test_alpha;
 
-/// `render::render_exact(&ours, &Options::default())`, its scenes taken one per task: each
-/// scene's render and expected image are what `render_exact_of` makes of it alone (its seed
-/// set, its own generator: the same images in any order), in the list's order. A test that
-/// waits for them holds one of libtest's threads; the expected images, each made on one
-/// thread, no longer leave the other core idle meanwhile.
 fn exact_images() -> &'static [Rendered] {
-    use rayon::prelude::*;
     static IMAGES: OnceLock<Vec<Rendered>> = OnceLock::new();
-    IMAGES.get_or_init(|| {
-        let options = Options::default();
-        render::exact_scenes(options.cases_or(100) as f64 / 100.0)
-            .into_par_iter()
-            .flat_map_iter(|s| render::render_exact_of(&ours, vec![s], &options))
-            .collect()
-    })
+    IMAGES.get_or_init(|| render::render_exact(&ours, &Options::default()))
 }
 
 fn reference_images() -> &'static [Rendered] {

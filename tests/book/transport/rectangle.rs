@@ -227,11 +227,7 @@ fn directions_are_uniform_in_solid_angle_chi_squared() {
 /// The mean of `f(u)` over `n` seeded points of the unit square.
 fn mean_of(seed: u64, n: usize, mut f: impl FnMut(DVec2) -> f64) -> Summary {
     let mut rng = rng::seeded(seed);
-    let mut s = Summary::default();
-    for _ in 0..n {
-        s.push(f(square_point(&mut rng)));
-    }
-    s
+    Summary::of((0..n).map(|_| f(square_point(&mut rng))))
 }
 
 /// The irradiance estimate `L cos / p_w` at `p` (normal up, +z) with a sample at `(x, y)`
