@@ -10,8 +10,8 @@
 //!
 //! In the rectangle's frame (unit edges `x`, `y`, normal `z`), `p` sees the corner at
 //! `(x0, y0, z0)` and the rectangle is `[x0, x1] x [y0, y1]` in the plane at height `z0`;
-//! `z0` is taken negative (the frame's `z` flipped when `p` is on the emitting side), so
-//! that the formulas hold on both sides. The interior angle of the spherical rectangle at
+//! `z0` is taken negative (seen from the emitting side it is; the frame's `z` is flipped
+//! when `p` is behind the light), so that the formulas hold on both sides. The interior angle of the spherical rectangle at
 //! the corner `(x, y, z0)` is `atan2(|z0| r, +-x y)`, `r` that corner's distance, and
 //! `Omega` is the sum of the four angles minus `2 pi` (Girard's theorem).
 //!
@@ -164,12 +164,15 @@ impl SphericalRectangle {
     /// `x = -z0 s / sqrt(1 - s^2)`. `u` is clamped to `[0, 1]` and `x` to `[x0, x1]`: at the
     /// ends `s` is near `+-1` and `x` may come out infinite.
     ///
-    /// Seen from near the plane above the light's interior, `a` is near 0 at `u = 0` and near
-    /// `2 pi` at `u = 1`, `cos a` near 1 and `N` a difference of two numbers near `b0 - b1`,
-    /// both tiny: its sign, which places `x` at one end or the other, would be rounding. So
+    /// Seen from just above the light's interior (`|z0|` small, `y0 < 0 < y1`), the
+    /// spherical rectangle is nearly a hemisphere: `a` runs from near 0 at `u = 0` to near
+    /// `2 pi` at `u = 1`, and `b0`, `b1` are both near 1. Near either end `cos a` is near 1,
+    /// so `N = b0 cos a - b1` is the difference of two numbers near 1 whose true value is
+    /// tiny, and its sign, which places `x` at one end or the other, would be rounding. So
     /// `a` is measured from the nearer end (`2 pi - a = (1 - u) Omega + k_end` for
-    /// `u > 1/2`) and `N = (b0 - b1) - 2 b0 sin^2(a / 2)`, with `b0 - b1` computed without
-    /// cancellation.
+    /// `u > 1/2`), and `N` is computed as `(b0 - b1) - 2 b0 sin^2(a / 2)` from two small
+    /// terms, neither a difference of numbers near 1 (`b0 - b1` as `(1 - b1) - (1 - b0)`):
+    /// its rounding is then that of the small terms, not of 1.
     pub fn abscissa(&self, u: f64) -> f64 {
         let u = u.clamp(0.0, 1.0);
         let (t, sign) = if u <= 0.5 {

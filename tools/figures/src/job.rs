@@ -255,7 +255,11 @@ const TIMED_WITH: [(&str, &str); 4] = [
 /// --release`. So it is remade only when asked (`--timings`, or `--only` naming it), in
 /// quick mode (CI runs the code that measures it; a failed claim is then a warning), or
 /// when its file is gone.
-fn kept_timing(before: Option<&Entry>, table: Option<&str>, settings: &Settings) -> Option<String> {
+pub fn kept_timing(
+    before: Option<&Entry>,
+    table: Option<&str>,
+    settings: &Settings,
+) -> Option<String> {
     if settings.quick || settings.timings || before.is_some_and(|e| e.quick) {
         return None;
     }

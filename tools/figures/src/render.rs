@@ -354,7 +354,11 @@ fn stderr_png(image: &Image) -> anyhow::Result<Vec<u8>> {
 /// with `force`), saying which it skips and why, then the speed series and the tables, and
 /// writes the results into `figures/reference/` and `figures/` as one set of files, which
 /// lands only when all succeeded. When every reference is current, nothing is rendered
-/// and the tables made from the renders are kept.
+/// and the tables made from the renders are kept. The speed table `render_speed.md` is also
+/// kept when the speed series shows the committed errors and its timings are of a machine
+/// ([`job::kept_timing`]: not in quick mode, not with `--timings`), as the figure job keeps
+/// its timing tables: re-rendering references after a change that leaves every image the
+/// same should not re-time the table under whatever load the machine has then.
 ///
 /// # Errors
 /// The scene or file that failed; `figures/` is then unchanged.
@@ -404,34 +408,67 @@ pub fn write_references(
         render::stage_outputs(&mut files, &refs, r.name, &r.image, &r.sidecar)?;
     }
     let values = raylemma_values::read(figures).map_err(anyhow::Error::msg)?;
-    let mut record = Record::new("render_speed.md");
-    let speed = speed_md(&series, &rendered[0], settings, &mut record).into_bytes();
-    let flat: [(&str, Vec<u8>); 3] = [
+    let flat = [
         (
             "render_references.md",
             references_md(&rendered, settings).into_bytes(),
         ),
         ("render_cornell_stderr.png", stderr_png(&rendered[0].image)?),
-        ("render_speed.md", speed),
     ];
     for (name, bytes) in &flat {
         files.write(&figures.join(name), bytes)?;
     }
-    let entry = record
-        .finish(&flat[2].1, settings.quick)
-        .map_err(anyhow::Error::msg)?;
-    job::stage_values(
-        figures,
-        values,
-        vec![("render_speed.md", entry)],
-        &mut files,
-    )?;
+    let committed = std::fs::read_to_string(figures.join("render_speed.md")).ok();
+    let kept = committed
+        .as_deref()
+        .filter(|md| same_errors(md, &series))
+        .and_then(|md| job::kept_timing(values.get("render_speed"), Some(md), settings));
+    let mut made = Vec::new();
+    if let Some(machine) = kept {
+        eprintln!(
+            "  render_speed.md: kept (the same errors to the digits shown, so the renderer's estimates are unchanged; timings of machine {machine}; --timings measures them on this one)"
+        );
+    } else {
+        let mut record = Record::new("render_speed.md");
+        let speed = speed_md(&series, &rendered[0], settings, &mut record).into_bytes();
+        files.write(&figures.join("render_speed.md"), &speed)?;
+        let entry = record
+            .finish(&speed, settings.quick)
+            .map_err(anyhow::Error::msg)?;
+        made.push(("render_speed.md", entry));
+    }
+    job::stage_values(figures, values, made, &mut files)?;
     Ok(files.commit()?)
+}
+
+/// Whether the committed speed table `md` shows the errors of `series`, spp for spp, to
+/// the digits it prints: the renderer's estimates are then unchanged, and only its timings
+/// would differ if measured again.
+fn same_errors(md: &str, series: &[(u32, f64, f64)]) -> bool {
+    let shown = |e: f64| format!("{e:.3e}").parse::<f64>().ok();
+    let committed = parse_speed_md(md);
+    committed.len() == series.len()
+        && committed
+            .iter()
+            .zip(series)
+            .all(|(&(spp, _, e), &(now, _, f))| spp == now && Some(e) == shown(f))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_speed_table_is_kept_only_for_the_same_errors() {
+        let md = "| spp | seconds | pixel samples / s | RMSE | RMSE² × seconds |\n|---:|---:|---:|---:|---:|\n| 1 | 0.042 | 1.568e6 | 4.500e-1 | 7.880e-3 |\n| 2 | 0.075 | 1.741e6 | 3.091e-1 | 7.192e-3 |\n";
+        assert!(same_errors(md, &[(1, 0.05, 0.450_02), (2, 0.09, 0.309_11)]));
+        assert!(!same_errors(md, &[(1, 0.05, 0.4502), (2, 0.09, 0.309_11)]));
+        assert!(!same_errors(md, &[(1, 0.05, 0.450_02)]));
+        assert!(!same_errors(
+            md,
+            &[(1, 0.05, 0.450_02), (4, 0.09, 0.309_11)]
+        ));
+    }
 
     #[test]
     fn the_speed_table_reads_back_as_written() {
