@@ -47,10 +47,24 @@ fn check_finite(samples: &[f64], what: &'static str) -> Result<(), StatsError> {
     }
 }
 
+/// A sorted copy of `samples`, in the order of [`f64::total_cmp`].
+///
+/// Sorted as the integers `total_cmp` itself compares: the bits as a signed integer, with
+/// the magnitude bits of negative numbers flipped, so that the integer order is the
+/// floating-point order (`-0` just before `+0`). The same order, so the same sorted
+/// values, but the standard library sorts plain integers about a third faster than
+/// floats through a comparison function, and the tests sort millions of samples.
 fn sorted(samples: &[f64]) -> Vec<f64> {
-    let mut v = samples.to_vec();
-    v.sort_unstable_by(f64::total_cmp);
-    v
+    // An involution: the sign bit, which chooses the flip, is left as it is.
+    let key = |bits: u64| {
+        let b = bits as i64;
+        b ^ (((b >> 63) as u64) >> 1) as i64
+    };
+    let mut keys: Vec<i64> = samples.iter().map(|x| key(x.to_bits())).collect();
+    keys.sort_unstable();
+    keys.into_iter()
+        .map(|k| f64::from_bits(key(k as u64) as u64))
+        .collect()
 }
 
 // ANCHOR: statistic
@@ -190,15 +204,22 @@ pub fn two_sample_exact_p(na: usize, nb: usize, gap: u128) -> f64 {
     let mut from = 0;
     for i in 0..=na {
         let (lo, hi) = band(i);
-        for j in from..=(hi + 1).min(nb) {
+        // The mass at (i, j - 1), carried from one point to the next.
+        let mut previous = if from > 0 { row[from - 1] } else { 0.0 };
+        let last = (hi + 1).min(nb);
+        for (j, cell) in row.iter_mut().enumerate().take(last + 1).skip(from) {
+            let mut mass = *cell;
             if j > 0 {
                 // A step in b from (i, j - 1).
-                row[j] += row[j - 1] * (nb - (j - 1)) as f64 / (n - i - (j - 1)) as f64;
+                mass += previous * (nb - (j - 1)) as f64 / (n - i - (j - 1)) as f64;
             }
-            if lattice_gap(na, nb, i, j) >= gap {
-                reached += row[j];
-                row[j] = 0.0;
+            // Outside the band exactly when `|i n_b - j n_a| >= gap`.
+            if j < lo || j > hi {
+                reached += mass;
+                mass = 0.0;
             }
+            *cell = mass;
+            previous = mass;
         }
         if i < na {
             // A step in a from each (i, j) within the gap to (i + 1, j).
