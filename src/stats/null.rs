@@ -149,6 +149,29 @@ pub fn chi2_p_values(runs: u64, min_expected: f64) -> Result<Vec<f64>, StatsErro
         .collect()
 }
 
+/// [`chi2_p_value`] of runs `0..runs` at each of the poolings `min_expected`, in
+/// parallel: `result[seed][k]` is `chi2_p_value(seed, min_expected[k])`, with each run's
+/// counts drawn once for all the poolings.
+///
+/// # Errors
+/// As [`chi2_p_value`].
+pub fn chi2_p_values_pooled<const K: usize>(
+    runs: u64,
+    min_expected: [f64; K],
+) -> Result<Vec<[f64; K]>, StatsError> {
+    (0..runs)
+        .into_par_iter()
+        .map(|seed| {
+            let (observed, expected) = geometric_counts(&mut NullCase::Chi2.rng(seed));
+            let mut ps = [0.0; K];
+            for (p, &pool) in ps.iter_mut().zip(&min_expected) {
+                *p = chi2::pearson(&observed, &expected, pool)?.p_value;
+            }
+            Ok(ps)
+        })
+        .collect()
+}
+
 /// Counts of [`NullCase::Chi2`]: `CHI2_DRAWS` draws by inversion into cells with
 /// probabilities `∝ 0.7^i`, and the expected counts `N P_i`.
 fn geometric_counts(rng: &mut Rng) -> (Vec<u64>, Vec<f64>) {
