@@ -126,6 +126,31 @@ pub fn one_sample(samples: &[f64], cdf: impl Fn(f64) -> f64) -> Result<Ks, Stats
 /// [`StatsError::Empty`] or [`StatsError::NonFiniteSample`] naming `"sample a"` or
 /// `"sample b"`.
 pub fn two_sample(a: &[f64], b: &[f64]) -> Result<Ks, StatsError> {
+    let gap = two_sample_gap(a, b)?;
+    let (na, nb) = (a.len(), b.len());
+    let product = na as f64 * nb as f64;
+    let d = gap as f64 / product;
+    let effective = product / (na + nb) as f64;
+    let p_value = if na.saturating_mul(nb) <= TWO_SAMPLE_EXACT_MAX {
+        two_sample_exact_p(na, nb, gap)
+    } else {
+        kolmogorov_sf(stephens_lambda(effective, d))
+    };
+    Ok(Ks {
+        statistic: d,
+        n: effective as usize,
+        p_value,
+    })
+}
+// ANCHOR_END: two_sample
+
+/// The statistic of [`two_sample`] in integers, `n_a n_b D = max |i n_b - j n_a|` over the
+/// points `(i, j)` of the walk through both sorted samples (tied values stepped over
+/// together): the `gap` of [`two_sample_exact_p`].
+///
+/// # Errors
+/// As [`two_sample`].
+pub fn two_sample_gap(a: &[f64], b: &[f64]) -> Result<u128, StatsError> {
     check_finite(a, "sample a")?;
     check_finite(b, "sample b")?;
     let (a, b) = (sorted(a), sorted(b));
@@ -142,21 +167,8 @@ pub fn two_sample(a: &[f64], b: &[f64]) -> Result<Ks, StatsError> {
         gap = gap.max(lattice_gap(na, nb, i, j));
     }
     // Past the end of one sample the difference only shrinks towards 0: no need to go on.
-    let product = na as f64 * nb as f64;
-    let d = gap as f64 / product;
-    let effective = product / (na + nb) as f64;
-    let p_value = if na.saturating_mul(nb) <= TWO_SAMPLE_EXACT_MAX {
-        two_sample_exact_p(na, nb, gap)
-    } else {
-        kolmogorov_sf(stephens_lambda(effective, d))
-    };
-    Ok(Ks {
-        statistic: d,
-        n: effective as usize,
-        p_value,
-    })
+    Ok(gap)
 }
-// ANCHOR_END: two_sample
 
 /// `|i n_b - j n_a|`: `n_a n_b` times the gap `|i / n_a - j / n_b|` between the two
 /// empirical CDFs after `i` values of `a` and `j` of `b`, exactly.

@@ -154,6 +154,10 @@ fn p_values_are_uniform_under_the_null() {
         }
     }
     assert_eq!(NullCase::Chi2.p_value(7), NullCase::Chi2.p_value(7)); // reproducible
+    // The two-sample runs count each statistic's p-value once: the same p-values.
+    let two = NullCase::KsTwoSample;
+    let each: Vec<f64> = (0..40).map(|s| two.p_value(s).unwrap()).collect();
+    assert_eq!(two.p_values(40).unwrap(), each);
     for seed in [0, 7, RUNS - 1] {
         assert_eq!(
             NullCase::Chi2.p_value(seed).unwrap(),
