@@ -522,27 +522,8 @@ pub fn region_dof(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
 /// variance is NaN, negative or infinite (a render with one sample per pixel has no
 /// variance; [`ImageError::Pixels`]).
 pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, ImageError> {
+    check_inputs(a, b, alpha)?;
     let (ia, ib) = (&a.image, &b.image);
-    if (ia.width, ia.height) != (ib.width, ib.height) {
-        return Err(ImageError::Mismatch(format!(
-            "the images have different sizes: {}x{} and {}x{}",
-            ia.width, ia.height, ib.width, ib.height
-        )));
-    }
-    if !(alpha > 0.0 && alpha < 1.0) {
-        return Err(ImageError::Parameter(format!(
-            "alpha = {alpha} must be in (0, 1)"
-        )));
-    }
-    for (name, e) in [("first", a), ("second", b)] {
-        if e.dof.is_nan() || e.dof <= 0.0 {
-            return Err(ImageError::Parameter(format!(
-                "the {name} image's degrees of freedom, {}, must be > 0",
-                e.dof
-            )));
-        }
-        check_values(&e.image, name)?;
-    }
     let (w, h) = (ia.width, ia.height);
     let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
     let pixel_tests = 3 * ia.mean.len();
@@ -582,6 +563,79 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
     dofs.sort_by(f64::total_cmp);
 
     // Blocks, and the whole image as one region.
+    let regions = block_regions(a, b);
+    let block_failure_count = regions.iter().filter(|r| fails(r.z, z_critical)).count();
+    let image = image_means(ia, ib, na, nb);
+    let m = pixel_tests as f64;
+    Ok(Comparison {
+        size: (w, h),
+        alpha,
+        pixel_tests,
+        block_tests,
+        level,
+        z_critical,
+        sources: [a.source.clone(), b.source.clone()],
+        pixel_dof: (dofs[0], dofs[dofs.len() / 2]),
+        pixel_failures: failures,
+        pixel_failure_count,
+        z: zs,
+        regions,
+        block_failure_count,
+        image,
+        rmse: (sum_d2 / m).sqrt(),
+        mean_z2: sum_z2 / m,
+        share_beyond_95: beyond_95 as f64 / m,
+    })
+}
+// ANCHOR_END: compare
+
+/// The blocks' tests of [`compare`] alone, the same regions in the same order (the
+/// largest `|z|` first), for a search that weighs many hypotheses by the blocks and reads
+/// no pixel's test: the pixels' tests are most of the cost of a comparison.
+///
+/// # Errors
+/// As [`compare`].
+pub fn compare_blocks(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Vec<Region>, ImageError> {
+    check_inputs(a, b, alpha)?;
+    Ok(block_regions(a, b))
+}
+
+/// The errors of [`compare`]: sizes that differ, `alpha` outside (0, 1), a degree of
+/// freedom that is not positive, a value [`check_values`] refuses.
+fn check_inputs(a: &Estimate, b: &Estimate, alpha: f64) -> Result<(), ImageError> {
+    let (ia, ib) = (&a.image, &b.image);
+    if (ia.width, ia.height) != (ib.width, ib.height) {
+        return Err(ImageError::Mismatch(format!(
+            "the images have different sizes: {}x{} and {}x{}",
+            ia.width, ia.height, ib.width, ib.height
+        )));
+    }
+    if !(alpha > 0.0 && alpha < 1.0) {
+        return Err(ImageError::Parameter(format!(
+            "alpha = {alpha} must be in (0, 1)"
+        )));
+    }
+    for (name, e) in [("first", a), ("second", b)] {
+        if e.dof.is_nan() || e.dof <= 0.0 {
+            return Err(ImageError::Parameter(format!(
+                "the {name} image's degrees of freedom, {}, must be > 0",
+                e.dof
+            )));
+        }
+        check_values(&e.image, name)?;
+    }
+    Ok(())
+}
+
+/// The test of each [`BLOCK`] x [`BLOCK`] block's mean, the largest `|z|` first: per
+/// channel, `t = d / sqrt(v)` of the mean difference `d` with the variance `v` of the
+/// pixels' sum over `n²`, and [`region_dof`] degrees of freedom; the block's z is its
+/// channel with the largest `|z|`.
+fn block_regions(a: &Estimate, b: &Estimate) -> Vec<Region> {
+    let (ia, ib) = (&a.image, &b.image);
+    let (na, nb) = (a.dof, b.dof);
+    let (w, h) = (ia.width, ia.height);
+    let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
     let region = |x0: u32, y0: u32, rw: u32, rh: u32| -> Region {
         let pixels = || {
             (y0..(y0 + rh).min(h))
@@ -620,30 +674,8 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
         .map(|k| region((k % bw) * BLOCK, (k / bw) * BLOCK, BLOCK, BLOCK))
         .collect();
     regions.sort_by(|p, q| q.z.abs().total_cmp(&p.z.abs()));
-    let block_failure_count = regions.iter().filter(|r| fails(r.z, z_critical)).count();
-    let image = image_means(ia, ib, na, nb);
-    let m = pixel_tests as f64;
-    Ok(Comparison {
-        size: (w, h),
-        alpha,
-        pixel_tests,
-        block_tests,
-        level,
-        z_critical,
-        sources: [a.source.clone(), b.source.clone()],
-        pixel_dof: (dofs[0], dofs[dofs.len() / 2]),
-        pixel_failures: failures,
-        pixel_failure_count,
-        z: zs,
-        regions,
-        block_failure_count,
-        image,
-        rmse: (sum_d2 / m).sqrt(),
-        mean_z2: sum_z2 / m,
-        share_beyond_95: beyond_95 as f64 / m,
-    })
+    regions
 }
-// ANCHOR_END: compare
 
 /// The relative difference `d / |base|` and the half-width of its 95 % interval (Student's
 /// t with `dof` degrees of freedom on the variance `v` of `d`); NaN where `base` is 0.

@@ -28,7 +28,7 @@
 
 use glam::{DMat3, DVec2, DVec3};
 
-use crate::conformance::compare::{Comparison, Estimate, compare};
+use crate::conformance::compare::{Comparison, Estimate, Region, compare, compare_blocks};
 use crate::image::{Image, ImageError};
 use crate::render::camera::Camera;
 use crate::render::scene::{Scene, Surface};
@@ -62,7 +62,7 @@ pub fn diagnose(
     let Ok(base) = compare(reference, candidate, level) else {
         return Vec::new();
     };
-    let (fail0, excess0) = (failures(&base), excess(&base));
+    let (fail0, excess0) = (failures(&base), excess(&base.regions));
     // (rank, sentence): a full explanation ranks above every partial one, and partial
     // ones by how few failing tests they leave.
     let mut found: Vec<(f64, String)> = Vec::new();
@@ -79,7 +79,7 @@ pub fn diagnose(
     }
     let mut judge = |undone: Result<Comparison, ImageError>, what: String| {
         if let Ok(c) = undone {
-            let (fail, left) = (failures(&c), excess(&c) / excess0);
+            let (fail, left) = (failures(&c), excess(&c.regions) / excess0);
             if c.agree() {
                 found.push((2.0, format!("{what}: undoing it, the candidate AGREES")));
             } else if fail as f64 <= (1.0 - MOST) * fail0 as f64 && left <= 1.0 - MOST {
@@ -186,9 +186,9 @@ pub const UNIFORM_ON_DIRECT_LIGHT: &str = "this rung cannot tell these causes of
 
 /// The excess of the blocks' `Σ z²` over its expectation (one per block and channel), at
 /// least one.
-fn excess(c: &Comparison) -> f64 {
-    let sum: f64 = c.regions.iter().map(|r| r.zs.length_squared()).sum();
-    (sum - 3.0 * c.regions.len() as f64).max(1.0)
+fn excess(regions: &[Region]) -> f64 {
+    let sum: f64 = regions.iter().map(|r| r.zs.length_squared()).sum();
+    (sum - 3.0 * regions.len() as f64).max(1.0)
 }
 
 /// The failing tests of a comparison that a smooth mistake shows in: the blocks and the
@@ -372,8 +372,8 @@ fn best_magnification(
                 ..reference.clone()
             };
             interior(&mut r.image, &candidate.image, border);
-            if let Ok(c) = compare(&r, candidate, level) {
-                let e = excess(&c);
+            if let Ok(blocks) = compare_blocks(&r, candidate, level) {
+                let e = excess(&blocks);
                 if best.is_none_or(|b| e < b.1) {
                     best = Some((m, e));
                 }
@@ -435,8 +435,8 @@ fn best_shift(
     candidate: &Estimate,
     level: f64,
 ) -> Option<((i32, i32), Comparison)> {
-    let base = excess(&compare(reference, candidate, level).ok()?);
-    let mut best: Option<((i32, i32), f64, Comparison)> = None;
+    let base = excess(&compare_blocks(reference, candidate, level).ok()?);
+    let mut best: Option<((i32, i32), f64)> = None;
     for dy in -SHIFTS..=SHIFTS {
         for dx in -SHIFTS..=SHIFTS {
             if (dx, dy) == (0, 0) {
@@ -446,15 +446,20 @@ fn best_shift(
                 image: shifted(&reference.image, dx, dy),
                 ..reference.clone()
             };
-            if let Ok(c) = compare(&r, candidate, level) {
-                let e = excess(&c);
-                if best.as_ref().is_none_or(|b| e < b.1) {
-                    best = Some(((dx, dy), e, c));
+            if let Ok(blocks) = compare_blocks(&r, candidate, level) {
+                let e = excess(&blocks);
+                if best.is_none_or(|b| e < b.1) {
+                    best = Some(((dx, dy), e));
                 }
             }
         }
     }
-    best.filter(|b| b.1 < base).map(|(d, _, c)| (d, c))
+    let ((dx, dy), _) = best.filter(|b| b.1 < base)?;
+    let r = Estimate {
+        image: shifted(&reference.image, dx, dy),
+        ..reference.clone()
+    };
+    compare(&r, candidate, level).ok().map(|c| ((dx, dy), c))
 }
 
 /// "the image is shifted by one pixel down", and the like (`y` down).
@@ -511,8 +516,8 @@ fn index_fit(
         if (image.width, image.height) != size {
             return None;
         }
-        if let Ok(c) = compare(&Estimate::from_variance(image), candidate, level) {
-            let e = excess(&c);
+        if let Ok(blocks) = compare_blocks(&Estimate::from_variance(image), candidate, level) {
+            let e = excess(&blocks);
             if best.is_none_or(|b| e < b.1) {
                 best = Some((n0 + dn, e));
             }

@@ -195,12 +195,32 @@ pub fn planck(nm: f64, kelvin: f64) -> f64 {
 /// Planck's law divided by its own maximum (at Wien's `λ = b / T`), so that the peak is 1.
 /// Zero when there is no peak (`kelvin ≤ 0` or NaN).
 pub fn planck_normalised(nm: f64, kelvin: f64) -> f64 {
-    let peak = planck(WIEN_B / kelvin * 1e9, kelvin);
+    let peak = planck_peak(kelvin);
     if peak > 0.0 {
         planck(nm, kelvin) / peak
     } else {
         0.0
     }
+}
+
+/// The maximum of Planck's law at `kelvin`, `B(b / T, T)` (Wien's `λ = b / T`).
+///
+/// A renderer asks for it at every wavelength of every path, always at the same few
+/// temperatures, so each thread keeps the last temperature's peak: the same value
+/// [`planck`] returns, computed once instead of at every call.
+fn planck_peak(kelvin: f64) -> f64 {
+    thread_local! {
+        static LAST: std::cell::Cell<(u64, f64)> = const { std::cell::Cell::new((u64::MAX, f64::NAN)) };
+    }
+    LAST.with(|last| {
+        let (bits, peak) = last.get();
+        if bits == kelvin.to_bits() {
+            return peak;
+        }
+        let peak = planck(WIEN_B / kelvin * 1e9, kelvin);
+        last.set((kelvin.to_bits(), peak));
+        peak
+    })
 }
 
 // ANCHOR: dense

@@ -80,9 +80,6 @@ impl NullCase {
     /// Only if a test rejects its input, which for these well-formed inputs is a bug.
     pub fn p_value(self, seed: u64) -> Result<f64, StatsError> {
         let mut rng = self.rng(seed);
-        let normals = |rng: &mut Rng, n: usize| -> Vec<f64> {
-            (0..n).map(|_| standard_normal(rng)).collect()
-        };
         Ok(match self {
             // Cells expecting fewer than 5 samples pooled, as everywhere in the project.
             Self::Chi2 => chi2_p_value(seed, 5.0)?,
@@ -97,8 +94,7 @@ impl NullCase {
                 ks::one_sample(&xs, |x| -(-x.max(0.0)).exp_m1())?.p_value
             }
             Self::KsTwoSample => {
-                let a = normals(&mut rng, 200);
-                let b = normals(&mut rng, 301);
+                let (a, b) = two_samples(&mut rng);
                 ks::two_sample(&a, &b)?.p_value
             }
             Self::StudentT => {
@@ -123,8 +119,49 @@ impl NullCase {
     /// # Errors
     /// As [`NullCase::p_value`].
     pub fn p_values(self, runs: u64) -> Result<Vec<f64>, StatsError> {
+        if self == Self::KsTwoSample {
+            return two_sample_p_values(runs);
+        }
         (0..runs).into_par_iter().map(|s| self.p_value(s)).collect()
     }
+}
+
+/// `n` standard normal samples.
+fn normals(rng: &mut Rng, n: usize) -> Vec<f64> {
+    (0..n).map(|_| standard_normal(rng)).collect()
+}
+
+/// The samples of one run of [`NullCase::KsTwoSample`]: 200, then 301, normal.
+fn two_samples(rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
+    let a = normals(rng, 200);
+    let b = normals(rng, 301);
+    (a, b)
+}
+
+/// [`NullCase::p_values`] of [`NullCase::KsTwoSample`], the same p-values as
+/// [`NullCase::p_value`]'s. The exact p-value ([`ks::two_sample_exact_p`], most of a
+/// run's cost) is a function of the statistic `n_a n_b D` alone, an integer that takes
+/// far fewer values than there are runs: each value's p-value is counted once.
+fn two_sample_p_values(runs: u64) -> Result<Vec<f64>, StatsError> {
+    let gaps: Vec<u128> = (0..runs)
+        .into_par_iter()
+        .map(|seed| {
+            let (a, b) = two_samples(&mut NullCase::KsTwoSample.rng(seed));
+            ks::two_sample_gap(&a, &b)
+        })
+        .collect::<Result<_, _>>()?;
+    let mut distinct = gaps.clone();
+    distinct.sort_unstable();
+    distinct.dedup();
+    let ps: Vec<f64> = distinct
+        .par_iter()
+        // 200 x 301 is within ks::TWO_SAMPLE_EXACT_MAX: two_sample's p-value is this count.
+        .map(|&gap| ks::two_sample_exact_p(200, 301, gap))
+        .collect();
+    Ok(gaps
+        .iter()
+        .map(|gap| ps[distinct.partition_point(|d| d < gap)])
+        .collect())
 }
 
 /// The p-value of run `seed` of the [`NullCase::Chi2`] experiment, with the cells that
@@ -146,6 +183,29 @@ pub fn chi2_p_values(runs: u64, min_expected: f64) -> Result<Vec<f64>, StatsErro
     (0..runs)
         .into_par_iter()
         .map(|s| chi2_p_value(s, min_expected))
+        .collect()
+}
+
+/// [`chi2_p_value`] of runs `0..runs` at each of the poolings `min_expected`, in
+/// parallel: `result[seed][k]` is `chi2_p_value(seed, min_expected[k])`, with each run's
+/// counts drawn once for all the poolings.
+///
+/// # Errors
+/// As [`chi2_p_value`].
+pub fn chi2_p_values_pooled<const K: usize>(
+    runs: u64,
+    min_expected: [f64; K],
+) -> Result<Vec<[f64; K]>, StatsError> {
+    (0..runs)
+        .into_par_iter()
+        .map(|seed| {
+            let (observed, expected) = geometric_counts(&mut NullCase::Chi2.rng(seed));
+            let mut ps = [0.0; K];
+            for (p, &pool) in ps.iter_mut().zip(&min_expected) {
+                *p = chi2::pearson(&observed, &expected, pool)?.p_value;
+            }
+            Ok(ps)
+        })
         .collect()
 }
 

@@ -39,14 +39,20 @@ pub fn lambert_brdf(rho: f64, wi: DVec3, wo: DVec3) -> f64 {
 /// `int_0^{2 pi} int_0^{pi/2} g sin theta dtheta dphi`. Error `O(1/n^2)` for smooth `g`.
 pub fn hemisphere_quadrature(g: impl Fn(DVec3) -> f64, n: usize) -> f64 {
     let (dt, dp) = (PI / 2.0 / n as f64, TAU / (2 * n) as f64);
+    // `(cos phi, sin phi)` of the cells' centres, the same on every ring.
+    let around: Vec<(f64, f64)> = (0..2 * n)
+        .map(|j| {
+            let phi = (j as f64 + 0.5) * dp;
+            (phi.cos(), phi.sin())
+        })
+        .collect();
     let mut sum = 0.0;
     for i in 0..n {
         let theta = (i as f64 + 0.5) * dt;
         let (s, c) = theta.sin_cos();
         let mut ring = 0.0;
-        for j in 0..2 * n {
-            let phi = (j as f64 + 0.5) * dp;
-            ring += g(DVec3::new(s * phi.cos(), s * phi.sin(), c));
+        for &(cos_phi, sin_phi) in &around {
+            ring += g(DVec3::new(s * cos_phi, s * sin_phi, c));
         }
         sum += ring * s;
     }

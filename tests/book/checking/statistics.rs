@@ -154,6 +154,10 @@ fn p_values_are_uniform_under_the_null() {
         }
     }
     assert_eq!(NullCase::Chi2.p_value(7), NullCase::Chi2.p_value(7)); // reproducible
+    // The two-sample runs count each statistic's p-value once: the same p-values.
+    let two = NullCase::KsTwoSample;
+    let each: Vec<f64> = (0..40).map(|s| two.p_value(s).unwrap()).collect();
+    assert_eq!(two.p_values(40).unwrap(), each);
     for seed in [0, 7, RUNS - 1] {
         assert_eq!(
             NullCase::Chi2.p_value(seed).unwrap(),
@@ -166,10 +170,23 @@ fn p_values_are_uniform_under_the_null() {
 const CHI2_RUNS: u64 = 100_000;
 
 /// The p-values of runs `0..CHI2_RUNS` of the chi-squared experiment with its cells pooled at
-/// 5 (computed once: `p_values_are_uniform_under_the_null` reads its first `RUNS`).
+/// 5, and with none pooled, each run's counts drawn once for both (computed once:
+/// `p_values_are_uniform_under_the_null` reads the first `RUNS` pooled,
+/// `unpooled_cells_reject_too_often` all of both).
+fn chi2_runs() -> &'static (Vec<f64>, Vec<f64>) {
+    static PS: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::OnceLock::new();
+    PS.get_or_init(|| {
+        raylemma::stats::null::chi2_p_values_pooled(CHI2_RUNS, [5.0, 0.0])
+            .unwrap()
+            .into_iter()
+            .map(|[pooled, unpooled]| (pooled, unpooled))
+            .unzip()
+    })
+}
+
+/// The pooled p-values of [`chi2_runs`].
 fn chi2_pooled_p_values() -> &'static [f64] {
-    static PS: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
-    PS.get_or_init(|| raylemma::stats::null::chi2_p_values(CHI2_RUNS, 5.0).unwrap())
+    &chi2_runs().0
 }
 
 /// The exact two-sample p-value against an enumeration of every path of 5 and 7 samples,
@@ -226,12 +243,20 @@ fn ks_two_sample_exact_matches_the_paths() {
 /// more than 2.5 times as often as nominal, and more often than with the cells pooled.
 #[test]
 fn unpooled_cells_reject_too_often() {
-    use raylemma::stats::null::chi2_p_values;
+    use raylemma::stats::null::{chi2_p_value, chi2_p_values};
     let runs = CHI2_RUNS;
     let rejected = |ps: &[f64]| ps.iter().filter(|&&p| p < 1e-4).count();
+    // Drawn once for both poolings, the same p-values as drawn for each.
+    for seed in [0, 7, runs - 1] {
+        assert_eq!(
+            chi2_runs().1[seed as usize],
+            chi2_p_value(seed, 0.0).unwrap()
+        );
+    }
+    assert_eq!(chi2_p_values(3, 0.0).unwrap(), chi2_runs().1[..3]);
     let (pooled, unpooled, nominal) = (
         rejected(chi2_pooled_p_values()),
-        rejected(&chi2_p_values(runs, 0.0).unwrap()),
+        rejected(&chi2_runs().1),
         runs as f64 * 1e-4,
     );
     assert!(
