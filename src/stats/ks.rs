@@ -129,20 +129,28 @@ pub fn two_sample(a: &[f64], b: &[f64]) -> Result<Ks, StatsError> {
     let gap = two_sample_gap(a, b)?;
     let (na, nb) = (a.len(), b.len());
     let product = na as f64 * nb as f64;
-    let d = gap as f64 / product;
-    let effective = product / (na + nb) as f64;
-    let p_value = if na.saturating_mul(nb) <= TWO_SAMPLE_EXACT_MAX {
-        two_sample_exact_p(na, nb, gap)
-    } else {
-        kolmogorov_sf(stephens_lambda(effective, d))
-    };
     Ok(Ks {
-        statistic: d,
-        n: effective as usize,
-        p_value,
+        statistic: gap as f64 / product,
+        n: (product / (na + nb) as f64) as usize,
+        p_value: two_sample_p_value(na, nb, gap),
     })
 }
 // ANCHOR_END: two_sample
+
+/// The p-value of [`two_sample`] for samples of `na` and `nb` values whose statistic is
+/// `gap / (na nb)`: exact for `na nb <=` [`TWO_SAMPLE_EXACT_MAX`], else Stephens'
+/// approximation.
+pub fn two_sample_p_value(na: usize, nb: usize, gap: u128) -> f64 {
+    let product = na as f64 * nb as f64;
+    if na.saturating_mul(nb) <= TWO_SAMPLE_EXACT_MAX {
+        two_sample_exact_p(na, nb, gap)
+    } else {
+        kolmogorov_sf(stephens_lambda(
+            product / (na + nb) as f64,
+            gap as f64 / product,
+        ))
+    }
+}
 
 /// The statistic of [`two_sample`] in integers, `n_a n_b D = max |i n_b - j n_a|` over the
 /// points `(i, j)` of the walk through both sorted samples (tied values stepped over

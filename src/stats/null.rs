@@ -131,17 +131,20 @@ fn normals(rng: &mut Rng, n: usize) -> Vec<f64> {
     (0..n).map(|_| standard_normal(rng)).collect()
 }
 
-/// The samples of one run of [`NullCase::KsTwoSample`]: 200, then 301, normal.
+/// The sizes of the two samples of [`NullCase::KsTwoSample`].
+const TWO_SAMPLE_SIZES: (usize, usize) = (200, 301);
+
+/// The samples of one run of [`NullCase::KsTwoSample`]: [`TWO_SAMPLE_SIZES`] normal values.
 fn two_samples(rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
-    let a = normals(rng, 200);
-    let b = normals(rng, 301);
+    let a = normals(rng, TWO_SAMPLE_SIZES.0);
+    let b = normals(rng, TWO_SAMPLE_SIZES.1);
     (a, b)
 }
 
 /// [`NullCase::p_values`] of [`NullCase::KsTwoSample`], the same p-values as
-/// [`NullCase::p_value`]'s. The exact p-value ([`ks::two_sample_exact_p`], most of a
-/// run's cost) is a function of the statistic `n_a n_b D` alone, an integer that takes
-/// far fewer values than there are runs: each value's p-value is counted once.
+/// [`NullCase::p_value`]'s. The p-value ([`ks::two_sample_p_value`], most of a run's cost)
+/// is a function of the statistic `n_a n_b D` alone, an integer that takes far fewer
+/// values than there are runs: each value's p-value is counted once.
 fn two_sample_p_values(runs: u64) -> Result<Vec<f64>, StatsError> {
     let gaps: Vec<u128> = (0..runs)
         .into_par_iter()
@@ -155,8 +158,7 @@ fn two_sample_p_values(runs: u64) -> Result<Vec<f64>, StatsError> {
     distinct.dedup();
     let ps: Vec<f64> = distinct
         .par_iter()
-        // 200 x 301 is within ks::TWO_SAMPLE_EXACT_MAX: two_sample's p-value is this count.
-        .map(|&gap| ks::two_sample_exact_p(200, 301, gap))
+        .map(|&gap| ks::two_sample_p_value(TWO_SAMPLE_SIZES.0, TWO_SAMPLE_SIZES.1, gap))
         .collect();
     Ok(gaps
         .iter()
@@ -180,10 +182,10 @@ pub fn chi2_p_value(seed: u64, min_expected: f64) -> Result<f64, StatsError> {
 /// # Errors
 /// As [`chi2_p_value`].
 pub fn chi2_p_values(runs: u64, min_expected: f64) -> Result<Vec<f64>, StatsError> {
-    (0..runs)
-        .into_par_iter()
-        .map(|s| chi2_p_value(s, min_expected))
-        .collect()
+    Ok(chi2_p_values_pooled(runs, [min_expected])?
+        .into_iter()
+        .map(|[p]| p)
+        .collect())
 }
 
 /// [`chi2_p_value`] of runs `0..runs` at each of the poolings `min_expected`, in

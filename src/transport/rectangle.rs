@@ -11,9 +11,10 @@
 //! In the rectangle's frame (unit edges `x`, `y`, normal `z`), `p` sees the corner at
 //! `(x0, y0, z0)` and the rectangle is `[x0, x1] x [y0, y1]` in the plane at height `z0`;
 //! `z0` is taken negative (seen from the emitting side it is; the frame's `z` is flipped
-//! when `p` is behind the light), so that the formulas hold on both sides. The interior angle of the spherical rectangle at
-//! the corner `(x, y, z0)` is `atan2(|z0| r, +-x y)`, `r` that corner's distance, and
-//! `Omega` is the sum of the four angles minus `2 pi` (Girard's theorem).
+//! when `p` is behind the light), so that the formulas hold on both sides. The interior
+//! angle of the spherical rectangle at the corner `(x, y, z0)` is `atan2(|z0| r, +-x y)`,
+//! `r` that corner's distance, and `Omega` is the sum of the four angles minus `2 pi`
+//! (Girard's theorem).
 //!
 //! The sub-rectangle `[x0, x] x [y0, y1]` keeps the two angles at `x0` and adds two new
 //! ones `gamma_b + gamma_t` at `x`: its solid angle is linear in that sum, so drawing the

@@ -39,7 +39,10 @@ fn strategies_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>>
     for (&(label, side), rows) in SIDES.iter().zip(measured(settings)?) {
         let area = square_light(side)?;
         let solid = RectangleLight::try_from(area)?;
-        let (_, exact, va, ta) = rows[0];
+        let &(_, exact, va, ta) = rows
+            .iter()
+            .find(|row| row.0 == "light")
+            .ok_or_else(|| anyhow::anyhow!("the shadow table has no \"light\" row"))?;
         let (vs, ts) = variance_and_time(&solid, IrradianceStrategy::Light, settings);
         let (va, vs) = (va / (exact * exact), vs / (exact * exact));
         let key = if side < 1.0 { "small" } else { "large" };
