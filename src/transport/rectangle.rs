@@ -37,7 +37,9 @@ use crate::transport::shadow::{
 /// two angles near `pi`: each carries a rounding of about `1e-16` absolute, a relative error
 /// of about `1e-16 / Omega` in the point's position within the light. At `1e-6` sr that is
 /// `1e-10`; far below it the mapping loses its digits (and at `Omega` near `1e-16` it would
-/// be noise). A light that small is seen far away or nearly edge-on, where the area pdf is
+/// be noise). Seen edge-on, `N` and `1 - s^2` of [`SphericalRectangle::abscissa`] cancel as
+/// well and the error grows like `1e-15 / Omega^2`: about `5e-4` of the solid angle at
+/// `1.5e-6` sr. A light that small is seen far away or nearly edge-on, where the area pdf is
 /// nearly constant over it anyway or the light contributes almost nothing.
 pub const MIN_SOLID_ANGLE: f64 = 1e-6;
 
@@ -162,18 +164,26 @@ impl SphericalRectangle {
     /// z0^2)` their cosines are `-b0 s` and `-b1 s`, and eliminating one angle gives
     /// `s = sign(N) D / sqrt(N^2 + b0^2 D^2)`, `N = b0 cos a - b1`, `D = sin a` (the paper's
     /// `f = N / D` without dividing by `sin a`, which is 0 at `a = pi`). Then
-    /// `x = -z0 s / sqrt(1 - s^2)`. `u` is clamped to `[0, 1]` and `x` to `[x0, x1]`: at the
-    /// ends `s` is near `+-1` and `x` may come out infinite.
+    /// `x = -z0 s / sqrt(1 - s^2)`. `u` is clamped to `[0, 1]` and `x` to `[x0, x1]`; where
+    /// `s` is `+-1` to rounding (`|x|` beyond about `1e8 |z0|`), `1 - s^2` is 0 and the end
+    /// on the side of `s` is returned.
     ///
-    /// Seen from just above the light's interior (`|z0|` small, `y0 < 0 < y1`), the
-    /// spherical rectangle is nearly a hemisphere: `a` runs from near 0 at `u = 0` to near
-    /// `2 pi` at `u = 1`, and `b0`, `b1` are both near 1. Near either end `cos a` is near 1,
-    /// so `N = b0 cos a - b1` is the difference of two numbers near 1 whose true value is
+    /// Seen from just above the light (`|z0|` small, `x0 <= 0 <= x1` and `y0 <= 0 <= y1`),
+    /// the spherical rectangle is nearly a hemisphere: `a` runs from near 0 at `u = 0` to
+    /// near `2 pi` at `u = 1`, and `b0`, `b1` are both near 1. Near either end `cos a` is near
+    /// 1, so `N = b0 cos a - b1` is the difference of two numbers near 1 whose true value is
     /// tiny, and its sign, which places `x` at one end or the other, would be rounding. So
     /// `a` is measured from the nearer end (`2 pi - a = (1 - u) Omega + k_end` for
     /// `u > 1/2`), and `N` is computed as `(b0 - b1) - 2 b0 sin^2(a / 2)` from two small
     /// terms, neither a difference of numbers near 1 (`b0 - b1` as `(1 - b1) - (1 - b0)`):
-    /// its rounding is then that of the small terms, not of 1.
+    /// it keeps its sign and its digits. (In the textbook form `N` rounds to 0 for `|z0|`
+    /// below about `1e-9` of the light's size and `u` within about `1e-9` of an end, and `x`
+    /// lands at the wrong end.) `x` itself still loses digits where `s` is near `+-1`, since
+    /// `1 - s^2` carries the rounding of 1: a relative error of about
+    /// `1e-16 (x^2 + z0^2) / z0^2`, which misplaces `x` only within a strip holding the
+    /// fraction `u` (or `1 - u`) of the solid angle. Beside the light near its plane
+    /// (`y0 > 0` or `y1 < 0`), `a` is near `pi`, `b0` near -1 and `b1` near 1, and both forms
+    /// of `N` cancel alike.
     pub fn abscissa(&self, u: f64) -> f64 {
         let u = u.clamp(0.0, 1.0);
         let (t, sign) = if u <= 0.5 {
