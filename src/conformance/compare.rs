@@ -130,14 +130,16 @@ impl Estimate {
     /// whether it could: not when the reference's samples per pixel are unknown.
     ///
     /// Why: a candidate's own estimate of its variance misses what its samples missed. On a
-    /// sliver of lit floor at a sphere's edge that one sample in a hundred reaches, four
-    /// renders of 64 samples often all read exactly 0: their spread is 0, and a t-test
+    /// sliver of lit floor at a sphere's edge that one sample in fifty reaches, four
+    /// renders of 64 samples all read exactly 0 with probability `0.98^256`, about 0.6 %: their spread is 0, and a t-test
     /// with no spread is no test (any difference at all is infinitely many standard errors).
     /// Under the hypothesis that both renders estimate the same image with samples equally
     /// spread, `σ̂²_R / N` is the candidate's variance, estimated from the reference's
     /// thousands of samples; a candidate noisier than the reference keeps its own larger
-    /// spread. Raising a variance only shrinks `|t|`, so every test stays at least as
-    /// conservative as before with the same degrees of freedom (`K - 1`, or `n - 1`).
+    /// spread. Raising a variance only shrinks `|t|`, and a pixel's degrees of freedom can
+    /// only fall (to the candidate's, `K - 1` or `n - 1`), so every pixel test stays at least
+    /// as conservative as before; a region's degrees of freedom are computed again from the
+    /// floored variances and can rise where the floor evens out its pixels' shares.
     pub fn floor_from_reference(&mut self, reference: &Estimate, samples: u64) -> bool {
         let Some(n_ref) = reference.image.spp.filter(|&n| n >= 2) else {
             return false;

@@ -59,8 +59,10 @@ pub fn hemisphere_quadrature(g: impl Fn(DVec3) -> f64, n: usize) -> f64 {
     sum * dt * dp
 }
 
-/// The directional-hemispherical reflectance `int f(wi, wo) cos(theta_i) dwi` of a BRDF
-/// for the outgoing direction `wo`, by [`hemisphere_quadrature`].
+/// The albedo of a BRDF for the direction `wo`, `int f(wi, wo) cos(theta_i) dwi`, by
+/// [`hemisphere_quadrature`]: the share of uniform incident light that leaves towards `wo`
+/// (the hemispherical-directional reflectance), which by reciprocity is the share of light
+/// arriving from `wo` that is reflected at all (the directional-hemispherical reflectance).
 pub fn albedo(brdf: impl Fn(DVec3, DVec3) -> f64, wo: DVec3, n: usize) -> f64 {
     hemisphere_quadrature(|wi| brdf(wi, wo) * wi.z, n)
 }
@@ -192,8 +194,9 @@ pub fn uniform_weight_moment(a: f64, s: f64) -> f64 {
 /// [`furnace_walk`]): the root `kappa > 1` of `E[w^kappa] = 1`. The estimate's moments
 /// `E[X^s]` are infinite for every `s >= kappa` (and finite below it), so its variance is
 /// finite only if `kappa > 2`. Needs `E[w] < 1` (then `s -> E[w^s]`, log-convex and 1 at
-/// `s = 0`, is below 1 on `(0, kappa)` and above it beyond); infinity when `E[w^s]` never
-/// reaches 1 (a weight that never exceeds 1). Bisection to `1e-14` relative.
+/// `s = 0`, is below 1 on `(0, kappa)` and above it beyond); infinity when `E[w^s]` is still
+/// below 1 at `s = 2^19`: a weight that never exceeds 1, or a root beyond that (the furnace's
+/// at albedos less than about `1.3e-5` above 1/2). Bisection to `1e-14` relative.
 pub fn tail_index(moment: impl Fn(f64) -> f64) -> f64 {
     let (mut lo, mut hi) = (1.0, 2.0);
     while moment(hi) < 1.0 {
@@ -215,7 +218,8 @@ pub fn tail_index(moment: impl Fn(f64) -> f64) -> f64 {
 }
 
 /// The tail index of [`furnace_walk`] with uniform bounces: the root of
-/// `(2a)^kappa / (kappa + 1) = 1`; infinite for `a <= 1/2`, where `2 a cos <= 1`.
+/// `(2a)^kappa / (kappa + 1) = 1`; infinite for `a <= 1/2`, where `2 a cos <= 1` (and, by
+/// [`tail_index`]'s bound, for `a` less than about `1.3e-5` above 1/2, where it exceeds `2^19`).
 pub fn furnace_tail_index(a: f64) -> f64 {
     tail_index(|s| uniform_weight_moment(a, s))
 }

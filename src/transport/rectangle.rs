@@ -177,8 +177,9 @@ impl SphericalRectangle {
     /// `u > 1/2`), and `N` is computed as `(b0 - b1) - 2 b0 sin^2(a / 2)` from two small
     /// terms, neither a difference of numbers near 1 (`b0 - b1` as `(1 - b1) - (1 - b0)`):
     /// it keeps its sign and its digits. (In the textbook form `N` rounds to 0 for `|z0|`
-    /// below about `1e-9` of the light's size and `u` within about `1e-9` of an end, and `x`
-    /// lands at the wrong end.) `x` itself still loses digits where `s` is near `+-1`, since
+    /// below a few times `1e-9` of the light's size, about `1.9e-9` for a unit square seen
+    /// from above its centre, and `u` within about `1e-9` of an end, and `x` lands at the
+    /// wrong end.) `x` itself still loses digits where `s` is near `+-1`, since
     /// `1 - s^2` carries the rounding of 1: a relative error of about
     /// `1e-16 (x^2 + z0^2) / z0^2`, which misplaces `x` only within a strip holding the
     /// fraction `u` (or `1 - u`) of the solid angle. Beside the light near its plane

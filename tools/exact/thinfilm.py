@@ -96,7 +96,7 @@ def cases():
         (1.5, 1.0, 1.5, 100.0, "an air gap between glass (frustrated total reflection)"),
         (1.0, 4.0, 1.0, 50.0, "index ratio 4, a germanium film in air"),
         (4.0, 1.0, 4.0, 50.0, "index ratio 1/4, an air gap in germanium"),
-        (1.5, 1.4, 1.0, 150.0, "glass / 1.4 / air (total reflection at the substrate)"),
+        (1.5, 1.4, 1.0, 150.0, "glass / 1.4 / air (totally reflecting at the substrate beyond 41.8°)"),
         (1.0, 1.0000001, 1.0, 300.0, "a film matched to its surroundings to 1e-7"),
         (1.5, 1.5, 1.0, 300.0, "a film of the ambient's index (no first interface)"),
         (1.0, 1.5, 1.5, 300.0, "a film of the substrate's index (no second interface)"),

@@ -467,7 +467,7 @@ fn self_hit_md(settings: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
     );
     writeln!(
         md,
-        "\n*{rays} rays leaving random points of spheres of radius 0.1 to 10 placed within 10 units of the origin.*"
+        "\n*{rays} rays leaving random points of spheres of radius 0.1 to 10 whose centres are uniform in the cube [-10, 10]³.*"
     )?;
     Ok(md.into_bytes())
 }
