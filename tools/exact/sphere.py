@@ -156,8 +156,8 @@ def cases():
              unit([aim[i] - o[i] for i in range(3)]), c, 1.0)
     both("1e12 away, passing 1.001 radii from the centre: a decided miss",
          [1.001, 0.0, -1e12], z, zero, 1.0)
-    both("1e12 away, oblique, from 1.01 radii off to 1.11 radii from the centre: a decided miss", [1.01, 0.0, -1e12],
-         unit([1e-13, 0.0, 1.0]), zero, 1.0)
+    both("1e12 away, oblique, from 1.01 radii off to 1.11 radii from the centre: a decided miss",
+         [1.01, 0.0, -1e12], unit([1e-13, 0.0, 1.0]), zero, 1.0)
     both("1e12 away, exactly tangent (b^2 - ac = 0 exactly)", [1.0, 0.0, -1e12], z, zero,
          1.0)
 
