@@ -30,7 +30,7 @@ use statrs::distribution::{ContinuousCDF, StudentsT};
 use crate::image::{Image, ImageError};
 use crate::spectral::display;
 use crate::stats::welford::Welford;
-use crate::stats::{sidak, ttest};
+use crate::stats::{chi2, sidak, ttest};
 
 /// The side of the blocks whose means are compared, pixels.
 pub const BLOCK: u32 = 16;
@@ -50,6 +50,9 @@ pub struct Estimate {
     pub dof: f64,
     /// Where the variance comes from, in words, for the report.
     pub source: String,
+    /// Whether its variances were floored by a reference's ([`Estimate::floor_from_reference`]):
+    /// then a region's test needs no guard against an underestimated pixel ([`region_dof`]).
+    pub floored: bool,
 }
 
 impl Estimate {
@@ -70,7 +73,12 @@ impl Estimate {
                 "its variance channels; samples per pixel unknown (no spp attribute), so the variances are taken as exact (many degrees of freedom)".to_string(),
             ),
         };
-        Estimate { image, dof, source }
+        Estimate {
+            image,
+            dof,
+            source,
+            floored: false,
+        }
     }
 
     // ANCHOR: spread
@@ -117,6 +125,7 @@ impl Estimate {
             },
             dof: (k - 1) as f64,
             source: format!("the spread of {k} images ({} degrees of freedom)", k - 1),
+            floored: false,
         })
     }
     // ANCHOR_END: spread
@@ -151,6 +160,7 @@ impl Estimate {
         self.source += &format!(
             "; raised where smaller to the reference's per-sample variance over {samples} samples per pixel"
         );
+        self.floored = true;
         true
     }
     // ANCHOR_END: floor
@@ -433,7 +443,7 @@ fn fails(z: f64, z_critical: f64) -> bool {
 
 /// The two-sided critical `|t|` at `level` for Student's t with `dof` degrees of freedom
 /// (normal above [`NORMAL_DOF`]).
-pub(crate) fn t_critical(level: f64, dof: f64) -> f64 {
+pub fn t_critical(level: f64, dof: f64) -> f64 {
     if dof > NORMAL_DOF {
         return two_sided_critical(level);
     }
@@ -485,29 +495,52 @@ pub fn pixel_dof(terms: [(f64, f64); 2]) -> f64 {
 }
 
 /// The degrees of freedom of a region's mean, whose variance sums many independent
-/// estimates `v_k` with `ν_k` degrees of freedom each: Welch–Satterthwaite,
-/// `(Σ v)² / Σ v_k² / ν_k`, with each `v_k²` replaced by its unbiased estimate
-/// `v̂_k² ν_k / (ν_k + 2)` (a variance estimate's square overestimates the square of the
-/// variance by `1 + 2 / ν`), and never below the smallest `ν_k`, which bounds the true
-/// value from below. Computed with the shares `v_k / Σ v`, so that tiny variances cannot
-/// underflow; infinite when every estimate is exact, or when the sum is 0.
-pub fn region_dof(terms: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
-    let total: f64 = terms.clone().map(|(v, _)| v).sum();
+/// estimates `v_k` with `ν_k` degrees of freedom each, given as `(v_k, ν_k, u_k)` with
+/// `u_k` the term's [`upper_limit`]. Welch–Satterthwaite's `(Σ σ²)² / Σ (σ_k⁴ / ν_k)`
+/// with both parts estimated without bias: `S = Σ v_k² / (ν_k + 2)` (a variance
+/// estimate's square overestimates the variance's square by `1 + 2 / ν`) and
+/// `(Σ v)² - 2S` (the square of a sum overestimates by the sum's variance), so
+/// `(Σ v)² / S - 2`, exactly `ν` for a single term. The plug-in value is not safe where one
+/// pixel carries most of the region's variance: when that pixel's estimate comes out
+/// small, the shares look even and the degrees of freedom many, just when the region's
+/// `t` is large. So each term in turn is raised to its upper confidence limit `u_k v_k`
+/// and the smallest result is kept; and never below the smallest `ν_k`, which bounds the
+/// true value from below. Computed with the shares `v_k / Σ v`, so that tiny variances
+/// cannot underflow; infinite when every estimate is exact, or when the sum is 0.
+pub fn region_dof(terms: impl Iterator<Item = (f64, f64, f64)> + Clone) -> f64 {
+    let total: f64 = terms.clone().map(|(v, _, _)| v).sum();
     if total.is_nan() || total <= 0.0 {
         return f64::INFINITY;
     }
-    let (denom, least) =
-        terms
-            .filter(|(v, _)| *v > 0.0)
-            .fold((0.0, f64::INFINITY), |(sum, least), (v, dof)| {
-                let share = if dof.is_finite() {
-                    (v / total).powi(2) / (dof + 2.0)
-                } else {
-                    0.0
-                };
-                (sum + share, least.min(dof))
-            });
-    (1.0 / denom).max(least)
+    let estimated = terms
+        .clone()
+        .filter(|&(v, dof, _)| v > 0.0 && dof.is_finite());
+    let s: f64 = estimated
+        .clone()
+        .map(|(v, dof, _)| (v / total).powi(2) / (dof + 2.0))
+        .sum();
+    let least = terms
+        .filter(|&(v, _, _)| v > 0.0)
+        .fold(f64::INFINITY, |least, (_, dof, _)| least.min(dof));
+    // Term k raised by the factor u: the sum grows by (u - 1) w, S by (u² - 1) w² / (ν + 2).
+    let guarded = estimated.fold(1.0 / s - 2.0, |dof, (v, nu, u)| {
+        let w = v / total;
+        let sum = 1.0 + (u - 1.0) * w;
+        dof.min(sum * sum / (s + (u * u - 1.0) * w * w / (nu + 2.0)) - 2.0)
+    });
+    guarded.max(least)
+}
+
+/// The upper confidence limit at one-sided level `level` of a variance estimated with
+/// `dof` degrees of freedom, as a multiple of the estimate: `ν / χ²_ν(level)`, with
+/// `χ²_ν(level)` the chi-squared distribution's lower `level` quantile (a variance exceeds
+/// its estimate that many times with probability `level`), at most `1e100`; 1 for an
+/// estimate taken as exact (above [`NORMAL_DOF`]).
+pub fn upper_limit(dof: f64, level: f64) -> f64 {
+    if dof > NORMAL_DOF {
+        return 1.0;
+    }
+    (dof / chi2::lower_quantile(level, dof)).min(1e100)
 }
 // ANCHOR_END: dof
 
@@ -530,7 +563,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
     let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
     let pixel_tests = 3 * ia.mean.len();
     let block_tests = 3 * (bw * bh) as usize;
-    let level = sidak(alpha, (pixel_tests + block_tests + 3) as u32);
+    let level = test_level(ia, alpha);
     let z_critical = two_sided_critical(level);
     let (na, nb) = (a.dof, b.dof);
 
@@ -565,9 +598,9 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
     dofs.sort_by(f64::total_cmp);
 
     // Blocks, and the whole image as one region.
-    let regions = block_regions(a, b);
+    let regions = block_regions(a, b, level);
     let block_failure_count = regions.iter().filter(|r| fails(r.z, z_critical)).count();
-    let image = image_means(ia, ib, na, nb);
+    let image = image_means(a, b, level);
     let m = pixel_tests as f64;
     Ok(Comparison {
         size: (w, h),
@@ -599,7 +632,41 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
 /// As [`compare`].
 pub fn compare_blocks(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Vec<Region>, ImageError> {
     check_inputs(a, b, alpha)?;
-    Ok(block_regions(a, b))
+    Ok(block_regions(a, b, test_level(&a.image, alpha)))
+}
+
+/// The level of each test of [`compare`] at family-wise level `alpha`: Šidák over every
+/// pixel-channel, every block-channel and the whole image's three channels.
+fn test_level(image: &Image, alpha: f64) -> f64 {
+    let blocks = image.width.div_ceil(BLOCK) as usize * image.height.div_ceil(BLOCK) as usize;
+    sidak(alpha, (3 * (image.mean.len() + blocks + 1)) as u32)
+}
+
+/// One channel's terms of a region's variance, `(v_k, ν_k, u_k)` for [`region_dof`]: every
+/// pixel's variance on both sides, each with its side's degrees of freedom and
+/// [`upper_limit`] at the test's `level` (1 for a floored side).
+fn region_terms<'a>(
+    a: &'a Estimate,
+    b: &'a Estimate,
+    level: f64,
+    c: usize,
+    pixels: impl Iterator<Item = usize> + Clone + 'a,
+) -> impl Iterator<Item = (f64, f64, f64)> + Clone + 'a {
+    // A floored side's variances are the reference's where they could have come out small.
+    let limit = |e: &Estimate| {
+        if e.floored {
+            1.0
+        } else {
+            upper_limit(e.dof, level)
+        }
+    };
+    let (ua, ub) = (limit(a), limit(b));
+    pixels.flat_map(move |i| {
+        [
+            (a.image.var[i][c], a.dof, ua),
+            (b.image.var[i][c], b.dof, ub),
+        ]
+    })
 }
 
 /// The errors of [`compare`]: sizes that differ, `alpha` outside (0, 1), a degree of
@@ -633,9 +700,8 @@ fn check_inputs(a: &Estimate, b: &Estimate, alpha: f64) -> Result<(), ImageError
 /// channel, `t = d / sqrt(v)` of the mean difference `d` with the variance `v` of the
 /// pixels' sum over `n²`, and [`region_dof`] degrees of freedom; the block's z is its
 /// channel with the largest `|z|`.
-fn block_regions(a: &Estimate, b: &Estimate) -> Vec<Region> {
+fn block_regions(a: &Estimate, b: &Estimate, level: f64) -> Vec<Region> {
     let (ia, ib) = (&a.image, &b.image);
-    let (na, nb) = (a.dof, b.dof);
     let (w, h) = (ia.width, ia.height);
     let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
     let region = |x0: u32, y0: u32, rw: u32, rh: u32| -> Region {
@@ -649,8 +715,8 @@ fn block_regions(a: &Estimate, b: &Estimate) -> Vec<Region> {
         for c in 0..3 {
             let d: f64 = pixels().map(|i| ib.mean[i][c] - ia.mean[i][c]).sum::<f64>() / n;
             let base: f64 = pixels().map(|i| ia.mean[i][c]).sum::<f64>() / n;
-            let terms = pixels().flat_map(|i| [(ia.var[i][c], na), (ib.var[i][c], nb)]);
-            let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
+            let terms = region_terms(a, b, level, c, pixels());
+            let v = terms.clone().map(|(v, _, _)| v).sum::<f64>() / (n * n);
             let dof = region_dof(terms);
             let z = equivalent_z(d, v, dof);
             zs[c] = z;
@@ -688,7 +754,8 @@ fn relative(d: f64, v: f64, dof: f64, base: f64) -> (f64, f64) {
 
 /// The whole image's mean difference per channel: its z, degrees of freedom, and the
 /// relative difference with the half-width of its 95 % interval ([`relative`]).
-fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64, (f64, f64)); 3] {
+fn image_means(a: &Estimate, b: &Estimate, level: f64) -> [(f64, f64, (f64, f64)); 3] {
+    let (ia, ib) = (&a.image, &b.image);
     let n = ia.mean.len() as f64;
     std::array::from_fn(|c| {
         let d = ia
@@ -699,12 +766,8 @@ fn image_means(ia: &Image, ib: &Image, na: f64, nb: f64) -> [(f64, f64, (f64, f6
             .sum::<f64>()
             / n;
         let base = ia.mean.iter().map(|p| p[c]).sum::<f64>() / n;
-        let terms = ia
-            .var
-            .iter()
-            .zip(&ib.var)
-            .flat_map(|(p, q)| [(p[c], na), (q[c], nb)]);
-        let v = terms.clone().map(|(v, _)| v).sum::<f64>() / (n * n);
+        let terms = region_terms(a, b, level, c, 0..ia.mean.len());
+        let v = terms.clone().map(|(v, _, _)| v).sum::<f64>() / (n * n);
         let dof = region_dof(terms);
         (equivalent_z(d, v, dof), dof, relative(d, v, dof, base))
     })

@@ -11,7 +11,7 @@
 //! poor for cells expecting few samples, so cells expecting fewer than `min_expected`
 //! (5 by convention) are *pooled* into one cell before the statistic is formed.
 
-use statrs::function::gamma::checked_gamma_ur;
+use statrs::function::gamma::{checked_gamma_lr, checked_gamma_ur};
 
 use super::StatsError;
 
@@ -52,6 +52,31 @@ pub fn upper_tail(statistic: f64, dof: usize) -> f64 {
     checked_gamma_ur(dof as f64 / 2.0, statistic / 2.0).unwrap_or(f64::NAN)
 }
 // ANCHOR_END: upper_tail
+
+/// The lower `p` quantile of the chi-squared distribution with `dof` degrees of freedom:
+/// the `x` with `P(dof / 2, x / 2) = p`, `P` the regularised lower incomplete gamma
+/// function, found by bisection on `ln x` to a relative `1e-12`. Accurate however small
+/// `p` is (statrs' `inverse_cdf` stops at an absolute tolerance, and returns 0 for
+/// quantiles below about `1e-9`); NaN unless `0 < p < 1` and `dof > 0`.
+pub fn lower_quantile(p: f64, dof: f64) -> f64 {
+    if !(p > 0.0 && p < 1.0 && dof > 0.0) {
+        return f64::NAN;
+    }
+    let cdf = |ln_x: f64| checked_gamma_lr(dof / 2.0, ln_x.exp() / 2.0).unwrap_or(f64::NAN);
+    let (mut lo, mut hi) = (-740.0_f64, (2.0 * dof + 100.0).ln());
+    while cdf(hi) < p {
+        hi += 1.0;
+    }
+    while hi - lo > 1e-12 {
+        let mid = 0.5 * (lo + hi);
+        if cdf(mid) < p {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (0.5 * (lo + hi)).exp()
+}
 
 // ANCHOR: validate
 /// Checks the input of [`pearson`]; returns `sum(observed)`.

@@ -132,9 +132,11 @@ fn compare_takes_plain_candidates_from_another_renderer() {
             && report.contains("AGREE"),
         "{report}"
     );
-    // The planted twin: the same scene 3 % brighter.
+    // The planted twin: the same scene 3 % brighter, with the candidates' samples per
+    // pixel (a reference of 4096 with a hundredth of a candidate's variance: 41), which
+    // turns the floor on; without it, four images leave the region tests no power.
     let (reference, bright) = synthetic("bright", 4, 1.03);
-    let out = compare_files(&reference, &bright, &[]);
+    let out = compare_files(&reference, &bright, &["--spp", "41"]);
     let report = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{report}");
     assert!(report.contains("DIFFER"), "{report}");
@@ -439,8 +441,10 @@ fn candidates_as(
 fn compare_reads_xyz_channels_and_hints_at_xyz_written_as_rgb() {
     use raylemma::spectral::cie::linear_srgb_to_xyz;
     let (reference, _) = synthetic("xyz", 1, 1.0);
+    // Each candidate with the samples per pixel of its noise (see `synthetic`): floored.
+    let spp: &[&str] = &["--spp", "41"];
     let xyz = candidates_as("xyz-named", 4, ["X", "Y", "Z"], linear_srgb_to_xyz);
-    let out = compare_files(&reference, &xyz, &[]);
+    let out = compare_files(&reference, &xyz, spp);
     let report = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{report}");
     assert!(
@@ -448,7 +452,7 @@ fn compare_reads_xyz_channels_and_hints_at_xyz_written_as_rgb() {
         "{report}"
     );
     let mislabelled = candidates_as("xyz-as-rgb", 4, ["R", "G", "B"], linear_srgb_to_xyz);
-    let out = compare_files(&reference, &mislabelled, &[]);
+    let out = compare_files(&reference, &mislabelled, spp);
     let report = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{report}");
     assert!(
@@ -456,7 +460,7 @@ fn compare_reads_xyz_channels_and_hints_at_xyz_written_as_rgb() {
         "{report}"
     );
     let bright = candidates_as("xyz-bright", 4, ["R", "G", "B"], |v| 1.03 * v);
-    let out = compare_files(&reference, &bright, &[]);
+    let out = compare_files(&reference, &bright, spp);
     let report = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{report}");
     assert!(!report.contains("hint:"), "{report}");

@@ -18,12 +18,16 @@ use exr::prelude::{
     SmallVec, WritableImage, f16,
 };
 use glam::DVec3;
-use raylemma::conformance::compare::{Estimate, compare, equivalent_z};
+use raylemma::conformance::compare::{
+    Estimate, compare, equivalent_z, region_dof, t_critical, upper_limit,
+};
 use raylemma::image::{ExrContents, Image};
 use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
+use raylemma::stats::chi2::lower_quantile;
 use raylemma::stats::two_sided_critical;
 use raylemma::stats::{sidak, test_alpha};
+use statrs::function::erf::erfc;
 
 /// Side of the synthetic images.
 const SIDE: u32 = 128;
@@ -123,8 +127,10 @@ fn few_candidates_keep_the_false_alarm_rate_and_normal_critical_values_do_not() 
             "K = {k}: |z| > 1.96 in {:.3} % of pixel-channels (z = {z:.2})",
             100.0 * cmp.share_beyond_95
         );
-        // Blocks: their z's are standard normal, so their sum of squares is chi-squared
-        // with one degree of freedom per block and channel.
+        // Blocks: their z's would be standard normal with the plug-in degrees of freedom,
+        // and the guard only shrinks them (it is what makes a block with few candidates
+        // safe, at the cost of power): their sum of squares is at most chi-squared with
+        // one degree of freedom per block and channel (one-sided).
         let n = 3.0 * cmp.regions.len() as f64;
         let sum: f64 = cmp
             .regions
@@ -133,7 +139,7 @@ fn few_candidates_keep_the_false_alarm_rate_and_normal_critical_values_do_not() 
             .sum::<f64>();
         let chi = (sum - n) / (2.0 * n).sqrt();
         assert!(
-            chi.abs() <= critical,
+            chi <= critical,
             "K = {k}: blocks' sum of z^2 {sum:.1} over {n} blocks (z = {chi:.2})"
         );
         assert!(cmp.agree(), "K = {k}:\n{}", cmp.report(["ref", "cand"]));
@@ -179,12 +185,27 @@ fn exercise_1_the_critical_z_of_a_256_by_256_comparison() {
     );
 }
 
+/// Four candidates 3 % brighter, floored as `compare --spp 64` floors them (the reference's
+/// variance is a 64th of one candidate's, so it has 64 x 64 samples per pixel when each
+/// candidate has 64), are refused by the whole image's mean. Not floored, they agree: the
+/// guard against a pixel whose variance came out small leaves the region tests about 3
+/// degrees of freedom, and no test sees 3 % (what `--spp` is for).
 #[test]
 fn four_candidates_three_percent_brighter_are_refused() {
     let mut rng = rng::seeded(0xb4_1647);
     let t = truth(&mut rng);
-    let r = reference(&t, &mut rng);
-    let c = compare(&r, &candidates(&t, 4, 1.03, &mut rng), test_alpha()).unwrap();
+    let mut r = reference(&t, &mut rng);
+    let bare = candidates(&t, 4, 1.03, &mut rng);
+    let c = compare(&r, &bare, test_alpha()).unwrap();
+    assert!(
+        c.agree() && c.image.iter().all(|(_, dof, _)| *dof < 3.5),
+        "{}",
+        c.report(["ref", "cand"])
+    );
+    r.image.spp = Some(64 * 64);
+    let mut floored = bare;
+    assert!(floored.floor_from_reference(&r, 4 * 64));
+    let c = compare(&r, &floored, test_alpha()).unwrap();
     assert!(!c.agree(), "{}", c.report(["ref", "cand"]));
     assert!(
         c.image.iter().all(|(z, _, _)| *z > c.z_critical),
@@ -241,10 +262,20 @@ fn equivalent_z_matches_the_t_table_and_satterthwaite_the_hand_count() {
     assert_eq!(equivalent_z(2.5, 1.0, f64::INFINITY), 2.5);
     assert_eq!(equivalent_z(0.0, 0.0, 3.0), 0.0);
     assert_eq!(equivalent_z(1.0, 0.0, 3.0), f64::INFINITY);
-    // One pixel, variances 1 and 1 with 3 and 3 degrees of freedom: the pixel test takes
-    // the smaller, 3; the whole image's mean (one pixel here) Welch-Satterthwaite with
-    // unbiased squares, 2^2 / (1/5 + 1/5) = 10; with 3 and infinitely many, 3 and
-    // 2^2 / (1/5) = 20.
+    // Two variances 1 and 1 with 3 and 3 degrees of freedom: Welch-Satterthwaite with
+    // both parts unbiased, 2^2 / (1/5 + 1/5) - 2 = 8; with 3 and infinitely many,
+    // 2^2 / (1/5) - 2 = 18; one alone, its own 3 (not 3 + 2). Unguarded (upper limits 1).
+    let hand = [
+        (vec![(1.0, 3.0, 1.0), (1.0, 3.0, 1.0)], 8.0),
+        (vec![(1.0, 3.0, 1.0), (1.0, f64::INFINITY, 1.0)], 18.0),
+        (vec![(1.0, 3.0, 1.0)], 3.0),
+    ];
+    for (terms, dof) in hand {
+        let got = region_dof(terms.iter().copied());
+        assert!((got - dof).abs() < 1e-12, "{terms:?}: {got}");
+    }
+    // In a comparison of one pixel the pixel test takes the smaller side's, 3; so does the
+    // whole image's mean, all but: guarded, a term raised to its upper limit carries it.
     let one = |var: f64, spp: Option<u32>| {
         Estimate::from_variance(Image {
             width: 1,
@@ -254,12 +285,11 @@ fn equivalent_z_matches_the_t_table_and_satterthwaite_the_hand_count() {
             spp,
         })
     };
-    let c = compare(&one(1.0, Some(4)), &one(1.0, Some(4)), 0.01).unwrap();
-    assert_eq!(c.pixel_dof, (3.0, 3.0));
-    assert!((c.image[0].1 - 10.0).abs() < 1e-12, "{:?}", c.image);
-    let c = compare(&one(1.0, Some(4)), &one(1.0, None), 0.01).unwrap();
-    assert_eq!(c.pixel_dof, (3.0, 3.0));
-    assert!((c.image[0].1 - 20.0).abs() < 1e-12, "{:?}", c.image);
+    for other in [Some(4), None] {
+        let c = compare(&one(1.0, Some(4)), &one(1.0, other), 0.01).unwrap();
+        assert_eq!(c.pixel_dof, (3.0, 3.0));
+        assert!((3.0..3.1).contains(&c.image[0].1), "{:?}", c.image);
+    }
     // A side with no variance at all does not lower the degrees of freedom.
     let c = compare(&one(1.0, None), &one(0.0, Some(4)), 0.01).unwrap();
     assert_eq!(c.pixel_dof.0, f64::INFINITY);
@@ -568,4 +598,114 @@ fn rare_light_agrees_once_floored_and_a_brighter_one_does_not() {
         "{}",
         failed.text()
     );
+}
+
+// ---------------------------------------------------------------------------------------
+// A pixel that carries a block's variance.
+
+/// The level of each test of a 32 x 32 comparison at `--alpha 0.01`.
+fn level_32() -> f64 {
+    sidak(0.01, 3 * (32 * 32 + 4 + 1))
+}
+
+/// The chance that one 16 x 16 block's test at `level` fails, with a bias of `bias`
+/// standard errors of the block's mean (0: a false alarm): a candidate of plain images
+/// without the floor, every pixel's variance estimated with `nu` degrees of freedom,
+/// against an exact reference with a sixteenth of that variance; one pixel carries `rho`
+/// times the others' variance. `guarded`: the degrees of freedom of `region_dof` as
+/// `compare` computes them; otherwise the plug-in value (the planted twin: every
+/// `upper_limit` 1, the rule before the guard).
+///
+/// Nothing is drawn for the block's mean: given the variance estimates, its difference is
+/// normal, and the chance that `|t| = |bias + Z| sqrt(V / V̂)` exceeds Student's critical
+/// value `c` is `P(|bias + Z| > c sqrt(V̂ / V))` exactly (Rao–Blackwell). The carrying
+/// pixel's estimate, which sets the tail, is taken at 200 chances spread evenly in
+/// logarithm from 1e-12 to 1 (each weighted by its slice of probability; what lies below
+/// 1e-12 adds at most 1e-12), the other pixels' estimates drawn afresh for each.
+fn block_chance(nu: u32, rho: f64, bias: f64, guarded: bool, rng: &mut Rng) -> f64 {
+    let level = level_32();
+    let n = 256;
+    let dof = f64::from(nu);
+    let u = if guarded {
+        upper_limit(dof, level)
+    } else {
+        1.0
+    };
+    let sd = |x: f64| 0.5 * erfc(x / std::f64::consts::SQRT_2);
+    let slices = 200;
+    let edge = |j: i32| 10f64.powf(-12.0 + 12.0 * f64::from(j) / f64::from(slices));
+    let mut chance = 0.0;
+    for j in 0..slices {
+        let (lo, hi) = (edge(j), edge(j + 1));
+        let first = lower_quantile(0.5 * (lo + hi), dof) / dof;
+        // (v, dof, u) of the candidate's pixels and then the reference's.
+        let mut terms = Vec::with_capacity(2 * n);
+        for k in 0..n {
+            let sigma2 = if k == 0 { rho } else { 1.0 };
+            let x = if k == 0 {
+                first
+            } else {
+                (0..nu).map(|_| standard_normal(rng).powi(2)).sum::<f64>() / dof
+            };
+            terms.push((sigma2 * x, dof, u));
+            terms.push((sigma2 / 16.0, f64::INFINITY, 1.0));
+        }
+        let truth = (rho + (n - 1) as f64) * (1.0 + 1.0 / 16.0);
+        let estimate: f64 = terms.iter().map(|t| t.0).sum();
+        let c = t_critical(level, region_dof(terms.iter().copied()));
+        let r = c * (estimate / truth).sqrt();
+        chance += (hi - lo) * (sd(r - bias) + sd(r + bias));
+    }
+    chance
+}
+
+/// Where one pixel carries a block's variance (a caustic, a firefly) and the candidate's
+/// variances are not floored, the plug-in Welch–Satterthwaite degrees of freedom are many
+/// exactly when that pixel's estimate comes out small, which is when the block's `t` is
+/// large: with 2, 4 or 16 candidates and a pixel of a thousand times the others' variance,
+/// the block's test fails far more often than its level (the planted twin, by factors the
+/// table of chapter *Comparing images* gives). Each term raised in turn to its upper
+/// confidence limit at the test's level (`upper_limit`) holds the level; and where the
+/// variance is spread and estimated from many samples, the guard costs no power. Computed
+/// chances, not counted failures (`block_chance`); the one random part, the other pixels'
+/// estimates, moves them by a few per cent, against margins of factors.
+#[test]
+fn a_pixel_that_carries_a_block_does_not_make_its_test_liberal() {
+    let mut rng = rng::seeded(0x000b_10c5);
+    let level = level_32();
+    // The guard's limits are the chi-squared quantiles (scipy.stats.chi2.ppf(3.3e-6, nu)).
+    for (nu, quantile) in [
+        (1.0, 1.710_597_2e-11),
+        (3.0, 5.360_146_327e-4),
+        (15.0, 1.445_001_714),
+        (1023.0, 831.888_930_6),
+    ] {
+        let u = upper_limit(nu, 3.3e-6);
+        assert!(((u * quantile / nu) - 1.0).abs() < 1e-6, "nu {nu}: {u}");
+    }
+    for (nu, twin_at_least) in [(1, 100.0), (3, 30.0), (15, 2.0)] {
+        let guarded = block_chance(nu, 1000.0, 0.0, true, &mut rng);
+        let plug_in = block_chance(nu, 1000.0, 0.0, false, &mut rng);
+        assert!(
+            guarded <= level,
+            "nu {nu}: the guarded block test fails with chance {guarded:.3e}, level {level:.3e}"
+        );
+        assert!(
+            plug_in >= twin_at_least * level,
+            "nu {nu}: the plug-in twin fails with chance {plug_in:.3e}, only {:.1} x the level",
+            plug_in / level
+        );
+    }
+    // Spread evenly over 256 pixels of 64 samples: the false alarms at the level, and a
+    // bias the exact-variance test finds half the time found as often.
+    let bias = two_sided_critical(level);
+    for guarded in [true, false] {
+        let alarms = block_chance(63, 1.0, 0.0, guarded, &mut rng);
+        let power = block_chance(63, 1.0, bias, guarded, &mut rng);
+        assert!(
+            alarms <= 1.2 * level && power >= 0.45,
+            "guarded {guarded}: false alarms {:.2} x the level, power {power:.3}",
+            alarms / level
+        );
+    }
 }

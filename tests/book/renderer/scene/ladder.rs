@@ -129,7 +129,8 @@ fn the_card_s_diagnosis_names_each_mistake() {
     };
     let reference = load("01-direct-quad");
     let level = raylemma::stats::sidak(raylemma::stats::test_alpha(), 5);
-    // Four runs of a scene, and their estimate after `change` (pixel index, value).
+    // Four runs of a scene, and their estimate after `change` (pixel index, value), floored
+    // by the reference's variance as the card floors a candidate whose samples it knows.
     let render_runs = |scene: &render::scene::Scene| -> Vec<Vec<glam::DVec3>> {
         (1..=4u64)
             .map(|seed| {
@@ -146,7 +147,9 @@ fn the_card_s_diagnosis_names_each_mistake() {
             .map(|m| m.iter().enumerate().map(|(i, &p)| change(i, p)).collect())
             .collect();
         let means: Vec<&[glam::DVec3]> = changed.iter().map(|m| &m[..]).collect();
-        Estimate::from_spread(64, 64, &means).unwrap()
+        let mut e = Estimate::from_spread(64, 64, &means).unwrap();
+        assert!(e.floor_from_reference(&reference, 4 * 64));
+        e
     };
     let runs = |scene: &render::scene::Scene| estimate(&render_runs(scene), &|_, p| p);
     let clean_images = render_runs(&file.scene);
