@@ -12,8 +12,8 @@
 //! `t = d / sqrt(v)` is compared with Student's t: with the smaller of the two sides'
 //! degrees of freedom for a pixel (conservative, [`pixel_dof`]), and for the mean of a
 //! block of pixels or of the whole image, `d̄ = Σ d_i / n` with `v̄ = Σ v_i / n²` (the
-//! pixels are independent), with the Welch–Satterthwaite degrees of freedom of that sum
-//! ([`region_dof`]). Three families of two-sided tests (every pixel and channel, the means
+//! pixels are independent), with the Welch–Satterthwaite degrees of freedom of that sum,
+//! guarded against a pixel whose variance came out small ([`region_dof`]). Three families of two-sided tests (every pixel and channel, the means
 //! of square blocks, the whole image's mean per channel) are held together by Šidák's
 //! correction at the chance `alpha` of a false alarm for two correct renders.
 //!
@@ -140,15 +140,16 @@ impl Estimate {
     ///
     /// Why: a candidate's own estimate of its variance misses what its samples missed. On a
     /// sliver of lit floor at a sphere's edge that one sample in fifty reaches, four
-    /// renders of 64 samples all read exactly 0 with probability `0.98^256`, about 0.6 %: their spread is 0, and a t-test
-    /// with no spread is no test (any difference at all is infinitely many standard errors).
+    /// renders of 64 samples all read exactly 0 with probability `0.98^256`, about 0.6 %:
+    /// their spread is 0, and a t-test with no spread is no test (any difference at all is infinitely many standard errors).
     /// Under the hypothesis that both renders estimate the same image with samples equally
     /// spread, `σ̂²_R / N` is the candidate's variance, estimated from the reference's
     /// thousands of samples; a candidate noisier than the reference keeps its own larger
     /// spread. Raising a variance only shrinks `|t|`, and a pixel's degrees of freedom can
     /// only fall (to the candidate's, `K - 1` or `n - 1`), so every pixel test stays at least
     /// as conservative as before; a region's degrees of freedom are computed again from the
-    /// floored variances and can rise where the floor evens out its pixels' shares.
+    /// floored variances, without the guard against a pixel whose variance came out small
+    /// ([`region_dof`]), and can rise where the floor evens out its pixels' shares.
     pub fn floor_from_reference(&mut self, reference: &Estimate, samples: u64) -> bool {
         let Some(n_ref) = reference.image.spp.filter(|&n| n >= 2) else {
             return false;

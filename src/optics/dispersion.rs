@@ -99,8 +99,8 @@ impl Sellmeier {
 
     /// `(n(d) − 1) / (n(f) − n(c))` at any three wavelengths (nm), with neither
     /// difference taken of rounded indices: `n_F` and `n_C` agree to two or three digits,
-    /// and subtracting them would lose those digits (up to 10 κ ulps at the catalogue's
-    /// lines, chapter *Dispersion*). Instead `n − 1 = (n² − 1)/(n + 1)` and
+    /// and subtracting them would lose those digits (up to 26 κ ulps at the catalogue's
+    /// lines, water's, chapter *Dispersion*). Instead `n − 1 = (n² − 1)/(n + 1)` and
     /// `n_F − n_C = (n_F² − n_C²)/(n_F + n_C)`, whose numerator is summed term by term,
     /// `B_i λF²/(λF² − C_i) − B_i λC²/(λC² − C_i) = B_i C_i (λC² − λF²) / ((λF² − C_i)(λC² − C_i))`,
     /// with `λC² − λF² = (λC − λF)(λC + λF)` (exact difference when the two are within a

@@ -24,7 +24,8 @@ pub struct Proposal {
 // EXERCISE sampling/importance estimate: the importance-sampling estimator: the terms f(X)/q(X) of n draws X ~ q, 0 where q(X) = 0
 /// The importance-sampling estimator's terms `f(X) / q(X)` for `n` draws `X ~ q`,
 /// summarised (mean = the estimate; its variance and standard error come with it).
-/// A draw where `q(X) = 0` (possible only on a set of probability zero) contributes 0.
+/// A draw where `q(X) = 0` contributes 0 (a set of probability zero in exact arithmetic,
+/// not always in floating point: `q = 3x²` draws `x = 0` when its uniform is 0).
 pub fn estimate(f: impl Fn(f64) -> f64, q: &Proposal, n: usize, rng: &mut Rng) -> Summary {
     let mut terms = Summary::default();
     for _ in 0..n {

@@ -218,8 +218,8 @@ pub fn tail_index(moment: impl Fn(f64) -> f64) -> f64 {
 }
 
 /// The tail index of [`furnace_walk`] with uniform bounces: the root of
-/// `(2a)^kappa / (kappa + 1) = 1`; infinite for `a <= 1/2`, where `2 a cos <= 1` (and, by
-/// [`tail_index`]'s bound, for `a` less than about `1.3e-5` above 1/2, where it exceeds `2^19`).
+/// `(2a)^kappa / (kappa + 1) = 1`; infinite for `a <= 1/2`, where `2 a cos <= 1`, and where
+/// the root is beyond [`tail_index`]'s bound.
 pub fn furnace_tail_index(a: f64) -> f64 {
     tail_index(|s| uniform_weight_moment(a, s))
 }

@@ -121,7 +121,7 @@ def cases():
             (hi, "the fitted range's long end"),
             (1.0, "far outside: 1 nm, below every pole (n^2 - 1 small and negative)"),
             (1e-3, "far outside: 1e-3 nm, n - 1 ~ -1e-10"),
-            (1e-150, "far outside: 1e-150 nm, lambda^2 underflows (n = 1 to the last digit)"),
+            (1e-150, "far outside: 1e-150 nm, where n rounds to 1"),
             (5e-324, "the subnormal wavelength 5e-324 nm"),
             (0.0, "wavelength 0 exactly"),
             (-550.0, "a negative wavelength (the formula is even in lambda)"),

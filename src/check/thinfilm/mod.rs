@@ -67,7 +67,7 @@ pub fn airy(
         .in_unit("absolute error of the amplitude");
     let mut energy = Finding::new(
         "energy",
-        "|r| <= 1 for real r12, r23 in [-1, 1], real delta",
+        "|r| <= 1 for real r12, r23 in [-0.9, 0.9], real delta",
     )
     .in_unit("excess of |r|^2 over 1");
     let zero = Complex64::new(0.0, 0.0);
