@@ -26,8 +26,10 @@
 use crate::stats::two_sided_critical;
 use glam::DVec3;
 use statrs::distribution::{ContinuousCDF, StudentsT};
+use statrs::function::erf::erfc;
 
 use crate::image::{Image, ImageError};
+use crate::rng::{Rng, standard_normal};
 use crate::spectral::display;
 use crate::stats::welford::Welford;
 use crate::stats::{chi2, sidak, ttest};
@@ -542,6 +544,55 @@ pub fn upper_limit(dof: f64, level: f64) -> f64 {
         return 1.0;
     }
     (dof / chi2::lower_quantile(level, dof)).min(1e100)
+}
+
+/// The chance that a 16 x 16 block's test at `level` fails, for a bias of `bias` standard
+/// errors of the block's mean (0: a false alarm), with the candidate's every pixel variance
+/// estimated with `nu` degrees of freedom and not floored, against an exact reference with
+/// a sixteenth of that variance, one pixel carrying `rho` times the others' variance; the
+/// degrees of freedom [`region_dof`]'s, `guarded` or the plug-in ones (every
+/// [`upper_limit`] 1). The case the guard is for, measured in chapter *Comparing images*.
+///
+/// Nothing is drawn for the block's mean: given the variance estimates, its difference is
+/// normal, and the chance that `|t| = |bias + Z| sqrt(V / V̂)` exceeds Student's critical
+/// value `c` is `P(|bias + Z| > c sqrt(V̂ / V))` exactly (Rao–Blackwell). The carrying
+/// pixel's estimate, which sets the tail, is taken at 200 chances spread evenly in
+/// logarithm from `1e-12` to 1, each weighted by its slice of probability (what lies below
+/// `1e-12` adds at most `1e-12`); the other pixels' estimates, `χ²_ν / ν` as sums of `ν`
+/// squared normals, are drawn afresh for each.
+pub fn block_chance(nu: u32, rho: f64, bias: f64, guarded: bool, level: f64, rng: &mut Rng) -> f64 {
+    let n = (BLOCK * BLOCK) as usize;
+    let dof = f64::from(nu);
+    let u = if guarded {
+        upper_limit(dof, level)
+    } else {
+        1.0
+    };
+    let upper_tail = |x: f64| 0.5 * erfc(x / std::f64::consts::SQRT_2);
+    let slices = 200;
+    let edge = |j: i32| 10f64.powf(-12.0 + 12.0 * f64::from(j) / f64::from(slices));
+    let truth = (rho + (n - 1) as f64) * (1.0 + 1.0 / 16.0);
+    let mut chance = 0.0;
+    let mut terms = Vec::with_capacity(2 * n);
+    for j in 0..slices {
+        let (lo, hi) = (edge(j), edge(j + 1));
+        terms.clear();
+        for k in 0..n {
+            let (sigma2, x) = if k == 0 {
+                (rho, chi2::lower_quantile(0.5 * (lo + hi), dof) / dof)
+            } else {
+                let sum: f64 = (0..nu).map(|_| standard_normal(rng).powi(2)).sum();
+                (1.0, sum / dof)
+            };
+            terms.push((sigma2 * x, dof, u));
+            terms.push((sigma2 / 16.0, f64::INFINITY, 1.0));
+        }
+        let estimate: f64 = terms.iter().map(|t| t.0).sum();
+        let c = t_critical(level, region_dof(terms.iter().copied()));
+        let r = c * (estimate / truth).sqrt();
+        chance += (hi - lo) * (upper_tail(r - bias) + upper_tail(r + bias));
+    }
+    chance
 }
 // ANCHOR_END: dof
 

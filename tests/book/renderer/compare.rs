@@ -19,15 +19,13 @@ use exr::prelude::{
 };
 use glam::DVec3;
 use raylemma::conformance::compare::{
-    Estimate, compare, equivalent_z, region_dof, t_critical, upper_limit,
+    Estimate, block_chance, compare, equivalent_z, region_dof, upper_limit,
 };
 use raylemma::image::{ExrContents, Image};
 use raylemma::rng::standard_normal;
 use raylemma::rng::{self, Rng};
-use raylemma::stats::chi2::lower_quantile;
 use raylemma::stats::two_sided_critical;
 use raylemma::stats::{sidak, test_alpha};
-use statrs::function::erf::erfc;
 
 /// Side of the synthetic images.
 const SIDE: u32 = 128;
@@ -608,57 +606,6 @@ fn level_32() -> f64 {
     sidak(0.01, 3 * (32 * 32 + 4 + 1))
 }
 
-/// The chance that one 16 x 16 block's test at `level` fails, with a bias of `bias`
-/// standard errors of the block's mean (0: a false alarm): a candidate of plain images
-/// without the floor, every pixel's variance estimated with `nu` degrees of freedom,
-/// against an exact reference with a sixteenth of that variance; one pixel carries `rho`
-/// times the others' variance. `guarded`: the degrees of freedom of `region_dof` as
-/// `compare` computes them; otherwise the plug-in value (the planted twin: every
-/// `upper_limit` 1, the rule before the guard).
-///
-/// Nothing is drawn for the block's mean: given the variance estimates, its difference is
-/// normal, and the chance that `|t| = |bias + Z| sqrt(V / V̂)` exceeds Student's critical
-/// value `c` is `P(|bias + Z| > c sqrt(V̂ / V))` exactly (Rao–Blackwell). The carrying
-/// pixel's estimate, which sets the tail, is taken at 200 chances spread evenly in
-/// logarithm from 1e-12 to 1 (each weighted by its slice of probability; what lies below
-/// 1e-12 adds at most 1e-12), the other pixels' estimates drawn afresh for each.
-fn block_chance(nu: u32, rho: f64, bias: f64, guarded: bool, rng: &mut Rng) -> f64 {
-    let level = level_32();
-    let n = 256;
-    let dof = f64::from(nu);
-    let u = if guarded {
-        upper_limit(dof, level)
-    } else {
-        1.0
-    };
-    let sd = |x: f64| 0.5 * erfc(x / std::f64::consts::SQRT_2);
-    let slices = 200;
-    let edge = |j: i32| 10f64.powf(-12.0 + 12.0 * f64::from(j) / f64::from(slices));
-    let mut chance = 0.0;
-    for j in 0..slices {
-        let (lo, hi) = (edge(j), edge(j + 1));
-        let first = lower_quantile(0.5 * (lo + hi), dof) / dof;
-        // (v, dof, u) of the candidate's pixels and then the reference's.
-        let mut terms = Vec::with_capacity(2 * n);
-        for k in 0..n {
-            let sigma2 = if k == 0 { rho } else { 1.0 };
-            let x = if k == 0 {
-                first
-            } else {
-                (0..nu).map(|_| standard_normal(rng).powi(2)).sum::<f64>() / dof
-            };
-            terms.push((sigma2 * x, dof, u));
-            terms.push((sigma2 / 16.0, f64::INFINITY, 1.0));
-        }
-        let truth = (rho + (n - 1) as f64) * (1.0 + 1.0 / 16.0);
-        let estimate: f64 = terms.iter().map(|t| t.0).sum();
-        let c = t_critical(level, region_dof(terms.iter().copied()));
-        let r = c * (estimate / truth).sqrt();
-        chance += (hi - lo) * (sd(r - bias) + sd(r + bias));
-    }
-    chance
-}
-
 /// Where one pixel carries a block's variance (a caustic, a firefly) and the candidate's
 /// variances are not floored, the plug-in Welch–Satterthwaite degrees of freedom are many
 /// exactly when that pixel's estimate comes out small, which is when the block's `t` is
@@ -684,8 +631,8 @@ fn a_pixel_that_carries_a_block_does_not_make_its_test_liberal() {
         assert!(((u * quantile / nu) - 1.0).abs() < 1e-6, "nu {nu}: {u}");
     }
     for (nu, twin_at_least) in [(1, 100.0), (3, 30.0), (15, 2.0)] {
-        let guarded = block_chance(nu, 1000.0, 0.0, true, &mut rng);
-        let plug_in = block_chance(nu, 1000.0, 0.0, false, &mut rng);
+        let guarded = block_chance(nu, 1000.0, 0.0, true, level, &mut rng);
+        let plug_in = block_chance(nu, 1000.0, 0.0, false, level, &mut rng);
         assert!(
             guarded <= level,
             "nu {nu}: the guarded block test fails with chance {guarded:.3e}, level {level:.3e}"
@@ -700,8 +647,8 @@ fn a_pixel_that_carries_a_block_does_not_make_its_test_liberal() {
     // bias the exact-variance test finds half the time found as often.
     let bias = two_sided_critical(level);
     for guarded in [true, false] {
-        let alarms = block_chance(63, 1.0, 0.0, guarded, &mut rng);
-        let power = block_chance(63, 1.0, bias, guarded, &mut rng);
+        let alarms = block_chance(63, 1.0, 0.0, guarded, level, &mut rng);
+        let power = block_chance(63, 1.0, bias, guarded, level, &mut rng);
         assert!(
             alarms <= 1.2 * level && power >= 0.45,
             "guarded {guarded}: false alarms {:.2} x the level, power {power:.3}",
