@@ -64,7 +64,9 @@ fn page() -> String {
          --release -- SUBCOMMAND --help` in a clone). This page is that text: `cargo test` fails\n\
          when it is not. Every subcommand ends by one rule: exit status **0** for success (agree,\n\
          pass, done), **1** for a negative verdict or a job that failed on good input, **2** for bad\n\
-         input or usage, with the file, the line and the problem.\n",
+         input or usage, with the file, the line and the problem. Two ends bypass it: a panic (such\n\
+         as an exercise of the student hand-out not yet started) ends with Rust's status 101, and a\n\
+         reader that closes the pipe early (`| head`) gets 0.\n",
     );
     for (args, help) in helps() {
         let title = std::iter::once("raylemma")

@@ -385,21 +385,51 @@ fn exercise_1_coloured_mirror() {
 
 /// Exercise 2 of *The missing cosine in specular reflection*: one estimate of the furnace
 /// through a glass sphere of index `ior` that follows *both* branches at the first
-/// interface, weighted by F and 1 - F, and chooses between them with probability F (as
-/// `furnace_path` does) at every later interface.
+/// interface, weighted by F and 1 - F. `follow(ray, rng)` is the rest of a path from a ray
+/// leaving that interface (a point on the sphere and a direction): `furnace_path`'s radiance,
+/// which chooses between the branches with probability F at every later interface.
 #[allow(unused_variables)]
-fn your_furnace_estimate_split_first(ray: Ray, ior: f64, rng: &mut rng::Rng) -> f64 {
+fn your_furnace_estimate_split_first(
+    ray: Ray,
+    ior: f64,
+    rng: &mut rng::Rng,
+    follow: &mut dyn FnMut(Ray, &mut rng::Rng) -> f64,
+) -> f64 {
     unimplemented!("exercise 2 of The missing cosine: follow both branches at the first interface")
 }
 
 #[test]
 #[ignore = "exercise 2 of The missing cosine: fill in your_furnace_estimate_split_first, then run it"]
 fn exercise_2_both_branches_at_the_first_interface() {
+    let material = |ior| FurnaceMaterial::Glass { ior };
     for (k, ior) in [1.5, 2.4].into_iter().enumerate() {
         let mut rng = rng::seeded(61 + k as u64);
         let s = ttest::Summary::of((0..20_000).map(|_| {
             let ray = furnace_camera_ray(&mut rng);
-            your_furnace_estimate_split_first(ray, ior, &mut rng)
+            // The rays followed from the first interface: outwards (reflected) and inwards
+            // (refracted), each from a point on the sphere.
+            let (mut outwards, mut inwards) = (0, 0);
+            let mut follow = |r: Ray, rng: &mut rng::Rng| {
+                let n = r.origin.normalize();
+                assert!(
+                    (r.origin.length() - 1.0).abs() <= 1e-9,
+                    "{ior}: a ray followed from {:?}, not from the sphere",
+                    r.origin
+                );
+                if r.dir.dot(n) > 0.0 {
+                    outwards += 1;
+                } else {
+                    inwards += 1;
+                }
+                furnace_path(r, material(ior), CosineTerm::Cancelled, rng).radiance
+            };
+            let estimate = your_furnace_estimate_split_first(ray, ior, &mut rng, &mut follow);
+            assert!(
+                (outwards, inwards) == (1, 1),
+                "{ior}: {outwards} reflected and {inwards} refracted rays followed from the first \
+                 interface; splitting follows one of each"
+            );
+            estimate
         }));
         assert!(
             (s.mean - 1.0).abs() <= 4.0 * f64::EPSILON,
