@@ -64,7 +64,8 @@ mod appendix {
 /// The command line: subcommands end to end, their errors and exit statuses.
 mod cli;
 
-/// The one writer of every file (`src/output.rs`): atomic files, sets, staged folders.
+/// The one writer of every file (`tools/output/src/lib.rs`, the library's `raylemma::output`):
+/// atomic files, sets, staged folders.
 mod output;
 
 /// What the tests share: the root, scratch folders (`support.rs`).
