@@ -17,9 +17,9 @@ use crate::spectral::cie::xyz_to_linear_srgb_matrix;
 pub fn reference(path: &Path) -> Result<Estimate, ImageError> {
     let contents = ExrContents::read(path)?.converted(xyz_to_linear_srgb_matrix());
     let channels = contents.channels.join(", ");
-    let half = contents.half;
+    let (half, from_xyz) = (contents.half, contents.from_xyz);
     match contents.into_image() {
-        Some(image) => Ok(rounded(Estimate::from_variance(image), half)),
+        Some(image) => Ok(rounded(Estimate::from_variance(image), half, from_xyz)),
         None => Err(ImageError::Mismatch(format!(
             "{}: the reference has no variance channels var.R, var.G, var.B (it has {channels}); \
              the reference must be a render with its variance, such as `raylemma render` writes \
@@ -75,7 +75,7 @@ fn read_candidate(
         return match one.clone().into_image() {
             Some(image) => Ok((
                 xyz_noted(
-                    rounded(Estimate::from_variance(image), one.half),
+                    rounded(Estimate::from_variance(image), one.half, one.from_xyz),
                     one.from_xyz,
                 ),
                 name,
@@ -98,7 +98,8 @@ fn read_candidate(
         estimate.source += "; their own variance channels are not used";
     }
     let from_xyz = files.iter().any(|c| c.from_xyz);
-    let estimate = xyz_noted(rounded(estimate, files.iter().any(|c| c.half)), from_xyz);
+    let half = files.iter().any(|c| c.half);
+    let estimate = xyz_noted(rounded(estimate, half, from_xyz), from_xyz);
     let name = format!(
         "{} candidates ({} ... {})",
         paths.len(),
@@ -114,10 +115,11 @@ fn read_candidate(
 // ANCHOR_END: candidate
 
 /// `estimate` with the rounding of half-float means added to its variances
-/// ([`compare::add_half_rounding`]) if `half`.
-fn rounded(mut estimate: Estimate, half: bool) -> Estimate {
+/// ([`compare::add_half_rounding`]) if `half`, in the file's X, Y, Z if `from_xyz`.
+fn rounded(mut estimate: Estimate, half: bool, from_xyz: bool) -> Estimate {
     if half {
-        compare::add_half_rounding(&mut estimate);
+        let to_rgb = from_xyz.then(xyz_to_linear_srgb_matrix);
+        compare::add_half_rounding(&mut estimate, to_rgb);
     }
     estimate
 }

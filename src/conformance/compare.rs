@@ -24,7 +24,7 @@
 //! mean of `z²` mean the same whatever the degrees of freedom.
 
 use crate::stats::two_sided_critical;
-use glam::DVec3;
+use glam::{DMat3, DVec3};
 use statrs::distribution::{ContinuousCDF, StudentsT};
 use statrs::function::erf::erfc;
 
@@ -189,10 +189,26 @@ pub(crate) fn half_rounding_variance(v: f64) -> f64 {
 /// not (a few half-float renders of a smooth region often agree to the last bit). The
 /// rounding of the mean of `K` such images is not divided by `K` (the roundings of equal
 /// values are the same): `ulp²/12` is added to each mean's variance, whatever `K`.
-pub fn add_half_rounding(estimate: &mut Estimate) {
+///
+/// The rounding happens in the file's own channels. For a file of X, Y, Z converted to
+/// linear sRGB by `to_rgb` (`M`), each of its values `X = M⁻¹ m` is rounded with its own
+/// ulp, and the three independent roundings reach R, G, B through `M`'s squared entries,
+/// `Σ_k M_ck² ulp(X_k)²/12`: far more than `ulp(m_c)²/12` where a saturated colour makes a
+/// channel of `m` small while X, Y and Z are not.
+pub fn add_half_rounding(estimate: &mut Estimate, to_rgb: Option<DMat3>) {
     let image = &mut estimate.image;
     for (m, v) in image.mean.iter().zip(image.var.iter_mut()) {
-        *v += m.map(half_rounding_variance);
+        *v += match to_rgb {
+            None => m.map(half_rounding_variance),
+            Some(to_rgb) => {
+                let squared = DMat3::from_cols(
+                    to_rgb.x_axis * to_rgb.x_axis,
+                    to_rgb.y_axis * to_rgb.y_axis,
+                    to_rgb.z_axis * to_rgb.z_axis,
+                );
+                squared * (to_rgb.inverse() * *m).map(half_rounding_variance)
+            }
+        };
     }
     estimate.source += "; plus the half floats' rounding, ulp²/12 a value";
 }

@@ -492,7 +492,7 @@ fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
     let raw = compare(&reference, &spread, alpha).unwrap();
     assert!(!raw.agree(), "{}", raw.report(["ref", "half"]));
     let mut rounded = spread;
-    add_half_rounding(&mut rounded);
+    add_half_rounding(&mut rounded, None);
     let c = compare(&reference, &rounded, alpha).unwrap();
     assert!(c.agree(), "{}", c.report(["ref", "half"]));
     assert!(
@@ -501,7 +501,83 @@ fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
         rounded.source
     );
     let mut bright = candidates(1.03, "half-bright");
-    add_half_rounding(&mut bright);
+    add_half_rounding(&mut bright, None);
+    assert!(!compare(&reference, &bright, alpha).unwrap().agree());
+}
+
+/// Half-float candidates written as X, Y, Z, as spectral films write them: the rounding
+/// happens in X, Y and Z and reaches linear sRGB through the matrix. On saturated greens
+/// (R and B near 0.01, while X, Y, Z are about 0.1 to 0.3, 0.2 to 0.6, 0.04 to 0.1), four candidates whose roundings
+/// agree are off in R and B by many times the spacing of half floats near 0.01: with the
+/// rounding taken at the sRGB values' spacing (the planted twin, `None`), they differ; taken
+/// in X, Y, Z and carried through the matrix's squared entries, they agree, and the same
+/// candidates 3 % brighter are refused. Each set floored by the reference, as `compare`
+/// floors candidates whose samples per pixel it knows.
+#[test]
+fn half_float_xyz_candidates_round_in_xyz() {
+    use raylemma::conformance::compare::add_half_rounding;
+    use raylemma::spectral::cie::{linear_srgb_to_xyz, xyz_to_linear_srgb_matrix};
+    let mut rng = rng::seeded(1618);
+    // Values spread over many half-float spacings, so that the roundings of different pixels
+    // are not alike (a block's mean takes its pixels' errors as independent).
+    let exact = |i: usize| {
+        DVec3::new(
+            0.01 + 1e-4 * (i % 5) as f64,
+            0.3 + 2e-3 * i as f64,
+            0.01 + 1e-4 * (i % 3) as f64,
+        )
+    };
+    let noise = |rng: &mut Rng, sd: f64| {
+        sd * DVec3::new(
+            standard_normal(rng),
+            standard_normal(rng),
+            standard_normal(rng),
+        )
+    };
+    let reference = Estimate::from_variance(Image {
+        width: 16,
+        height: 16,
+        mean: (0..256).map(|i| exact(i) + noise(&mut rng, 1e-7)).collect(),
+        var: vec![DVec3::splat(1e-14); 256],
+        spp: Some(4096),
+    });
+    let to_rgb = xyz_to_linear_srgb_matrix();
+    let mut candidates = |gain: f64, stem: &str| {
+        let files: Vec<ExrContents> = (0..4)
+            .map(|j| {
+                let values: Vec<DVec3> = (0..256)
+                    .map(|i| linear_srgb_to_xyz(gain * exact(i) + noise(&mut rng, 1e-7)))
+                    .collect();
+                let path = tmp(&format!("{stem}-{j}.exr"));
+                write_plain(&path, (16, 16), &["X", "Y", "Z"], true, |c, i| {
+                    values[i][c] as f32
+                });
+                ExrContents::read(&path).unwrap().converted(to_rgb)
+            })
+            .collect();
+        assert!(files.iter().all(|f| f.half && f.from_xyz));
+        let means: Vec<&[DVec3]> = files.iter().map(|f| &f.mean[..]).collect();
+        // Floored, as `compare --spp 64` floors them.
+        let mut e = Estimate::from_spread(16, 16, &means).unwrap();
+        assert!(e.floor_from_reference(&reference, 4 * 64));
+        e
+    };
+    let alpha = test_alpha();
+    let same = candidates(1.0, "half-xyz");
+    let mut twin = same.clone();
+    add_half_rounding(&mut twin, None);
+    let c = compare(&reference, &twin, alpha).unwrap();
+    assert!(
+        !c.agree(),
+        "{}",
+        c.report(["ref", "half xyz, sRGB spacing"])
+    );
+    let mut rounded = same;
+    add_half_rounding(&mut rounded, Some(to_rgb));
+    let c = compare(&reference, &rounded, alpha).unwrap();
+    assert!(c.agree(), "{}", c.report(["ref", "half xyz"]));
+    let mut bright = candidates(1.03, "half-xyz-bright");
+    add_half_rounding(&mut bright, Some(to_rgb));
     assert!(!compare(&reference, &bright, alpha).unwrap().agree());
 }
 
