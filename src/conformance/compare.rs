@@ -13,9 +13,10 @@
 //! degrees of freedom for a pixel (conservative, [`pixel_dof`]), and for the mean of a
 //! block of pixels or of the whole image, `d̄ = Σ d_i / n` with `v̄ = Σ v_i / n²` (the
 //! pixels are independent), with the Welch–Satterthwaite degrees of freedom of that sum,
-//! guarded against a pixel whose variance came out small ([`region_dof`]). Three families of two-sided tests (every pixel and channel, the means
-//! of square blocks, the whole image's mean per channel) are held together by Šidák's
-//! correction at the chance `alpha` of a false alarm for two correct renders.
+//! guarded against a pixel whose variance came out small ([`region_dof`]). Three families
+//! of two-sided tests (every pixel and channel, the means of square blocks, the whole
+//! image's mean per channel) are held together by Šidák's correction at the chance `alpha`
+//! of a false alarm for two correct renders.
 //!
 //! Normal critical values with a variance from few samples are wrong by orders of
 //! magnitude: with `ν = 15` the tail beyond the normal critical value of a million tests
@@ -523,8 +524,9 @@ pub fn pixel_dof(terms: [(f64, f64); 2]) -> f64 {
 /// pixel carries most of the region's variance: when that pixel's estimate comes out
 /// small, the shares look even and the degrees of freedom many, just when the region's
 /// `t` is large. So each term in turn is raised to its upper confidence limit `u_k v_k`
-/// and the smallest result is kept; and never below the smallest `ν_k`, which bounds the
-/// true value from below. Computed with the shares `v_k / Σ v`, so that tiny variances
+/// and the smallest result is kept. The result is never below the smallest `ν_k`, which
+/// bounds the true value from below (`Σ v_k² / (ν_k + 2) <= (Σ v)² / (ν_min + 2)`); the
+/// final `max` only keeps rounding from crossing it. Computed with the shares `v_k / Σ v`, so that tiny variances
 /// cannot underflow; infinite when every estimate is exact, or when the sum is 0.
 pub fn region_dof(terms: impl Iterator<Item = (f64, f64, f64)> + Clone) -> f64 {
     let total: f64 = terms.clone().map(|(v, _, _)| v).sum();
@@ -553,8 +555,8 @@ pub fn region_dof(terms: impl Iterator<Item = (f64, f64, f64)> + Clone) -> f64 {
 /// The upper confidence limit at one-sided level `level` of a variance estimated with
 /// `dof` degrees of freedom, as a multiple of the estimate: `ν / χ²_ν(level)`, with
 /// `χ²_ν(level)` the chi-squared distribution's lower `level` quantile (a variance exceeds
-/// its estimate that many times with probability `level`), at most `1e100`; 1 for an
-/// estimate taken as exact (above [`NORMAL_DOF`]).
+/// its estimate that many times with probability `level`, for normal samples), at most
+/// `1e100`; 1 for an estimate taken as exact (above [`NORMAL_DOF`]).
 pub fn upper_limit(dof: f64, level: f64) -> f64 {
     if dof > NORMAL_DOF {
         return 1.0;
@@ -571,11 +573,13 @@ pub fn upper_limit(dof: f64, level: f64) -> f64 {
 ///
 /// Nothing is drawn for the block's mean: given the variance estimates, its difference is
 /// normal, and the chance that `|t| = |bias + Z| sqrt(V / V̂)` exceeds Student's critical
-/// value `c` is `P(|bias + Z| > c sqrt(V̂ / V))` exactly (Rao–Blackwell). The carrying
-/// pixel's estimate, which sets the tail, is taken at 200 chances spread evenly in
-/// logarithm from `1e-12` to 1, each weighted by its slice of probability (what lies below
-/// `1e-12` adds at most `1e-12`); the other pixels' estimates, `χ²_ν / ν` as sums of `ν`
-/// squared normals, are drawn afresh for each.
+/// value `c` is `P(|bias + Z| > c sqrt(V̂ / V))` exactly (Rao–Blackwell), for normal
+/// samples. The carrying pixel's estimate, which sets the tail, is taken at the middle of
+/// 100 slices of probability spread evenly in logarithm from `1e-12` to `1e-2` and 200
+/// even slices from `1e-2` to 1, each weighted by its slice (what lies below `1e-12` adds
+/// at most `1e-12`); the other pixels' estimates, `χ²_ν / ν` as sums of `ν` squared
+/// normals, are drawn afresh for each: where no pixel carries the block, the chance is a
+/// Monte Carlo average over about 200 such draws, good to about 1 %.
 pub fn block_chance(nu: u32, rho: f64, bias: f64, guarded: bool, level: f64, rng: &mut Rng) -> f64 {
     let n = (BLOCK * BLOCK) as usize;
     let dof = f64::from(nu);
@@ -585,12 +589,18 @@ pub fn block_chance(nu: u32, rho: f64, bias: f64, guarded: bool, level: f64, rng
         1.0
     };
     let upper_tail = |x: f64| 0.5 * erfc(x / std::f64::consts::SQRT_2);
-    let slices = 200;
-    let edge = |j: i32| 10f64.powf(-12.0 + 12.0 * f64::from(j) / f64::from(slices));
+    let (logarithmic, even) = (100, 200);
+    let edge = |j: i32| {
+        if j <= logarithmic {
+            10f64.powf(-12.0 + 10.0 * f64::from(j) / f64::from(logarithmic))
+        } else {
+            1e-2 + 0.99 * f64::from(j - logarithmic) / f64::from(even)
+        }
+    };
     let truth = (rho + (n - 1) as f64) * (1.0 + 1.0 / 16.0);
     let mut chance = 0.0;
     let mut terms = Vec::with_capacity(2 * n);
-    for j in 0..slices {
+    for j in 0..logarithmic + even {
         let (lo, hi) = (edge(j), edge(j + 1));
         terms.clear();
         for k in 0..n {

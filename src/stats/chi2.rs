@@ -11,7 +11,7 @@
 //! poor for cells expecting few samples, so cells expecting fewer than `min_expected`
 //! (5 by convention) are *pooled* into one cell before the statistic is formed.
 
-use statrs::function::gamma::{checked_gamma_lr, checked_gamma_ur};
+use statrs::function::gamma::{checked_gamma_lr, checked_gamma_ur, ln_gamma};
 
 use super::StatsError;
 
@@ -55,27 +55,59 @@ pub fn upper_tail(statistic: f64, dof: usize) -> f64 {
 
 /// The lower `p` quantile of the chi-squared distribution with `dof` degrees of freedom:
 /// the `x` with `P(dof / 2, x / 2) = p`, `P` the regularised lower incomplete gamma
-/// function, found by bisection on `ln x` to a relative `1e-12`. Accurate however small
-/// `p` is (statrs' `inverse_cdf` stops at an absolute tolerance, and returns 0 for
-/// quantiles below about `1e-9`); NaN unless `0 < p < 1` and `dof > 0`.
+/// function, found by bisection on `ln x` to a relative `1e-12` ([`ln_lower_gamma`] keeps
+/// `ln P` exact where `P` is far below the smallest double, so however small `p` is:
+/// statrs' `inverse_cdf` stops at an absolute tolerance and returns 0 below about `1e-9`,
+/// and its `gamma_lr` returns 0 below `x = 2.2e-15`). NaN unless `0 < p < 1` and `dof` is
+/// positive and finite.
 pub fn lower_quantile(p: f64, dof: f64) -> f64 {
-    if !(p > 0.0 && p < 1.0 && dof > 0.0) {
+    if !(p > 0.0 && p < 1.0 && dof > 0.0 && dof < 1e300) {
         return f64::NAN;
     }
-    let cdf = |ln_x: f64| checked_gamma_lr(dof / 2.0, ln_x.exp() / 2.0).unwrap_or(f64::NAN);
-    let (mut lo, mut hi) = (-740.0_f64, (2.0 * dof + 100.0).ln());
-    while cdf(hi) < p {
+    let a = dof / 2.0;
+    let below = |ln_x: f64| ln_lower_gamma(a, ln_x - std::f64::consts::LN_2) < p.ln();
+    // Bounds in ln x: the quantile is above e^-1e7 for any p >= 1e-300 and dof >= 2e-4
+    // (P(a, y) <= y^a / Γ(a + 1)), and for most p below 2 dof + 100 + 40 sqrt(dof), which
+    // grows until it is not.
+    let (mut lo, mut hi) = (-1e7_f64, (2.0 * dof + 100.0 + 40.0 * dof.sqrt()).ln());
+    for _ in 0..60 {
+        if !below(hi) {
+            break;
+        }
         hi += 1.0;
     }
-    while hi - lo > 1e-12 {
+    for _ in 0..200 {
+        if hi - lo <= 1e-12 {
+            break;
+        }
         let mid = 0.5 * (lo + hi);
-        if cdf(mid) < p {
+        if below(mid) {
             lo = mid;
         } else {
             hi = mid;
         }
     }
     (0.5 * (lo + hi)).exp()
+}
+
+/// `ln P(a, y)` for `y = e^ln_y`: by the series `P = y^a e^-y / Γ(a + 1) Σ_n y^n / ((a + 1)
+/// … (a + n))` in logarithms below `y = a + 1`, where `P` can be far below the smallest
+/// double; from statrs' `gamma_lr` above, where it is not small.
+fn ln_lower_gamma(a: f64, ln_y: f64) -> f64 {
+    let y = ln_y.exp();
+    if y < a + 1.0 {
+        let (mut term, mut sum) = (1.0_f64, 1.0_f64);
+        for n in 1..10_000 {
+            term *= y / (a + f64::from(n));
+            sum += term;
+            if term <= 1e-17 * sum {
+                break;
+            }
+        }
+        a * ln_y - y - ln_gamma(a + 1.0) + sum.ln()
+    } else {
+        checked_gamma_lr(a, y).map_or(f64::NAN, f64::ln)
+    }
 }
 
 // ANCHOR: validate

@@ -129,9 +129,15 @@ fn compare_takes_plain_candidates_from_another_renderer() {
     assert!(
         report.contains("the spread of 4 images (3 degrees of freedom)")
             && report.contains("4096 samples per pixel")
+            && report.contains("pass --spp")
             && report.contains("AGREE"),
         "{report}"
     );
+    // Floored, as the planted twin below is: agree too.
+    let out = compare_files(&reference, &four, &["--spp", "41"]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{report}");
+    assert!(report.contains("raised where smaller"), "{report}");
     // The planted twin: the same scene 3 % brighter, with the candidates' samples per
     // pixel (a reference of 4096 with a hundredth of a candidate's variance: 41), which
     // turns the floor on; without it, four images leave the region tests no power.

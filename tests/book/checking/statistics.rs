@@ -11,7 +11,7 @@
 
 use raylemma::rng;
 use raylemma::rng::standard_normal;
-use raylemma::stats::chi2::{pearson, upper_tail};
+use raylemma::stats::chi2::{lower_quantile, pearson, upper_tail};
 use raylemma::stats::ks::{self, kolmogorov_cdf, kolmogorov_sf, smirnov_upper_tail};
 use raylemma::stats::null::{NULL_CASES, NullCase};
 use raylemma::stats::ttest::{self, Summary, two_sided_p, welch};
@@ -412,4 +412,32 @@ fn exercise_5_two_sample_of_identical_samples() {
 fn errors_are_std_errors() {
     fn takes(_: &dyn std::error::Error) {}
     takes(&StatsError::Empty { what: "samples" });
+}
+
+/// The chi-squared lower quantile `compare`'s region guard takes its confidence limits from
+/// (`upper_limit`): against `scipy.stats.chi2.ppf`, from the middle of the distribution down
+/// to quantiles far below the smallest double's square root, where statrs' own inverse
+/// returns 0; NaN for a dof it cannot use, rather than a loop that never ends.
+#[test]
+fn chi_squared_lower_quantiles_however_small() {
+    for (p, dof, scipy) in [
+        (0.5, 10.0, 9.341_817_765_59),
+        (0.999, 3.0, 16.266_236_196_2),
+        (0.01, 4095.0, 3_887.414_395_59),
+        (1e-6, 1e6, 993_292.033_742),
+        (3.3e-6, 1.0, 1.710_597_199_89e-11),
+        (1e-8, 1.0, 1.570_796_326_79e-16),
+        (1e-12, 1.0, 1.570_796_326_79e-24),
+        (1e-30, 3.0, 2.417_987_931_02e-20),
+    ] {
+        let q = lower_quantile(p, dof);
+        assert!(
+            (q / scipy - 1.0).abs() < 1e-9,
+            "p {p}, dof {dof}: {q:e}, scipy {scipy:e}"
+        );
+    }
+    for dof in [f64::INFINITY, f64::NAN, 0.0, -1.0, 1e308] {
+        assert!(lower_quantile(0.5, dof).is_nan(), "dof {dof}");
+    }
+    assert!(lower_quantile(0.0, 3.0).is_nan() && lower_quantile(1.0, 3.0).is_nan());
 }
