@@ -55,7 +55,7 @@ pub fn upper_tail(statistic: f64, dof: usize) -> f64 {
 
 /// The lower `p` quantile of the chi-squared distribution with `dof` degrees of freedom:
 /// the `x` with `P(dof / 2, x / 2) = p`, `P` the regularised lower incomplete gamma
-/// function, found by bisection on `ln x` to a relative `1e-12` ([`ln_lower_gamma`] keeps
+/// function, found by bisection on `ln x` to a relative `1e-12` (`ln_lower_gamma` keeps
 /// `ln P` exact where `P` is far below the smallest double, so however small `p` is:
 /// statrs' `inverse_cdf` stops at an absolute tolerance and returns 0 below about `1e-9`,
 /// and its `gamma_lr` returns 0 below `x = 2.2e-15`). NaN unless `0 < p < 1` and `dof` is
