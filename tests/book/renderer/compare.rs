@@ -51,19 +51,21 @@ fn truth(rng: &mut Rng) -> Truth {
     Truth { mean, sd }
 }
 
+/// Three independent standard normal deviates, as one colour's noise.
+fn normal3(rng: &mut Rng) -> DVec3 {
+    DVec3::new(
+        standard_normal(rng),
+        standard_normal(rng),
+        standard_normal(rng),
+    )
+}
+
 /// One image of the scene scaled by `gain`: every pixel its exact value plus normal noise.
 fn draw(t: &Truth, gain: f64, rng: &mut Rng) -> Vec<DVec3> {
     t.mean
         .iter()
         .zip(&t.sd)
-        .map(|(m, s)| {
-            gain * *m
-                + *s * DVec3::new(
-                    standard_normal(rng),
-                    standard_normal(rng),
-                    standard_normal(rng),
-                )
-        })
+        .map(|(m, s)| gain * *m + *s * normal3(rng))
         .collect()
 }
 
@@ -75,14 +77,7 @@ fn reference(t: &Truth, rng: &mut Rng) -> Estimate {
         .mean
         .iter()
         .zip(&quarter)
-        .map(|(m, v)| {
-            *m + v.map(f64::sqrt)
-                * DVec3::new(
-                    standard_normal(rng),
-                    standard_normal(rng),
-                    standard_normal(rng),
-                )
-        })
+        .map(|(m, v)| *m + v.map(f64::sqrt) * normal3(rng))
         .collect();
     Estimate::from_variance(Image {
         width: SIDE,
@@ -446,13 +441,7 @@ fn half_float_candidates_whose_roundings_agree_are_not_a_difference() {
     use raylemma::conformance::compare::add_half_rounding;
     let mut rng = rng::seeded(2718);
     let exact = |i: usize| DVec3::new(0.2 + 0.003 * i as f64, 0.5, 0.25 + 0.001 * (i % 7) as f64);
-    let noise = |rng: &mut Rng, sd: f64| {
-        sd * DVec3::new(
-            standard_normal(rng),
-            standard_normal(rng),
-            standard_normal(rng),
-        )
-    };
+    let noise = |rng: &mut Rng, sd: f64| sd * normal3(rng);
     let reference = Estimate::from_variance(Image {
         width: 16,
         height: 16,
@@ -528,13 +517,7 @@ fn half_float_xyz_candidates_round_in_xyz() {
             0.01 + 1e-4 * (i % 3) as f64,
         )
     };
-    let noise = |rng: &mut Rng, sd: f64| {
-        sd * DVec3::new(
-            standard_normal(rng),
-            standard_normal(rng),
-            standard_normal(rng),
-        )
-    };
+    let noise = |rng: &mut Rng, sd: f64| sd * normal3(rng);
     let reference = Estimate::from_variance(Image {
         width: 16,
         height: 16,
