@@ -197,18 +197,20 @@ pub(crate) fn half_rounding_variance(v: f64) -> f64 {
 /// `Σ_k M_ck² ulp(X_k)²/12`: far more than `ulp(m_c)²/12` where a saturated colour makes a
 /// channel of `m` small while X, Y and Z are not.
 pub fn add_half_rounding(estimate: &mut Estimate, to_rgb: Option<DMat3>) {
+    // The matrix's squared entries and its inverse, once.
+    let through = to_rgb.map(|m| {
+        let squared = DMat3::from_cols(
+            m.x_axis * m.x_axis,
+            m.y_axis * m.y_axis,
+            m.z_axis * m.z_axis,
+        );
+        (squared, m.inverse())
+    });
     let image = &mut estimate.image;
     for (m, v) in image.mean.iter().zip(image.var.iter_mut()) {
-        *v += match to_rgb {
+        *v += match through {
             None => m.map(half_rounding_variance),
-            Some(to_rgb) => {
-                let squared = DMat3::from_cols(
-                    to_rgb.x_axis * to_rgb.x_axis,
-                    to_rgb.y_axis * to_rgb.y_axis,
-                    to_rgb.z_axis * to_rgb.z_axis,
-                );
-                squared * (to_rgb.inverse() * *m).map(half_rounding_variance)
-            }
+            Some((squared, to_file)) => squared * (to_file * *m).map(half_rounding_variance),
         };
     }
     estimate.source += "; plus the half floats' rounding, ulp²/12 a value";
@@ -533,16 +535,18 @@ pub fn region_dof(terms: impl Iterator<Item = (f64, f64, f64)> + Clone) -> f64 {
     if total.is_nan() || total <= 0.0 {
         return f64::INFINITY;
     }
-    let estimated = terms
+    let positive = terms.filter(|&(v, _, _)| v > 0.0);
+    let (s, least) = positive
         .clone()
-        .filter(|&(v, dof, _)| v > 0.0 && dof.is_finite());
-    let s: f64 = estimated
-        .clone()
-        .map(|(v, dof, _)| (v / total).powi(2) / (dof + 2.0))
-        .sum();
-    let least = terms
-        .filter(|&(v, _, _)| v > 0.0)
-        .fold(f64::INFINITY, |least, (_, dof, _)| least.min(dof));
+        .fold((0.0, f64::INFINITY), |(s, least), (v, dof, _)| {
+            let share = if dof.is_finite() {
+                (v / total).powi(2) / (dof + 2.0)
+            } else {
+                0.0
+            };
+            (s + share, least.min(dof))
+        });
+    let estimated = positive.filter(|&(_, dof, _)| dof.is_finite());
     // Term k raised by the factor u: the sum grows by (u - 1) w, S by (u² - 1) w² / (ν + 2).
     let guarded = estimated.fold(1.0 / s - 2.0, |dof, (v, nu, u)| {
         let w = v / total;
@@ -641,7 +645,7 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
     let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
     let pixel_tests = 3 * ia.mean.len();
     let block_tests = 3 * (bw * bh) as usize;
-    let level = test_level(ia, alpha);
+    let level = test_level(w, h, alpha);
     let z_critical = two_sided_critical(level);
     let (na, nb) = (a.dof, b.dof);
 
@@ -676,9 +680,10 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
     dofs.sort_by(f64::total_cmp);
 
     // Blocks, and the whole image as one region.
-    let regions = block_regions(a, b, level);
+    let limits = region_limits(a, b, level);
+    let regions = block_regions(a, b, limits);
     let block_failure_count = regions.iter().filter(|r| fails(r.z, z_critical)).count();
-    let image = image_means(a, b, level);
+    let image = image_means(a, b, limits);
     let m = pixel_tests as f64;
     Ok(Comparison {
         size: (w, h),
@@ -710,27 +715,23 @@ pub fn compare(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Comparison, Ima
 /// As [`compare`].
 pub fn compare_blocks(a: &Estimate, b: &Estimate, alpha: f64) -> Result<Vec<Region>, ImageError> {
     check_inputs(a, b, alpha)?;
-    Ok(block_regions(a, b, test_level(&a.image, alpha)))
+    let level = test_level(a.image.width, a.image.height, alpha);
+    Ok(block_regions(a, b, region_limits(a, b, level)))
 }
 
-/// The level of each test of [`compare`] at family-wise level `alpha`: Šidák over every
-/// pixel-channel, every block-channel and the whole image's three channels.
-fn test_level(image: &Image, alpha: f64) -> f64 {
-    let blocks = image.width.div_ceil(BLOCK) as usize * image.height.div_ceil(BLOCK) as usize;
-    sidak(alpha, (3 * (image.mean.len() + blocks + 1)) as u32)
+/// The level of each test of [`compare`] of two `width` x `height` images at family-wise
+/// level `alpha`: Šidák over every pixel-channel, every block-channel and the whole
+/// image's three channels.
+pub fn test_level(width: u32, height: u32, alpha: f64) -> f64 {
+    let pixels = width as usize * height as usize;
+    let blocks = width.div_ceil(BLOCK) as usize * height.div_ceil(BLOCK) as usize;
+    sidak(alpha, (3 * (pixels + blocks + 1)) as u32)
 }
 
-/// One channel's terms of a region's variance, `(v_k, ν_k, u_k)` for [`region_dof`]: every
-/// pixel's variance on both sides, each with its side's degrees of freedom and
-/// [`upper_limit`] at the test's `level` (1 for a floored side).
-fn region_terms<'a>(
-    a: &'a Estimate,
-    b: &'a Estimate,
-    level: f64,
-    c: usize,
-    pixels: impl Iterator<Item = usize> + Clone + 'a,
-) -> impl Iterator<Item = (f64, f64, f64)> + Clone + 'a {
-    // A floored side's variances are the reference's where they could have come out small.
+/// The [`upper_limit`] of each side's variances at the test's `level`, once a comparison:
+/// 1 for a floored side, whose variances are the reference's where they could have come out
+/// small.
+fn region_limits(a: &Estimate, b: &Estimate, level: f64) -> (f64, f64) {
     let limit = |e: &Estimate| {
         if e.floored {
             1.0
@@ -738,7 +739,19 @@ fn region_terms<'a>(
             upper_limit(e.dof, level)
         }
     };
-    let (ua, ub) = (limit(a), limit(b));
+    (limit(a), limit(b))
+}
+
+/// One channel's terms of a region's variance, `(v_k, ν_k, u_k)` for [`region_dof`]: every
+/// pixel's variance on both sides, each with its side's degrees of freedom and limit
+/// ([`region_limits`]).
+fn region_terms<'a>(
+    a: &'a Estimate,
+    b: &'a Estimate,
+    (ua, ub): (f64, f64),
+    c: usize,
+    pixels: impl Iterator<Item = usize> + Clone + 'a,
+) -> impl Iterator<Item = (f64, f64, f64)> + Clone + 'a {
     pixels.flat_map(move |i| {
         [
             (a.image.var[i][c], a.dof, ua),
@@ -778,7 +791,7 @@ fn check_inputs(a: &Estimate, b: &Estimate, alpha: f64) -> Result<(), ImageError
 /// channel, `t = d / sqrt(v)` of the mean difference `d` with the variance `v` of the
 /// pixels' sum over `n²`, and [`region_dof`] degrees of freedom; the block's z is its
 /// channel with the largest `|z|`.
-fn block_regions(a: &Estimate, b: &Estimate, level: f64) -> Vec<Region> {
+fn block_regions(a: &Estimate, b: &Estimate, limits: (f64, f64)) -> Vec<Region> {
     let (ia, ib) = (&a.image, &b.image);
     let (w, h) = (ia.width, ia.height);
     let (bw, bh) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
@@ -793,7 +806,7 @@ fn block_regions(a: &Estimate, b: &Estimate, level: f64) -> Vec<Region> {
         for c in 0..3 {
             let d: f64 = pixels().map(|i| ib.mean[i][c] - ia.mean[i][c]).sum::<f64>() / n;
             let base: f64 = pixels().map(|i| ia.mean[i][c]).sum::<f64>() / n;
-            let terms = region_terms(a, b, level, c, pixels());
+            let terms = region_terms(a, b, limits, c, pixels());
             let v = terms.clone().map(|(v, _, _)| v).sum::<f64>() / (n * n);
             let dof = region_dof(terms);
             let z = equivalent_z(d, v, dof);
@@ -832,7 +845,7 @@ fn relative(d: f64, v: f64, dof: f64, base: f64) -> (f64, f64) {
 
 /// The whole image's mean difference per channel: its z, degrees of freedom, and the
 /// relative difference with the half-width of its 95 % interval ([`relative`]).
-fn image_means(a: &Estimate, b: &Estimate, level: f64) -> [(f64, f64, (f64, f64)); 3] {
+fn image_means(a: &Estimate, b: &Estimate, limits: (f64, f64)) -> [(f64, f64, (f64, f64)); 3] {
     let (ia, ib) = (&a.image, &b.image);
     let n = ia.mean.len() as f64;
     std::array::from_fn(|c| {
@@ -844,7 +857,7 @@ fn image_means(a: &Estimate, b: &Estimate, level: f64) -> [(f64, f64, (f64, f64)
             .sum::<f64>()
             / n;
         let base = ia.mean.iter().map(|p| p[c]).sum::<f64>() / n;
-        let terms = region_terms(a, b, level, c, 0..ia.mean.len());
+        let terms = region_terms(a, b, limits, c, 0..ia.mean.len());
         let v = terms.clone().map(|(v, _, _)| v).sum::<f64>() / (n * n);
         let dof = region_dof(terms);
         (equivalent_z(d, v, dof), dof, relative(d, v, dof, base))

@@ -19,7 +19,7 @@ use exr::prelude::{
 };
 use glam::DVec3;
 use raylemma::conformance::compare::{
-    Estimate, block_chance, compare, equivalent_z, region_dof, upper_limit,
+    Estimate, block_chance, compare, equivalent_z, region_dof, test_level, upper_limit,
 };
 use raylemma::image::{ExrContents, Image};
 use raylemma::rng::standard_normal;
@@ -663,7 +663,7 @@ fn rare_light_agrees_once_floored_and_a_brighter_one_does_not() {
 
 /// The level of each test of a 32 x 32 comparison at `--alpha 0.01`.
 fn level_32() -> f64 {
-    sidak(0.01, 3 * (32 * 32 + 4 + 1))
+    test_level(32, 32, 0.01)
 }
 
 /// Where one pixel carries a block's variance (a caustic, a firefly) and the candidate's

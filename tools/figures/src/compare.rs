@@ -16,12 +16,12 @@ use rayon::prelude::*;
 
 use super::{Output, Record, Settings};
 use crate::timing::quick_note;
-use raylemma::conformance::compare::{Estimate, block_chance, compare};
+use raylemma::conformance::compare::{Estimate, block_chance, compare, test_level};
 use raylemma::image::{Image, ImageError};
 use raylemma::render::{self, Progress};
 use raylemma::rng;
 use raylemma::stats::binomial::wilson;
-use raylemma::stats::{sidak, two_sided_critical};
+use raylemma::stats::two_sided_critical;
 
 /// The outputs of this module.
 pub fn outputs() -> Vec<Output> {
@@ -45,7 +45,7 @@ pub fn outputs() -> Vec<Output> {
 /// times the others'; and its power, spread evenly, against the bias that a test with the
 /// exact variance finds half the time, and twice that bias.
 fn guard_md(_: &Settings, r: &mut Record) -> anyhow::Result<Vec<u8>> {
-    let level = sidak(ALPHA, 3 * (32 * 32 + 4 + 1));
+    let level = test_level(32, 32, ALPHA);
     let half = two_sided_critical(level);
     let mut rng = rng::seeded(0x000b_10c5);
     let mut md = String::new();
