@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """The table of tools/mitsuba/speed.sh: reads its work folder and prints
 figures/mitsuba_speed.md (medians over the rounds, the machine, the verdicts of
-`raylemma compare`, and the sentences that compare the renderers, made from the medians).
+`raylemma compare`, and the sentences that compare the renderers, made from the medians),
+and with --machines FILE puts this machine's line into the table of every machine measured
+(figures/mitsuba_speed_machines.md), replacing an earlier line of the same machine.
 
-    speed.py WORK --spp 256 --res 256 --runs 3 --passes 16 [--png MEAN.png]
+    speed.py WORK --spp 256 --res 256 --runs 3 --passes 16 [--png MEAN.png] [--machines FILE]
 
 Efficiency is 1 / (mean per-pixel variance of the pixel's mean x render seconds): the
 variance is raylemma's own var.R, var.G, var.B channels (the variance of each pixel's
@@ -13,6 +15,7 @@ and the three channels.
 """
 
 import argparse
+import datetime
 import glob
 import json
 import os
@@ -66,6 +69,33 @@ def fmt_ratio(x):
     return f"{x:.2f}×"
 
 
+GOAL = 2.0  # the efficiency raylemma should have, against Mitsuba's fastest CPU variant
+
+MACHINES_HEAD = [
+    "| machine | fingerprint | date | raylemma s | fastest Mitsuba variant, s | "
+    "throughput ratio | efficiency ratio, median (range over rounds) | "
+    f"at least {GOAL:.0f}× in efficiency |",
+    "|---|---|---|---:|---:|---:|---:|---|",
+]
+
+
+def put_machine_line(path, fingerprint, line):
+    """Rewrites the table of every machine measured at `path` with `line` in place of the
+    line of the machine `fingerprint` (or added), keeping the other machines' lines and the
+    text under the table."""
+    rows, tail = [], []
+    if os.path.exists(path):
+        lines = open(path).read().splitlines()
+        body = [l for l in lines[len(MACHINES_HEAD):] if l.startswith("| ")]
+        tail = [l for l in lines[len(MACHINES_HEAD):] if not l.startswith("| ")]
+        rows = [l for l in body if f"| `{fingerprint}` |" not in l]
+    rows.append(line)
+    text = "\n".join(MACHINES_HEAD + rows + tail).rstrip("\n") + "\n"
+    tmp = path + ".tmp"
+    open(tmp, "w").write(text)
+    os.replace(tmp, path)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("work")
@@ -74,6 +104,7 @@ def main():
     ap.add_argument("--runs", type=int, required=True)
     ap.add_argument("--passes", type=int, required=True)
     ap.add_argument("--png", default=None)
+    ap.add_argument("--machines", default=None)
     a = ap.parse_args()
     w = a.work
     pixels = a.res * a.res
@@ -109,7 +140,8 @@ def main():
         rows[who] = dict(
             seconds=med, lo=min(secs), hi=max(secs), throughput=pixels * a.spp / med,
             variance=mvar, efficiency=statistics.median(effs), wall=statistics.median(walls),
-            rss=max(rss) / 1024, threads=",".join(str(t) for t in sorted(threads)))
+            rss=max(rss) / 1024, threads=",".join(str(t) for t in sorted(threads)),
+            effs=effs)
 
     verdict = {}
     for v in VARIANTS:
@@ -141,11 +173,14 @@ def main():
     fast = max(VARIANTS, key=lambda v: rows[v]["throughput"])
     t_fast = rows["raylemma"]["throughput"] / rows[fast]["throughput"]
     e_fast = rows["raylemma"]["efficiency"] / rows[fast]["efficiency"]
-    better = "faster than" if t_fast > 1 else "slower than"
+    # Round by round (the renderers ran one after the other in each round), so that a
+    # drift of the machine's speed between rounds does not widen the range.
+    by_round = [o / t for o, t in zip(rows["raylemma"]["effs"], rows[fast]["effs"])]
     print(f"On this machine raylemma renders `cornell` {fmt_ratio(t_fast)} as many pixel samples "
-          f"per second as Mitsuba's fastest CPU variant here, `{fast.split()[-1]}` ({better} it), "
+          f"per second as Mitsuba's fastest CPU variant here, `{fast.split()[-1]}`, "
           f"and its efficiency, which also counts the noise each sample leaves, is "
-          f"{fmt_ratio(e_fast)} Mitsuba's.")
+          f"{fmt_ratio(e_fast)} Mitsuba's (round by round from {fmt_ratio(min(by_round))} to "
+          f"{fmt_ratio(max(by_round))}).")
     print()
     print(f"*`tools/mitsuba/speed.sh {a.spp} {a.res} {a.runs} {a.passes}`: `cornell` at "
           f"{a.res}×{a.res}, {a.spp} samples per pixel, Russian roulette from depth 5 in both "
@@ -157,6 +192,23 @@ def main():
           f"result evaluated, raylemma's those of its render, the scene's loading left out for "
           f"both (the process column has everything, Python's start-up included). Peak memory "
           f"is the process's maximum resident set. Machine: {machine(w)}.*")
+
+    if a.machines:
+        mach = machine(w)
+        fp = re.search(r"fingerprint (\w+)", mach)
+        assert fp, mach
+        status, _ = verdict[fast]
+        met = ("yes" if min(by_round) >= GOAL else
+               "no" if max(by_round) < GOAL else "not in every round")
+        if status != 0:
+            met = "no verdict: the images differ"
+        cpu = re.match(r"^(.*?\(family [^)]*\))", mach).group(1)
+        day = datetime.datetime.now(datetime.timezone.utc).date().isoformat()
+        put_machine_line(a.machines, fp.group(1), (
+            f"| {cpu} | `{fp.group(1)}` | {day} | {rows['raylemma']['seconds']:.2f} | "
+            f"{rows[fast]['seconds']:.2f} (`{fast}`) | {fmt_ratio(t_fast)} | "
+            f"{fmt_ratio(e_fast)} ({fmt_ratio(min(by_round))}–{fmt_ratio(max(by_round))}) | "
+            f"{met} |"))
 
     if a.png:
         m = mean_images[fast]

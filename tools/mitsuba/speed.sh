@@ -14,7 +14,10 @@
 #      efficiency 1 / (variance x seconds), the whole process's wall time and peak memory;
 #   5. `raylemma compare` of each Mitsuba variant's passes against raylemma's image (the
 #      renders must agree for their speeds to be compared), and the sentences that compare
-#      the renderers, written from the medians (tools/mitsuba/speed.py).
+#      the renderers, written from the medians (tools/mitsuba/speed.py);
+#   6. this machine's line in the table of every machine measured
+#      (figures/mitsuba_speed_machines.md: the efficiency ratio against the fastest
+#      variant, with its range over the rounds), in place of its earlier line.
 #
 #   tools/mitsuba/speed.sh [SPP [RES [RUNS [PASSES]]]]     (default 256 256 3 16)
 #
@@ -92,10 +95,13 @@ for v in scalar_spectral llvm_ad_spectral; do
     tail -n 1 "$work/compare-$v.txt"
 done
 
+cp "$root/figures/mitsuba_speed_machines.md" "$work/mitsuba_speed_machines.md" 2>/dev/null || true
 "$py" "$here/speed.py" "$work" --spp "$spp" --res "$res" --runs "$runs" --passes "$passes" \
-    --png "$work/mitsuba_cornell.png" > "$work/mitsuba_speed.md"
+    --png "$work/mitsuba_cornell.png" --machines "$work/mitsuba_speed_machines.md" \
+    > "$work/mitsuba_speed.md"
 cp "$work/mitsuba_speed.md" "$root/figures/mitsuba_speed.md"
+cp "$work/mitsuba_speed_machines.md" "$root/figures/mitsuba_speed_machines.md"
 cp "$work/diff-llvm_ad_spectral.png" "$root/figures/mitsuba_cornell_diff.png"
 cp "$work/mitsuba_cornell.png" "$root/figures/mitsuba_cornell.png"
-echo "== wrote figures/mitsuba_speed.md, figures/mitsuba_cornell.png, figures/mitsuba_cornell_diff.png"
+echo "== wrote figures/mitsuba_speed.md, figures/mitsuba_speed_machines.md, figures/mitsuba_cornell.png, figures/mitsuba_cornell_diff.png"
 cat "$root/figures/mitsuba_speed.md"
