@@ -22,7 +22,8 @@
 //! the three variance channels and the `spp` attribute: the plain images that Mitsuba,
 //! pbrt or a student's renderer write. It refuses, naming the file and the pixel, what no
 //! comparison can use: a file that is not OpenEXR (a PNG is named as one), a truncated
-//! file, a NaN or infinite mean, a NaN, infinite or negative variance.
+//! file, a NaN or infinite mean, a NaN, infinite or negative variance, and variance
+//! channels beside X, Y, Z means (sRGB variances would need the covariances of X, Y and Z).
 
 use std::io::{Read as _, Seek, Write};
 use std::path::Path;
@@ -238,6 +239,14 @@ impl ExrContents {
         if !var.is_empty() && var.len() < 3 {
             return Err(err(format!(
                 "only some of the variance channels var.R, var.G, var.B: the file has {}",
+                channels.join(", ")
+            )));
+        }
+        if from_xyz && !var.is_empty() {
+            // The means become linear sRGB, and sRGB variances need the covariances of X, Y
+            // and Z (strongly correlated in a render), which no file carries.
+            return Err(err(format!(
+                "the means are X, Y, Z but the variance channels are var.R, var.G, var.B, which cannot go with them: the file has {} (write R, G, B with var.R, var.G, var.B, or X, Y, Z alone and compare several such files)",
                 channels.join(", ")
             )));
         }

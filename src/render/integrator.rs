@@ -116,7 +116,7 @@ pub fn radiance(
         let i = match hit.surface {
             // ANCHOR: hit_light
             Surface::Light(k) => {
-                if scene.emits_towards(k, d) {
+                if scene.emits_towards(k, o, d) {
                     // A light reached by a delta bounce (or seen from the camera) counts in
                     // full; one reached by BSDF sampling counts with the strategy's weight.
                     let w = match (bsdf_pdf, s.direct) {

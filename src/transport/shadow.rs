@@ -302,6 +302,12 @@ impl SphereLight {
         Self::new(self.center * s, self.radius * s)
     }
 
+    /// Whether `p` lies outside the sphere, the only points its light reaches (it emits
+    /// outwards only): where [`Light::sample`] gives a point and [`Light::pdf`] a density.
+    pub fn is_outside(&self, p: DVec3) -> bool {
+        self.outside(p).is_some()
+    }
+
     /// `(d, 1 - R/d)` for the shading point `p` at distance `d` from the centre, or
     /// `None` when `p` is on or inside the sphere.
     fn outside(&self, p: DVec3) -> Option<(f64, f64)> {

@@ -334,7 +334,7 @@ pub fn to_json(f: &SceneFile) -> String {
             xyz_to_linear_srgb: [0, 1, 2].map(|i| m.row(i).to_array()),
             camera: "a pinhole at position; the ray through the image point (x, y), in pixels from the top-left corner, has the direction forward + sx half_width right + sy half_height image_up with sx = 2 x / width - 1, sy = 1 - 2 y / height; each sample uniform in its pixel (a box filter); a pixel is the mean of its samples",
             quad: "the parallelogram corner + a edge1 + b edge2, a and b in [0, 1]; seen from both sides",
-            lights: "emitters reflect nothing and block rays; a quad light emits on the side of its normal only, a sphere light everywhere, outwards and inwards; emission is radiance per nm",
+            lights: "emitters reflect nothing and block rays; a quad light emits on the side of its normal only, a sphere light outwards only (nothing inside it is lit by it); emission is radiance per nm",
             dielectric: "a smooth boundary between the outside (index 1) and the inside (against the normal of a quad, inside a sphere): exact Fresnel reflectance and Snell refraction, no radiance scaling on refraction",
         },
         render: Render {
@@ -397,7 +397,7 @@ pub fn to_json(f: &SceneFile) -> String {
                             center: arr(sp.center()),
                             radius: sp.radius(),
                         },
-                        "everywhere, outwards and inwards",
+                        "outwards only",
                     ),
                 };
                 LightJson {

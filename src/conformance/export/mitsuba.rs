@@ -24,10 +24,10 @@
 //!   file's header comment).
 //!
 //! Refused, with the line: Sellmeier dispersion and thin films (no Mitsuba BSDF has
-//! them), a gradient sky, a dielectric quad (Mitsuba scales radiance by `1/η²` on
+//! them), a gradient sky, and a dielectric quad (Mitsuba scales radiance by `1/η²` on
 //! refraction and raylemma does not: the two agree only for closed shapes that paths
-//! leave again), and anything inside a sphere light (Mitsuba's sphere emitters emit
-//! outwards only). A camera or a light inside a dielectric sphere, where the `η²` would
+//! leave again). A sphere light emits outwards only in both renderers, and its black
+//! `diffuse` reflects nothing on either side, so what lies inside one needs no refusal. A camera or a light inside a dielectric sphere, where the `η²` would
 //! not cancel either, never reaches the exporter: the scene's checks refuse it.
 
 use std::fmt::Write as _;
@@ -155,44 +155,13 @@ fn check(f: &SceneFile) -> Result<(), DataError> {
         ));
     }
     let dielectric = |i: usize| matches!(s.materials[i], Material::Dielectric { .. });
-    let inside = |p: DVec3, c: DVec3, r: f64| (p - c).length() < r;
-    let sphere_lights: Vec<(DVec3, f64)> = s
-        .lights
-        .iter()
-        .filter_map(|l| match &l.shape {
-            LightShape::Sphere(sp) => Some((sp.center(), sp.radius())),
-            LightShape::Quad(_) => None,
-        })
-        .collect();
     for (i, sh) in s.shapes.iter().enumerate() {
-        let points: Vec<DVec3> = match sh.geometry {
-            Geometry::Quad(q) => {
-                if dielectric(sh.material) {
-                    return Err(f.error(
-                        f.shape_lines[i],
-                        format!("shape {} is a dielectric quad: Mitsuba scales radiance by 1/η² on refraction and raylemma does not, which agree only for closed shapes that every path leaves again (spheres); {beyond}", i + 1),
-                    ));
-                }
-                q.vertices().to_vec()
-            }
-            Geometry::Sphere(sp) => vec![sp.center],
-        };
-        if let Some(p) = points
-            .iter()
-            .find(|&&p| sphere_lights.iter().any(|&(c, r)| inside(p, c, r)))
-        {
+        if matches!(sh.geometry, Geometry::Quad(_)) && dielectric(sh.material) {
             return Err(f.error(
                 f.shape_lines[i],
-                format!("shape {} is inside a sphere light (at {p}): Mitsuba's sphere emitters emit outwards only, raylemma's inwards too; {beyond}", i + 1),
+                format!("shape {} is a dielectric quad: Mitsuba scales radiance by 1/η² on refraction and raylemma does not, which agree only for closed shapes that every path leaves again (spheres); {beyond}", i + 1),
             ));
         }
-    }
-    let eye = s.camera.position;
-    if sphere_lights.iter().any(|&(c, r)| inside(eye, c, r)) {
-        return Err(f.error(
-            f.camera_line,
-            format!("the camera is inside a sphere light: Mitsuba's sphere emitters emit outwards only; {beyond}"),
-        ));
     }
     Ok(())
 }

@@ -32,8 +32,8 @@
 //!   nanometre (pbrt then follows the hero wavelength alone). pbrt's BSDFs are two-sided.
 //! * A quad is a `trianglemesh` of the triangles `(c, c+e1, c+e1+e2)`, `(c, c+e1+e2, c+e2)`,
 //!   whose normal is `e1 x e2`; a quad light is one-sided towards it, as raylemma's. A
-//!   sphere is `Translate` and `Shape "sphere"`; a sphere light is `"bool twosided" true`,
-//!   emitting inwards too, as raylemma's. Every light has a black `diffuse` material.
+//!   sphere is `Translate` and `Shape "sphere"`; a sphere light is one-sided, emitting
+//!   outwards only, as raylemma's. Every light has a black `diffuse` material.
 //!
 //! Refused, with the line: thin films (no pbrt-v4 material models interference), a
 //! gradient sky (pbrt's `infinite` light is one spectrum or an RGB image), and a dielectric
@@ -376,10 +376,7 @@ pub fn to_pbrt(f: &SceneFile) -> Result<String, DataError> {
                     "one-sided, towards edge1 x edge2",
                 )
             }
-            LightShape::Sphere(sp) => (
-                sphere(sp.center(), sp.radius()),
-                "two-sided: outwards and inwards",
-            ),
+            LightShape::Sphere(sp) => (sphere(sp.center(), sp.radius()), "one-sided: outwards"),
         };
         let _ = writeln!(
             x,
@@ -391,9 +388,6 @@ pub fn to_pbrt(f: &SceneFile) -> Result<String, DataError> {
             x += "    AreaLightSource \"diffuse\"\n";
             x += &spectrum("L", &l.emission, "        ");
             let _ = writeln!(x, "        \"float scale\" [ {} ]", num(k));
-            if let LightShape::Sphere(_) = l.shape {
-                x += "        \"bool twosided\" [ true ]\n";
-            }
         }
         x += &geometry;
         x += "AttributeEnd\n\n";

@@ -401,6 +401,10 @@ fn images_no_comparison_can_use_are_refused_by_name() {
     );
     let p = problem("some-var.exr", &["R", "G", "B", "var.R"], &good);
     assert!(p.contains("only some of the variance channels"), "{p}");
+    // X, Y, Z means with variance channels: the variances cannot be carried to sRGB.
+    let xyz_var = ["X", "Y", "Z", "var.R", "var.G", "var.B"];
+    let p = problem("xyz-var.exr", &xyz_var, &good);
+    assert!(p.contains("the means are X, Y, Z"), "{p}");
     let p = problem("no-rgb.exr", &["Y"], &good);
     assert!(p.contains("no channel \"R\"") && p.contains("Y"), "{p}");
     // Truncated: the first half of a valid file.
