@@ -23,7 +23,8 @@
 //! pbrt or a student's renderer write. It refuses, naming the file and the pixel, what no
 //! comparison can use: a file that is not OpenEXR (a PNG is named as one), a truncated
 //! file, a NaN or infinite mean, a NaN, infinite or negative variance, and variance
-//! channels beside X, Y, Z means (sRGB variances would need the covariances of X, Y and Z).
+//! channels `var.R`, `var.G`, `var.B` beside X, Y, Z means (ambiguous: variances of X, Y,
+//! Z could not be carried to sRGB without their covariances).
 
 use std::io::{Read as _, Seek, Write};
 use std::path::Path;
@@ -151,9 +152,9 @@ impl ExrContents {
     /// # Errors
     /// A [`FileError`] naming `path`: missing, not OpenEXR (a PNG is called one), truncated
     /// or otherwise unreadable, no `R`, `G` or `B` channel (the message lists the
-    /// channels), a channel of integers, only some of the variance channels, a mean that
-    /// is NaN or infinite or a variance that is NaN, infinite or negative (the first such
-    /// pixel, its channel and value).
+    /// channels), a channel of integers, only some of the variance channels, variance
+    /// channels beside X, Y, Z means, a mean that is NaN or infinite or a variance that is
+    /// NaN, infinite or negative (the first such pixel, its channel and value).
     pub fn read(path: &Path) -> Result<ExrContents, FileError> {
         let err = |problem: String| FileError::new(path, problem);
         if !path.is_file() {
@@ -243,10 +244,12 @@ impl ExrContents {
             )));
         }
         if from_xyz && !var.is_empty() {
-            // The means become linear sRGB, and sRGB variances need the covariances of X, Y
-            // and Z (strongly correlated in a render), which no file carries.
+            // Ambiguous: the variances of X, Y and Z could not be carried to sRGB without
+            // their covariances (strongly correlated in a render), which no file carries,
+            // and variances of R, G, B would not be of these means. No renderer known here
+            // writes such a file, so it is refused wherever it is given.
             return Err(err(format!(
-                "the means are X, Y, Z but the variance channels are var.R, var.G, var.B, which cannot go with them: the file has {} (write R, G, B with var.R, var.G, var.B, or X, Y, Z alone and compare several such files)",
+                "the means are X, Y, Z but the variance channels are var.R, var.G, var.B: the file does not say whether they are variances of X, Y, Z (which cannot be carried to sRGB without their covariances) or of R, G, B; it has {} (write R, G, B with var.R, var.G, var.B, or X, Y, Z without variance channels and compare several such files)",
                 channels.join(", ")
             )));
         }

@@ -438,10 +438,9 @@ impl Scene {
     /// Whether emitter `light` emits towards a ray from `o` travelling along `d` that hits
     /// it: a quad on the side of its normal only (`n . d < 0`), a sphere outwards only (`o`
     /// outside it, [`SphereLight::is_outside`]), so that nothing inside a sphere light is
-    /// lit by it. Its
-    /// sampler, which gives no point to a point inside, and the next-event estimate, which
-    /// takes only a point whose normal faces the shading point, say the same: every
-    /// strategy of direct light finds the same emission.
+    /// lit by it. A sphere light's sampler and pdf give no point and no density to a point
+    /// on or inside it, by the same test, so every strategy of direct light finds the same
+    /// emission.
     pub fn emits_towards(&self, light: usize, o: DVec3, d: DVec3) -> bool {
         match &self.lights[light].shape {
             LightShape::Quad(q) => q.normal().dot(d) < 0.0,

@@ -267,23 +267,21 @@ def surface_material(m, colour):
     return material
 
 
-def light_material(name, rgb, one_sided):
-    """An emitter: radiance rgb, reflecting nothing; a one-sided one is black behind."""
+def light_material(name, rgb):
+    """An emitter: radiance rgb on its front faces, black behind, reflecting nothing (a
+    quad's front is edge1 x edge2, an icosphere's faces wind outwards: raylemma's lights
+    emit on those sides only)."""
     material, tree, output = node_material(name)
     emission = tree.nodes.new("ShaderNodeEmission")
     emission.inputs["Color"].default_value = (*rgb, 1.0)
     emission.inputs["Strength"].default_value = 1.0
-    if one_sided:
-        geometry = tree.nodes.new("ShaderNodeNewGeometry")
-        mix = tree.nodes.new("ShaderNodeMixShader")
-        tree.links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
-        tree.links.new(emission.outputs["Emission"], mix.inputs[1])
-        # mix.inputs[2] left empty: no closure, black, and it still blocks rays.
-        tree.links.new(mix.outputs["Shader"], output.inputs["Surface"])
-        material.cycles.emission_sampling = "FRONT"
-    else:
-        tree.links.new(emission.outputs["Emission"], output.inputs["Surface"])
-        material.cycles.emission_sampling = "FRONT_BACK"
+    geometry = tree.nodes.new("ShaderNodeNewGeometry")
+    mix = tree.nodes.new("ShaderNodeMixShader")
+    tree.links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
+    tree.links.new(emission.outputs["Emission"], mix.inputs[1])
+    # mix.inputs[2] left empty: no closure, black, and it still blocks rays.
+    tree.links.new(mix.outputs["Shader"], output.inputs["Surface"])
+    material.cycles.emission_sampling = "FRONT"
     return material
 
 
@@ -332,7 +330,7 @@ def build(data, colour, spp, seed, threads):
         add_object(scene, f"shape{i}", shape, materials[shape["material"]])
     for i, light in enumerate(data["lights"]):
         rgb = colour.radiance(light["emission"])
-        material = light_material(f"light{i}", rgb, one_sided=light["type"] == "quad")
+        material = light_material(f"light{i}", rgb)
         add_object(scene, f"light{i}", light, material)
     return scene
 

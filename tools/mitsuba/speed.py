@@ -73,7 +73,7 @@ GOAL = 2.0  # the efficiency raylemma should have, against Mitsuba's fastest CPU
 
 MACHINES_HEAD = [
     "| machine | fingerprint | date | raylemma s | fastest Mitsuba variant, s | "
-    "throughput ratio | efficiency ratio, median (range over rounds) | "
+    "throughput ratio | efficiency ratio of the medians (range over rounds) | "
     f"at least {GOAL:.0f}× in efficiency |",
     "|---|---|---|---:|---:|---:|---:|---|",
 ]
@@ -200,9 +200,14 @@ def main():
         status, _ = verdict[fast]
         met = ("yes" if min(by_round) >= GOAL else
                "no" if max(by_round) < GOAL else "not in every round")
-        if status != 0:
+        if status == 1:
             met = "no verdict: the images differ"
-        cpu = re.match(r"^(.*?\(family [^)]*\))", mach).group(1)
+        elif status != 0:
+            met = "no verdict: compare failed"
+        # The processor as the figure job names it: up to its "(family ...)" where it has
+        # one (x86), else up to the first comma (other architectures).
+        named = re.match(r"^(.*?\(family [^)]*\))", mach)
+        cpu = named.group(1) if named else mach.split(",")[0]
         day = datetime.datetime.now(datetime.timezone.utc).date().isoformat()
         put_machine_line(a.machines, fp.group(1), (
             f"| {cpu} | `{fp.group(1)}` | {day} | {rows['raylemma']['seconds']:.2f} | "

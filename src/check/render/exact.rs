@@ -168,7 +168,8 @@ fn expected_image(
 /// The expected image of a scene of Lambertian shapes lit directly: each visible point `x`
 /// (normal `n` turned towards the camera) has radiance `sum_k E_k(x) rgb(rho L_k) / pi`,
 /// with the irradiance `E_k` of light `k` for unit radiance in closed form. A light seen
-/// directly has its own radiance on its emitting side and none on the other.
+/// directly has its own radiance on its emitting side and none on the other (a quad's
+/// back, a sphere's inside: [`Scene::emits_towards`]).
 ///
 /// # Panics
 /// If the scene is not of that kind: a material other than Lambert, an environment, or a
@@ -198,10 +199,8 @@ pub fn direct(scene: &Scene) -> Expected {
         .collect();
     expected_image(scene, &GAUSS4, |o, d, hit| match hit {
         First::Sky => DVec3::ZERO,
-        First::Light(k, _) => match &scene.lights[k].shape {
-            LightShape::Quad(q) if q.normal().dot(d) >= 0.0 => DVec3::ZERO,
-            _ => seen[k],
-        },
+        First::Light(k, _) if scene.emits_towards(k, o, d) => seen[k],
+        First::Light(..) => DVec3::ZERO,
         First::Shape(i, t) => {
             let x = o + t * d;
             let n = match &scene.shapes[i].geometry {

@@ -27,8 +27,9 @@
 //! them), a gradient sky, and a dielectric quad (Mitsuba scales radiance by `1/η²` on
 //! refraction and raylemma does not: the two agree only for closed shapes that paths
 //! leave again). A sphere light emits outwards only in both renderers, and its black
-//! `diffuse` reflects nothing on either side, so what lies inside one needs no refusal. A camera or a light inside a dielectric sphere, where the `η²` would
-//! not cancel either, never reaches the exporter: the scene's checks refuse it.
+//! `diffuse` reflects nothing on either side, so what lies inside one needs no refusal.
+//! A camera or a light inside a dielectric sphere, where the `η²` would not cancel
+//! either, never reaches the exporter: the scene's checks refuse it.
 
 use std::fmt::Write as _;
 

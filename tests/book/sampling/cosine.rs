@@ -42,7 +42,7 @@ fn seed_angles_and_cartesian_agree_pointwise() {
     for _ in 0..10_000 {
         let u = warp::square_point(&mut rng);
         let d = max_abs((cosine_seed_angles(u) - cosine_seed_cartesian(u)).to_array());
-        assert!(d <= 1e-7, "u = {u:?}: differ by {d}");
+        assert!(d <= 1e-12, "u = {u:?}: differ by {d}");
     }
 }
 
