@@ -303,12 +303,13 @@ fn nothing_inside_a_sphere_light_is_lit_by_it_whatever_the_strategy() {
     // direct-lighting strategy: a camera ray or a bounce that meets the sphere from inside
     // finds no emission. (When a hit from inside counted in full, `bsdf` and MIS lit the floor
     // and `light` did not.) Not vacuous: the same light shrunk below the camera, and seen
-    // from outside, lights pixels of every strategy's image (at least those that see it).
+    // from outside, lights the floor in every strategy's image: at least half the pixels of
+    // the bottom two rows (14 of 16 under `bsdf`, the least, at this seed).
     use raylemma::render::scene::DirectLight;
     use raylemma::transport::shadow::Heuristic;
     let scene = |radius: f64| {
         let text = format!(
-            "[render]\nspp = 4\nmax_depth = 3\n\n[camera]\nposition = [0, 1, -3]\nlook_at = [0, 0, 0]\nup = [0, 1, 0]\nfov_y = 60\nresolution = [8, 8]\n\n[materials]\nwhite = {{ type = \"lambert\", reflectance = 0.8 }}\n\n[[shape]]\ntype = \"quad\"\ncorner = [-2, 0, -2]\nedge1 = [0, 0, 4]\nedge2 = [4, 0, 0]\nmaterial = \"white\"\n\n[[light]]\ntype = \"sphere\"\ncenter = [0, 0.5, 0]\nradius = {radius}\nemission = 1\n"
+            "[render]\nspp = 256\nmax_depth = 3\n\n[camera]\nposition = [0, 1, -3]\nlook_at = [0, 0, 0]\nup = [0, 1, 0]\nfov_y = 60\nresolution = [8, 8]\n\n[materials]\nwhite = {{ type = \"lambert\", reflectance = 0.8 }}\n\n[[shape]]\ntype = \"quad\"\ncorner = [-2, 0, -2]\nedge1 = [0, 0, 4]\nedge2 = [4, 0, 0]\nmaterial = \"white\"\n\n[[light]]\ntype = \"sphere\"\ncenter = [0, 0.5, 0]\nradius = {radius}\nemission = 1\n"
         );
         raylemma::render::format::SceneFile::parse(&text, "inside.toml", &std::env::temp_dir())
             .unwrap_or_else(|e| panic!("{e}"))
@@ -319,16 +320,23 @@ fn nothing_inside_a_sphere_light_is_lit_by_it_whatever_the_strategy() {
         DirectLight::Light,
         DirectLight::Bsdf,
     ];
-    for (radius, inside) in [(10.0, true), (0.3, false)] {
+    for (radius, inside) in [(10.0, true), (0.45, false)] {
         for &direct in &strategies {
             let mut s = scene(radius);
             s.settings.direct = direct;
             let image = render(&s, s.settings.spp, Progress::Silent);
             let lit = image.mean.iter().filter(|m| **m != DVec3::ZERO).count();
+            let floor = image.mean[6 * 8..]
+                .iter()
+                .filter(|m| **m != DVec3::ZERO)
+                .count();
             if inside {
                 assert_eq!(lit, 0, "{direct:?}: {lit} pixels lit from inside the light");
             } else {
-                assert!(lit >= 4, "{direct:?}: only {lit} pixels lit from outside");
+                assert!(
+                    floor >= 8,
+                    "{direct:?}: only {floor} of the floor's 16 pixels lit from outside"
+                );
             }
         }
     }
